@@ -1,0 +1,41 @@
+#pragma once
+// OpenEXR files of geometry images and geometry fields (DESIGN.md / docs/formats.md, version 1).
+// Loaders validate the header (format tag, version, size, channels) and return false with an
+// error "FILE: problem". Savers write a temporary file beside the target and rename it.
+
+#include <string>
+
+#include "gfield/geometry_field.hpp"
+#include "gfield/geometry_image.hpp"
+
+namespace gfield {
+
+/// Channel precision on disk. Geometry-image positions are always FLOAT; this applies to the
+/// normal and coverage channels of images and to the U, V channels of fields.
+enum class ExrPrecision { kHalf, kFloat };
+
+/// Format version written and accepted.
+inline constexpr int kFormatVersion = 1;
+
+bool save_geometry_image(const std::string& filename, const GeometryImage& image,
+                         ExrPrecision precision, std::string& error);
+bool load_geometry_image(const std::string& filename, GeometryImage& image, std::string& error);
+
+bool save_geometry_field(const std::string& filename, const GeometryField& field,
+                         ExrPrecision precision, std::string& error);
+bool load_geometry_field(const std::string& filename, GeometryField& field, std::string& error);
+
+/// Reads only the header of a gfield EXR: format tag ("geometry-image"/"geometry-field"), box,
+/// source and samples per side (0 for images). For matching a field with its image cheaply.
+struct ExrAssetHeader {
+  std::string format;
+  int version = 0;
+  int width = 0;
+  int height = 0;
+  Box box;
+  std::string source;
+  int samples_per_side = 0;
+};
+bool load_asset_header(const std::string& filename, ExrAssetHeader& header, std::string& error);
+
+}  // namespace gfield

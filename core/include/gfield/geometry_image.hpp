@@ -1,0 +1,35 @@
+#pragma once
+// A geometry image: a surface resampled on an n x n grid of its parameter domain [0,1]^2.
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gfield/box.hpp"
+
+namespace gfield {
+
+/// n x n geometry image. Texel (i, j) = column i, scanline j, stored at index j * n + i, with its
+/// centre at uv ((i + 0.5) / n, (j + 0.5) / n).
+struct GeometryImage {
+  int size = 0;              ///< n, texels per side
+  Box box;                   ///< the box that maps to the unit cube (mesh coordinates)
+  std::string source;        ///< mesh file name the image was built from
+  std::vector<glm::vec3> position;  ///< n*n surface points, mesh coordinates
+  std::vector<glm::vec3> normal;    ///< n*n unit normals
+  std::vector<float> coverage;      ///< n*n: 1 inside the parameterised surface, 0 in padding
+};
+
+/// Texel index of column i, scanline j.
+inline size_t texel_index(const GeometryImage& image, int i, int j) {
+  return size_t(j) * size_t(image.size) + size_t(i);
+}
+
+/// Bilinear lookup of the position at uv in [0,1]^2 (texel centres, clamped to the edge), as
+/// GL_LINEAR with GL_CLAMP_TO_EDGE would return it.
+glm::vec3 sample_position(const GeometryImage& image, glm::vec2 uv);
+/// Bilinear lookup of the normal at uv, renormalised.
+glm::vec3 sample_normal(const GeometryImage& image, glm::vec2 uv);
+
+}  // namespace gfield

@@ -1,0 +1,21 @@
+#pragma once
+// The subcommands of the `gfield` CLI, one file each. Each adds its subcommand to `app`; the
+// callback runs the command and throws CommandError on failure (main prints it, exit code 2).
+
+#include <stdexcept>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace gfield {
+
+/// A failure the user caused (bad input) or that stops a command: one line, exit code 2.
+struct CommandError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+void add_info_command(CLI::App& app);
+
+}  // namespace gfield

@@ -1,0 +1,40 @@
+// gfield: the preprocessing command line (mesh -> geometry image -> geometry field, verify,
+// reference rendering). One subcommand per file in this folder.
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+#include "preprocess/cli/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "gfield: geometry images and geometry fields for real-time reflection and refraction.\n"
+      "Exit codes: 0 success, 2 bad input or failed command, 1 internal error.",
+      "gfield"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "gfield 0.1.0");
+
+  gfield::add_info_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "gfield: %s (see gfield --help)\n", e.what());
+    return 2;
+  } catch (const gfield::CommandError& e) {
+    std::fprintf(stderr, "gfield: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "gfield: internal error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
