@@ -1,0 +1,48 @@
+#pragma once
+// Image comparison: PSNR and SSIM of two linear RGB images, optionally restricted to a mask
+// (e.g. the pixels an object covers).
+
+#include <vector>
+
+#include "gfield/image.hpp"
+
+namespace gfield {
+
+/// Which pixels count: empty = all; otherwise width * height flags (row-major, top row first).
+using PixelMask = std::vector<bool>;
+
+/// A mask from an image: pixels whose largest channel exceeds `threshold` are in.
+PixelMask mask_from_image(const Image& image, float threshold = 0.5f);
+
+struct ImageComparison {
+  double mse = 0.0;             ///< mean over counted pixels and the 3 channels of (a - b)^2
+  double psnr = 0.0;            ///< 10 log10(peak^2 / mse) in dB; +infinity when mse == 0
+  double ssim = 0.0;            ///< mean SSIM over counted pixels (mean of the 3 channels)
+  double max_abs_error = 0.0;   ///< largest |a - b| of any channel of a counted pixel
+  double mean_abs_error = 0.0;  ///< mean |a - b| over counted pixels and channels
+  size_t pixels = 0;            ///< counted pixels
+};
+
+/// Peak signal value for PSNR and the dynamic range L of SSIM (1 for images in [0,1]).
+struct MetricOptions {
+  double peak = 1.0;
+};
+
+/// PSNR in dB from a mean squared error: 10 log10(peak^2 / mse); +infinity for mse == 0.
+double psnr_from_mse(double mse, double peak = 1.0);
+
+/// Per-pixel SSIM (Wang et al. 2004): 11 x 11 Gaussian window (sigma 1.5, truncated and
+/// renormalised at the image border), K1 = 0.01, K2 = 0.03, L = peak, per channel then averaged.
+/// Returns width * height values. Images must have the same size.
+std::vector<float> ssim_map(const Image& a, const Image& b, const MetricOptions& options = {});
+
+/// Compares `a` with `b` (same size required; an empty comparison has pixels == 0) over the
+/// pixels of `mask` (empty: all pixels).
+ImageComparison compare_images(const Image& a, const Image& b, const PixelMask& mask = {},
+                               const MetricOptions& options = {});
+
+/// A false-colour map of |a - b| (max over channels) for looking at: black (0) through blue,
+/// magenta and yellow to white (>= `scale`). Masked-out pixels are dark grey.
+Image error_heatmap(const Image& a, const Image& b, double scale, const PixelMask& mask = {});
+
+}  // namespace gfield

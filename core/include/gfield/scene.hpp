@@ -1,0 +1,131 @@
+#pragma once
+// Scenes: the JSON format of docs/scenes.md, read into plain structs that both the reference
+// ray tracer (preprocess/) and the OpenGL runtime use. No Embree, no GL here.
+//
+// Paths in a scene file resolve relative to the scene file; the structs hold resolved paths.
+// World space is right-handed, +Y up; lengths in scene units; angles in degrees in the file.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gfield/environment.hpp"
+
+namespace gfield {
+
+/// Pinhole camera. `fov_degrees` is the vertical field of view; the aspect ratio is the image's.
+struct Camera {
+  glm::vec3 position{0.0f, 0.0f, 5.0f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_degrees = 45.0f;
+};
+
+/// A world-space ray through continuous pixel coordinates (x right from the left edge, y down
+/// from the top edge, both in pixels: the centre of pixel (i, j) is (i + 0.5, j + 0.5)).
+/// The same projection as glm::lookAt + glm::perspective(fov, width / height).
+struct CameraRay {
+  glm::dvec3 origin;
+  glm::dvec3 direction;  ///< unit
+};
+CameraRay camera_ray(const Camera& camera, int width, int height, glm::dvec2 pixel);
+
+/// Object-space shapes. Every shape is centred on the origin before its transform.
+enum class ShapeType { kMesh, kSphere, kQuad, kBox, kCylinder, kSlab, kHollowCylinder };
+
+struct Shape {
+  ShapeType type = ShapeType::kSphere;
+  int mesh = -1;               ///< kMesh: index into Scene::meshes
+  bool smooth_normals = true;  ///< kMesh: interpolated vertex normals (else face normals)
+  float radius = 1.0f;         ///< sphere; cylinder; hollow cylinder: the OUTER radius
+  float height = 2.0f;         ///< cylinder, hollow cylinder: extent along Y (from -h/2 to h/2)
+  glm::vec3 size{2.0f};        ///< box: extents along X, Y, Z; quad, slab: X, Y extents (z unused)
+  float thickness = 0.1f;  ///< slab: extent along Z; hollow cylinder: wall (inner = radius - it)
+};
+
+/// True for shapes that bound a solid (everything but the quad): dielectrics need one.
+bool shape_is_closed(ShapeType type);
+/// The scene-file name of a shape type ("mesh", "sphere", "quad", "box", "cylinder", "slab",
+/// "hollow-cylinder").
+const char* shape_name(ShapeType type);
+
+/// Object -> world: translate * rotate_z * rotate_y * rotate_x * scale (scale applied first, then
+/// rotation about X, then Y, then Z, then translation).
+struct Transform {
+  glm::vec3 translate{0.0f};
+  glm::vec3 rotate_degrees{0.0f};
+  glm::vec3 scale{1.0f};
+};
+glm::dmat4 object_to_world(const Transform& transform);
+
+enum class MaterialType { kDiffuse, kMirror, kDielectric };
+enum class TextureType { kNone, kChecker, kColorChart };
+
+struct Material {
+  MaterialType type = MaterialType::kDiffuse;
+  /// Diffuse albedo (texture kNone) or mirror tint (reflectance per channel).
+  glm::vec3 color{0.8f};
+  TextureType texture = TextureType::kNone;
+  std::array<glm::vec3, 2> checker_colors{glm::vec3(0.9f), glm::vec3(0.1f)};
+  glm::vec2 checker_scale{8.0f};  ///< squares along u and v of the texture coordinates
+  float ior = 1.5f;               ///< dielectric: index of refraction (outside is air, 1)
+  std::string ior_preset;         ///< the preset name when the file gave one
+  glm::vec3 absorption{0.0f};     ///< dielectric: Beer–Lambert coefficient per scene unit
+};
+
+/// Albedo of a textured diffuse material at texture coordinates uv in [0,1]^2 (docs/scenes.md:
+/// checker squares; colour chart = the 24 patches of the ColorChecker, 6 x 4, v = 1 at the top
+/// row, linear sRGB values, black gaps between patches).
+glm::vec3 texture_albedo(const Material& material, glm::vec2 uv);
+
+enum class LightType { kDirectional, kPoint };
+
+/// Diffuse surfaces get albedo * (ambient + sum of lights color * intensity * max(0, N.L) / d^2)
+/// (d = 1 for directional lights), with shadow rays blocked by diffuse and mirror objects.
+struct Light {
+  LightType type = LightType::kDirectional;
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  ///< directional: the way the light travels (unit)
+  glm::vec3 position{0.0f};                ///< point
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;
+};
+
+/// One mesh file and its precomputed assets (empty path: not found / not given).
+struct MeshAsset {
+  std::string file;
+  std::string geometry_image;  ///< NAME.gimage.exr beside the mesh, or named by the scene
+  std::string geometry_field;  ///< NAME.gfield.exr beside the mesh, or named by the scene
+};
+
+struct SceneObject {
+  std::string name;
+  Shape shape;
+  Transform transform;
+  Material material;
+};
+
+struct Scene {
+  std::string filename;  ///< the scene file
+  std::string purpose;   ///< one line: what the scene is for
+  Camera camera;
+  int width = 512;
+  int height = 512;
+  EnvironmentDesc environment;
+  glm::vec3 ambient{0.0f};
+  std::vector<Light> lights;
+  std::vector<MeshAsset> meshes;  ///< each file once; objects refer to it by index (instances)
+  std::vector<SceneObject> objects;
+};
+
+/// Reads and validates a scene file. False with "FILE:LINE:COLUMN: what: problem" for malformed
+/// JSON, unknown keys, wrong types, unknown material/shape/preset names, missing files, negative
+/// or zero sizes, singular transforms, index <= 0, a dielectric on a quad, a degenerate camera.
+bool load_scene(const std::string& filename, Scene& scene, std::string& error);
+
+/// The same from text; `filename` names the file in errors and is where relative paths start.
+bool parse_scene(const std::string& text, const std::string& filename, Scene& scene,
+                 std::string& error);
+
+}  // namespace gfield

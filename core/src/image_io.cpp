@@ -1,0 +1,229 @@
+// Image files: EXR through OpenEXR, PNG and HDR through stb_image / stb_image_write.
+
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include <ImathBox.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <filesystem>
+#include <memory>
+
+#include "gfield/atomic_file.hpp"
+#include "gfield/image.hpp"
+
+namespace gfield {
+namespace {
+
+std::string lower_extension(const std::string& filename) {
+  std::string ext = std::filesystem::path(filename).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+bool load_exr(const std::string& filename, Image& image, std::string& error) {
+  try {
+    Imf::InputFile file(filename.c_str());
+    const Imath::Box2i window = file.header().dataWindow();
+    const int width = window.max.x - window.min.x + 1;
+    const int height = window.max.y - window.min.y + 1;
+    const Imf::ChannelList& channels = file.header().channels();
+    const bool rgb =
+        channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
+    const bool grey = channels.findChannel("Y") != nullptr;
+    if (!rgb && !grey) {
+      error = filename + ": EXR has neither R, G, B nor Y channels";
+      return false;
+    }
+    Image result(width, height);
+    const size_t xstride = sizeof(glm::vec3);
+    const size_t ystride = sizeof(glm::vec3) * size_t(width);
+    // OpenEXR addresses pixel (x, y) of the data window as base + x * xstride + y * ystride.
+    char* base = reinterpret_cast<char*>(result.pixels.data()) -
+                 std::ptrdiff_t(window.min.x) * std::ptrdiff_t(xstride) -
+                 std::ptrdiff_t(window.min.y) * std::ptrdiff_t(ystride);
+    Imf::FrameBuffer frame;
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c) {
+      frame.insert(rgb ? names[c] : "Y",
+                   Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xstride, ystride));
+    }
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+    image = std::move(result);
+    return true;
+  } catch (const std::exception& e) {
+    error = filename + ": cannot read EXR: " + e.what();
+    return false;
+  }
+}
+
+bool load_stb(const std::string& filename, bool hdr, Image& image, std::string& error) {
+  int width = 0, height = 0, components = 0;
+  if (hdr) {
+    std::unique_ptr<float, void (*)(void*)> data(
+        stbi_loadf(filename.c_str(), &width, &height, &components, 3), stbi_image_free);
+    if (!data) {
+      error = filename + ": cannot read image: " + stbi_failure_reason();
+      return false;
+    }
+    Image result(width, height);
+    std::copy_n(data.get(), size_t(width) * size_t(height) * 3, &result.pixels[0].x);
+    image = std::move(result);
+    return true;
+  }
+  const bool sixteen = stbi_is_16_bit(filename.c_str());
+  Image result;
+  if (sixteen) {
+    std::unique_ptr<stbi_us, void (*)(void*)> data(
+        stbi_load_16(filename.c_str(), &width, &height, &components, 3), stbi_image_free);
+    if (!data) {
+      error = filename + ": cannot read image: " + stbi_failure_reason();
+      return false;
+    }
+    result = Image(width, height);
+    float* out = &result.pixels[0].x;
+    for (size_t i = 0; i < size_t(width) * size_t(height) * 3; ++i) {
+      out[i] = srgb_to_linear(float(data.get()[i]) / 65535.0f);
+    }
+  } else {
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(
+        stbi_load(filename.c_str(), &width, &height, &components, 3), stbi_image_free);
+    if (!data) {
+      error = filename + ": cannot read image: " + stbi_failure_reason();
+      return false;
+    }
+    float table[256];
+    for (int v = 0; v < 256; ++v) {
+      table[v] = srgb_to_linear(float(v) / 255.0f);
+    }
+    result = Image(width, height);
+    float* out = &result.pixels[0].x;
+    for (size_t i = 0; i < size_t(width) * size_t(height) * 3; ++i) {
+      out[i] = table[data.get()[i]];
+    }
+  }
+  image = std::move(result);
+  return true;
+}
+
+bool save_exr(const std::string& path, const Image& image) {
+  Imf::Header header(image.width, image.height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  const char* names[3] = {"R", "G", "B"};
+  Imf::FrameBuffer frame;
+  char* base = const_cast<char*>(reinterpret_cast<const char*>(image.pixels.data()));
+  for (int c = 0; c < 3; ++c) {
+    header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+    frame.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(glm::vec3),
+                                      sizeof(glm::vec3) * size_t(image.width)));
+  }
+  Imf::OutputFile file(path.c_str(), header);
+  file.setFrameBuffer(frame);
+  file.writePixels(image.height);
+  return true;
+}
+
+bool save_png(const std::string& path, const Image& image) {
+  std::vector<std::uint8_t> bytes(image.pixels.size() * 3);
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const float v = linear_to_srgb(std::clamp(image.pixels[i][c], 0.0f, 1.0f));
+      bytes[i * 3 + size_t(c)] = std::uint8_t(std::lround(v * 255.0f));
+    }
+  }
+  stbi_write_png_compression_level = 1;
+  return stbi_write_png(path.c_str(), image.width, image.height, 3, bytes.data(),
+                        image.width * 3) != 0;
+}
+
+}  // namespace
+
+float srgb_to_linear(float v) {
+  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+float linear_to_srgb(float v) {
+  return v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+}
+
+glm::vec3 sample_bilinear(const Image& image, float x, float y, bool wrap_x) {
+  const float fx = x - 0.5f;
+  const float fy = std::clamp(y - 0.5f, 0.0f, float(image.height - 1));
+  const int x0 = int(std::floor(fx));
+  const int y0 = int(std::floor(fy));
+  const float ax = fx - float(x0);
+  const float ay = fy - float(y0);
+  auto column = [&](int c) {
+    if (wrap_x) {
+      c %= image.width;
+      return c < 0 ? c + image.width : c;
+    }
+    return std::clamp(c, 0, image.width - 1);
+  };
+  const int xa = column(x0);
+  const int xb = column(x0 + 1);
+  const int ya = std::clamp(y0, 0, image.height - 1);
+  const int yb = std::min(ya + 1, image.height - 1);
+  const glm::vec3 top = glm::mix(image.at(xa, ya), image.at(xb, ya), ax);
+  const glm::vec3 bottom = glm::mix(image.at(xa, yb), image.at(xb, yb), ax);
+  return glm::mix(top, bottom, ay);
+}
+
+bool load_image(const std::string& filename, Image& image, std::string& error) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(filename, ec)) {
+    error = filename + ": no such file";
+    return false;
+  }
+  const std::string ext = lower_extension(filename);
+  if (ext == ".exr") {
+    return load_exr(filename, image, error);
+  }
+  if (ext == ".hdr") {
+    return load_stb(filename, true, image, error);
+  }
+  if (ext == ".png") {
+    return load_stb(filename, false, image, error);
+  }
+  error = filename + ": unknown image extension \"" + ext + "\" (expected .exr, .hdr or .png)";
+  return false;
+}
+
+bool save_image(const std::string& filename, const Image& image, std::string& error) {
+  const std::string ext = lower_extension(filename);
+  if (ext != ".exr" && ext != ".png") {
+    error = filename + ": unknown image extension \"" + ext + "\" (expected .exr or .png)";
+    return false;
+  }
+  if (image.width <= 0 || image.height <= 0 ||
+      image.pixels.size() != size_t(image.width) * size_t(image.height)) {
+    error = filename + ": image has no pixels";
+    return false;
+  }
+  TemporaryFile temporary(filename);
+  bool written = false;
+  try {
+    written = ext == ".exr" ? save_exr(temporary.path().string(), image)
+                            : save_png(temporary.path().string(), image);
+  } catch (const std::exception& e) {
+    error = filename + ": cannot write: " + e.what();
+    return false;
+  }
+  if (!written) {
+    error = filename + ": cannot write";
+    return false;
+  }
+  return temporary.commit(error);
+}
+
+}  // namespace gfield
