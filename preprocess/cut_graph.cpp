@@ -1,0 +1,300 @@
+// Tree-cotree cut graphs, edge-graph shortest paths and cutting a mesh open along edges.
+
+#include "preprocess/cut_graph.hpp"
+
+#include <algorithm>
+#include <deque>
+#include <limits>
+#include <numeric>
+#include <queue>
+#include <unordered_map>
+
+namespace gfield {
+namespace {
+
+uint64_t edge_key(int a, int b) {
+  if (a > b)
+    std::swap(a, b);
+  return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
+}
+
+/// Undirected edges with their faces (one or two) and the vertex-edge adjacency.
+struct EdgeGraph {
+  std::vector<Edge> edges;
+  std::vector<glm::ivec2> edge_faces;          ///< second = -1 on the boundary
+  std::vector<std::vector<int>> vertex_edges;  ///< edges at each vertex, in creation order
+  std::vector<glm::ivec3> face_edges;          ///< edge of (corner k, corner k+1)
+  std::unordered_map<uint64_t, int> index;
+
+  explicit EdgeGraph(const TriangleMesh& mesh) {
+    vertex_edges.resize(mesh.positions.size());
+    face_edges.resize(mesh.triangles.size());
+    index.reserve(mesh.triangles.size() * 2);
+    for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+      const glm::ivec3& t = mesh.triangles[f];
+      for (int k = 0; k < 3; ++k) {
+        const int a = t[k], b = t[(k + 1) % 3];
+        auto [it, inserted] = index.emplace(edge_key(a, b), int(edges.size()));
+        if (inserted) {
+          edges.push_back({std::min(a, b), std::max(a, b)});
+          edge_faces.push_back({int(f), -1});
+          vertex_edges[a].push_back(it->second);
+          vertex_edges[b].push_back(it->second);
+        } else {
+          edge_faces[it->second][1] = int(f);
+        }
+        face_edges[f][k] = it->second;
+      }
+    }
+  }
+  int other(int e, int v) const { return edges[e][0] == v ? edges[e][1] : edges[e][0]; }
+  bool boundary(int e) const { return edge_faces[e][1] < 0; }
+};
+
+double edge_length(const TriangleMesh& mesh, int a, int b) {
+  return glm::length(mesh.positions[a] - mesh.positions[b]);
+}
+
+}  // namespace
+
+std::vector<Edge> path_edges(const std::vector<int>& path) {
+  std::vector<Edge> edges;
+  for (size_t i = 1; i < path.size(); ++i)
+    edges.push_back({path[i - 1], path[i]});
+  return edges;
+}
+
+std::vector<Edge> tree_cotree_cut(const TriangleMesh& mesh, int root) {
+  const EdgeGraph graph(mesh);
+  const size_t nv = mesh.positions.size(), nf = mesh.triangles.size();
+
+  // Vertex BFS tree, rooted at every boundary vertex when there is a boundary.
+  std::vector<int> parent_edge(nv, -1);
+  std::vector<char> reached(nv, 0), on_boundary(nv, 0);
+  std::deque<int> queue;
+  for (size_t e = 0; e < graph.edges.size(); ++e)
+    if (graph.boundary(int(e)))
+      on_boundary[graph.edges[e][0]] = on_boundary[graph.edges[e][1]] = 1;
+  for (size_t v = 0; v < nv; ++v)
+    if (on_boundary[v]) {
+      reached[v] = 1;
+      queue.push_back(int(v));
+    }
+  if (queue.empty()) {
+    reached[root] = 1;
+    queue.push_back(root);
+  }
+  std::vector<char> in_tree(graph.edges.size(), 0);
+  while (!queue.empty()) {
+    const int v = queue.front();
+    queue.pop_front();
+    for (int e : graph.vertex_edges[v]) {
+      const int w = graph.other(e, v);
+      if (reached[w] || graph.boundary(e))
+        continue;
+      reached[w] = 1;
+      parent_edge[w] = e;
+      in_tree[e] = 1;
+      queue.push_back(w);
+    }
+  }
+
+  // Face spanning tree across interior edges outside the vertex tree.
+  std::vector<char> face_reached(nf, 0), in_cotree(graph.edges.size(), 0);
+  for (size_t start = 0; start < nf; ++start) {
+    if (face_reached[start])
+      continue;
+    face_reached[start] = 1;
+    std::deque<int> faces{int(start)};
+    while (!faces.empty()) {
+      const int f = faces.front();
+      faces.pop_front();
+      for (int k = 0; k < 3; ++k) {
+        const int e = graph.face_edges[f][k];
+        if (in_tree[e] || graph.boundary(e))
+          continue;
+        const int g = graph.edge_faces[e][0] == f ? graph.edge_faces[e][1] : graph.edge_faces[e][0];
+        if (face_reached[g])
+          continue;
+        face_reached[g] = 1;
+        in_cotree[e] = 1;
+        faces.push_back(g);
+      }
+    }
+  }
+
+  // Each leftover edge closes a loop through the vertex tree: cut along it (paths as a
+  // symmetric difference, so a shared stem to the root cancels).
+  std::vector<char> in_cut(graph.edges.size(), 0);
+  for (size_t e = 0; e < graph.edges.size(); ++e) {
+    if (in_tree[e] || in_cotree[e] || graph.boundary(int(e)))
+      continue;
+    in_cut[e] ^= 1;
+    for (int end = 0; end < 2; ++end) {
+      int v = graph.edges[e][end];
+      while (parent_edge[v] >= 0) {
+        in_cut[parent_edge[v]] ^= 1;
+        v = graph.other(parent_edge[v], v);
+      }
+    }
+  }
+  // Prune dangling branches (degree-1 vertices off the boundary).
+  std::vector<int> degree(nv, 0);
+  for (size_t e = 0; e < graph.edges.size(); ++e)
+    if (in_cut[e])
+      ++degree[graph.edges[e][0]], ++degree[graph.edges[e][1]];
+  std::vector<int> leaves;
+  for (size_t v = 0; v < nv; ++v)
+    if (degree[v] == 1 && !on_boundary[v])
+      leaves.push_back(int(v));
+  while (!leaves.empty()) {
+    const int v = leaves.back();
+    leaves.pop_back();
+    if (degree[v] != 1)
+      continue;
+    for (int e : graph.vertex_edges[v]) {
+      if (!in_cut[e])
+        continue;
+      in_cut[e] = 0;
+      --degree[v];
+      const int w = graph.other(e, v);
+      if (--degree[w] == 1 && !on_boundary[w])
+        leaves.push_back(w);
+      break;
+    }
+  }
+  std::vector<Edge> cut;
+  for (size_t e = 0; e < graph.edges.size(); ++e)
+    if (in_cut[e])
+      cut.push_back(graph.edges[e]);
+  return cut;
+}
+
+std::vector<double> edge_distances(const TriangleMesh& mesh, const std::vector<int>& sources) {
+  const EdgeGraph graph(mesh);
+  std::vector<double> distance(mesh.positions.size(), std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  for (int s : sources) {
+    distance[s] = 0.0;
+    queue.push({0.0, s});
+  }
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[v])
+      continue;
+    for (int e : graph.vertex_edges[v]) {
+      const int w = graph.other(e, v);
+      const double dw = d + edge_length(mesh, v, w);
+      if (dw < distance[w]) {
+        distance[w] = dw;
+        queue.push({dw, w});
+      }
+    }
+  }
+  return distance;
+}
+
+std::vector<int> shortest_path(const TriangleMesh& mesh, int from, int to,
+                               const std::vector<char>& blocked) {
+  const EdgeGraph graph(mesh);
+  std::vector<double> distance(mesh.positions.size(), std::numeric_limits<double>::infinity());
+  std::vector<int> previous(mesh.positions.size(), -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  distance[from] = 0.0;
+  queue.push({0.0, from});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[v])
+      continue;
+    if (v == to)
+      break;
+    for (int e : graph.vertex_edges[v]) {
+      const int w = graph.other(e, v);
+      if (w != to && !blocked.empty() && blocked[w])
+        continue;
+      const double dw = d + edge_length(mesh, v, w);
+      if (dw < distance[w]) {
+        distance[w] = dw;
+        previous[w] = v;
+        queue.push({dw, w});
+      }
+    }
+  }
+  if (from != to && previous[to] < 0)
+    return {};
+  std::vector<int> path{to};
+  while (path.back() != from)
+    path.push_back(previous[path.back()]);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+std::vector<int> farthest_points(const TriangleMesh& mesh, int count) {
+  std::vector<int> points;
+  std::vector<double> distance = edge_distances(mesh, {0});
+  auto farthest = [&] {
+    int best = 0;
+    for (size_t v = 0; v < distance.size(); ++v)
+      if (std::isfinite(distance[v]) && distance[v] > distance[best])
+        best = int(v);
+    return best;
+  };
+  points.push_back(farthest());
+  while (int(points.size()) < count) {
+    distance = edge_distances(mesh, points);
+    points.push_back(farthest());
+  }
+  return points;
+}
+
+DiskMesh cut_open(const TriangleMesh& mesh, const std::vector<Edge>& cut) {
+  const EdgeGraph graph(mesh);
+  std::vector<char> is_cut(graph.edges.size(), 0);
+  for (const Edge& e : cut) {
+    auto it = graph.index.find(edge_key(e[0], e[1]));
+    if (it != graph.index.end())
+      is_cut[it->second] = 1;
+  }
+  // Corners 3f + k; join the two corners at vertex v on either side of every uncut interior edge.
+  const size_t nc = 3 * mesh.triangles.size();
+  std::vector<int> parent(nc);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  auto corner_at = [&](int f, int v) {
+    const glm::ivec3& t = mesh.triangles[f];
+    return 3 * f + (t[0] == v ? 0 : t[1] == v ? 1 : 2);
+  };
+  for (size_t e = 0; e < graph.edges.size(); ++e) {
+    if (is_cut[e] || graph.boundary(int(e)))
+      continue;
+    const int f = graph.edge_faces[e][0], g = graph.edge_faces[e][1];
+    for (int end = 0; end < 2; ++end) {
+      const int v = graph.edges[e][end];
+      const int a = find(corner_at(f, v)), b = find(corner_at(g, v));
+      if (a != b)
+        parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  DiskMesh disk;
+  disk.triangles.resize(mesh.triangles.size());
+  std::vector<int> vertex_of_class(nc, -1);
+  for (size_t c = 0; c < nc; ++c) {
+    int& v = vertex_of_class[find(int(c))];
+    if (v < 0) {
+      v = int(disk.vertex_origin.size());
+      disk.vertex_origin.push_back(mesh.triangles[c / 3][c % 3]);
+    }
+    disk.triangles[c / 3][c % 3] = v;
+  }
+  return disk;
+}
+
+}  // namespace gfield
