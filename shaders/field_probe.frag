@@ -1,0 +1,25 @@
+#version 450
+// One geometry-field lookup per pixel for rays given in two textures (origin + t_min, direction +
+// t_max, mesh coordinates), for comparing the GPU lookup with the CPU one. Output: (hit, t, u, v).
+#include "lib/gpu_assets.glsl"
+
+layout(binding = 3) uniform sampler2D u_ray_origins;
+layout(binding = 4) uniform sampler2D u_ray_directions;
+uniform int u_layer;
+uniform int u_samples_per_side;
+uniform int u_image_size;
+uniform vec3 u_box_min;
+uniform vec3 u_box_max;
+uniform int u_mode;
+uniform bool u_last;
+
+layout(location = 0) out vec4 o_hit;
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 origin = texelFetch(u_ray_origins, pixel, 0);
+  vec4 direction = texelFetch(u_ray_directions, pixel, 0);
+  gs_select_asset(u_layer, u_samples_per_side, u_image_size, u_box_min, u_box_max);
+  GfHit h = gf_trace(origin.xyz, direction.xyz, origin.w, direction.w, u_mode, u_last);
+  o_hit = h.hit ? vec4(1.0f, h.t, h.uv) : vec4(0.0f, 0.0f, -1.0f, -1.0f);
+}

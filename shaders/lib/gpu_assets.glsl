@@ -1,0 +1,39 @@
+// The scene's geometry images and geometry fields on the GPU (runtime/gpu_assets.hpp): three
+// 2D-array textures, one layer per asset, read with texelFetch. A lookup first selects its asset
+// with gs_select_asset(); the functions that shaders/lib/field_lookup.glsl expects then read
+// that asset's layer.
+
+layout(binding = 0) uniform sampler2DArray u_gi_positions;  // xyz = P (mesh coordinates), w = A
+layout(binding = 1) uniform sampler2DArray u_gi_normals;    // xyz = unit normal
+layout(binding = 2) uniform sampler2DArray u_fields;        // xy = uv, texel (exit, entry)
+
+int gs_layer = 0;
+int gs_samples_per_side = 0;
+int gs_image_size = 2;
+vec3 gs_box_min = vec3(0.0f);
+vec3 gs_box_max = vec3(1.0f);
+
+void gs_select_asset(int layer, int samples_per_side, int image_size, vec3 box_min,
+                     vec3 box_max) {
+  gs_layer = layer;
+  gs_samples_per_side = samples_per_side;
+  gs_image_size = image_size;
+  gs_box_min = box_min;
+  gs_box_max = box_max;
+}
+
+int gf_samples_per_side() { return gs_samples_per_side; }
+vec2 gf_field_texel(int entry, int exit) {
+  return texelFetch(u_fields, ivec3(exit, entry, gs_layer), 0).xy;
+}
+int gf_image_size() { return gs_image_size; }
+vec3 gf_image_position_texel(int i, int j) {
+  return texelFetch(u_gi_positions, ivec3(i, j, gs_layer), 0).xyz;
+}
+vec3 gf_image_normal_texel(int i, int j) {
+  return texelFetch(u_gi_normals, ivec3(i, j, gs_layer), 0).xyz;
+}
+vec3 gf_box_min() { return gs_box_min; }
+vec3 gf_box_max() { return gs_box_max; }
+
+#include "lib/field_lookup.glsl"

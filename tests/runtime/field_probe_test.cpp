@@ -1,0 +1,87 @@
+// The GPU geometry-field lookup (shaders/lib/field_lookup.glsl through the runtime's textures)
+// against the CPU lookup (core/field_lookup) for the same rays, in every mode, and both against
+// the exact sphere.
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "gfield/field_lookup.hpp"
+#include "runtime/field_probe.hpp"
+#include "runtime/gl_context.hpp"
+#include "runtime/shader_program.hpp"
+#include "synthetic_assets.hpp"
+
+namespace gfield {
+namespace {
+
+/// Camera-like rays from a viewpoint at the sphere plus random rays crossing the box.
+std::vector<Ray> test_rays() {
+  std::vector<Ray> rays;
+  const glm::vec3 eye(2.5f, 1.4f, 3.1f);
+  const glm::vec3 forward = glm::normalize(-eye);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+  const glm::vec3 up = glm::cross(right, forward);
+  for (int j = 0; j < 96; ++j) {
+    for (int i = 0; i < 96; ++i) {
+      const glm::vec2 p = (glm::vec2(i, j) + 0.5f) / 96.0f * 2.0f - 1.0f;
+      rays.push_back({eye, forward + 0.32f * (p.x * right + p.y * up), 0.0f, 3.0e38f});
+    }
+  }
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-1.2f, 1.2f);
+  for (int k = 0; k < 8192; ++k) {
+    const glm::vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
+    rays.push_back({a, b - a, -10.0f, 10.0f});
+  }
+  return rays;
+}
+
+TEST(FieldProbe, GpuLookupAgreesWithCpuLookup) {
+  std::string error;
+  auto context = GlContext::create_headless(error);
+  ASSERT_NE(context, nullptr) << error;
+  GeometryImage image;
+  GeometryField field;
+  test::make_sphere_assets(64, 8, image, field);
+  FieldLookup lookup;
+  ASSERT_TRUE(make_field_lookup(field, image, lookup, error)) << error;
+  GpuAssets assets;
+  ASSERT_TRUE(assets.upload({&image}, {&field}, error)) << error;
+  const std::vector<Ray> rays = test_rays();
+
+  for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
+    for (bool last : {false, true}) {
+      std::vector<glm::vec4> gpu;
+      ASSERT_TRUE(
+          probe_field_gpu(assets, 0, rays, mode, last, default_shader_dir().string(), gpu, error))
+          << error;
+      size_t agree = 0, hits = 0, truth = 0;
+      for (size_t i = 0; i < rays.size(); ++i) {
+        const FieldHit cpu =
+            last ? lookup_last_hit(lookup, rays[i], mode) : lookup_first_hit(lookup, rays[i], mode);
+        const bool gpu_hit = gpu[i].x > 0.5f;
+        hits += cpu.hit ? 1 : 0;
+        if (gpu_hit == cpu.hit &&
+            (!cpu.hit || glm::distance(glm::vec2(gpu[i].z, gpu[i].w), cpu.uv) < 1e-3f))
+          ++agree;
+        // Ground truth for the camera rays (first hit, unbounded t).
+        if (!last && i < 96 * 96) {
+          const bool exact = test::sphere_hit(rays[i].origin, rays[i].direction) >= 0.0f;
+          truth += exact == gpu_hit ? 1 : 0;
+        }
+      }
+      const double agreement = double(agree) / double(rays.size());
+      SCOPED_TRACE(std::string(lookup_mode_name(mode)) + (last ? " last" : " first"));
+      EXPECT_GE(agreement, 0.999) << agree << " of " << rays.size();
+      EXPECT_GT(hits, rays.size() / 4);  // the rays do exercise hits
+      if (!last && mode == LookupMode::kRefined)
+        EXPECT_GE(double(truth) / (96.0 * 96.0), 0.99);
+      std::printf("%s %s: %.4f%% agree, %zu CPU hits of %zu rays\n", lookup_mode_name(mode),
+                  last ? "last" : "first", 100.0 * agreement, hits, rays.size());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gfield
