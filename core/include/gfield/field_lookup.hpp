@@ -1,0 +1,72 @@
+#pragma once
+// CPU lookup of a geometry field: the first (or last) hit of any ray on an object stored as a
+// geometry field + geometry image. The math is shaders/lib/field_lookup.glsl, compiled as C++,
+// so that the runtime's GLSL gives the same answers (docs/geometry-field.md).
+
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "gfield/geometry_field.hpp"
+#include "gfield/geometry_image.hpp"
+
+namespace gfield {
+
+/// How a ray is looked up (docs/geometry-field.md):
+///  - kNearest: the uv stored for the nearest entry and exit samples (the paper, no filtering);
+///  - kLinear: the paper's linear kernel over the 16 surrounding sample pairs;
+///  - kRefined: the 16 pairs' uvs refined against the geometry image's surface by Newton's
+///    method and verified against the ray; the nearest verified hit.
+enum class LookupMode { kNearest = 0, kLinear = 1, kRefined = 2 };
+
+/// "nearest", "linear", "refined".
+const char* lookup_mode_name(LookupMode mode);
+/// Parses a name of lookup_mode_name; false for anything else.
+bool parse_lookup_mode(const std::string& name, LookupMode& mode);
+
+/// origin + t * direction, t in [t_min, t_max] (direction need not be unit).
+struct Ray {
+  glm::vec3 origin{0.0f};
+  glm::vec3 direction{0.0f, 0.0f, 1.0f};
+  float t_min = 0.0f;
+  float t_max = 3.0e38f;
+};
+
+/// A lookup's answer. t is along the ray's own direction; distance = t * |direction|.
+struct FieldHit {
+  bool hit = false;
+  float t = 0.0f;
+  float distance = 0.0f;
+  glm::vec2 uv{-1.0f};       ///< geometry-image uv
+  glm::vec3 position{0.0f};  ///< coordinates of the ray (mesh, or world for instances)
+  glm::vec3 normal{0.0f};    ///< unit normal, same coordinates
+};
+
+/// A geometry field with the geometry image it indexes. Holds pointers: both must outlive it.
+struct FieldLookup {
+  const GeometryField* field = nullptr;
+  const GeometryImage* image = nullptr;
+};
+
+/// Pairs a field with its image. False with an error when they do not belong together (different
+/// box or source), or when either is empty or inconsistent (table size, image size < 2).
+bool make_field_lookup(const GeometryField& field, const GeometryImage& image, FieldLookup& lookup,
+                       std::string& error);
+
+/// False with an error for a ray with a non-finite origin or direction, a zero direction, or
+/// t_min > t_max (NaN included). Lookups return a miss for such rays.
+bool check_ray(const Ray& ray, std::string& error);
+
+/// The first hit of `ray` (mesh coordinates) in [t_min, t_max].
+FieldHit lookup_first_hit(const FieldLookup& lookup, const Ray& ray, LookupMode mode);
+/// The last hit of `ray` in [t_min, t_max]: the first hit of the reversed line, read from the
+/// table with entry and exit swapped (rays leaving a refracting object).
+FieldHit lookup_last_hit(const FieldLookup& lookup, const Ray& ray, LookupMode mode);
+
+/// An instance: the object placed in the world by `object_to_world` (rigid, scaled, any
+/// invertible affine map). The world ray is mapped into mesh coordinates first; the hit comes
+/// back in world coordinates (normal by the inverse transpose), with t unchanged.
+FieldHit lookup_instance(const FieldLookup& lookup, const glm::mat4& object_to_world,
+                         const Ray& world_ray, LookupMode mode, bool last_hit = false);
+
+}  // namespace gfield

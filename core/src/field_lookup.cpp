@@ -1,0 +1,146 @@
+#include "gfield/field_lookup.hpp"
+
+#include <cmath>
+
+namespace gfield {
+namespace {
+
+using namespace glm;  // the GLSL vocabulary of field_lookup.glsl
+
+/// shaders/lib/field_lookup.glsl compiled as C++: its functions become members of this struct,
+/// whose fetch functions read the CPU copies of the textures.
+struct GlslFieldLookup {
+  const GeometryField& field;
+  const GeometryImage& image;
+
+  int gf_samples_per_side() const { return field.samples_per_side; }
+  vec2 gf_field_texel(int entry, int exit) const { return field_uv(field, entry, exit); }
+  int gf_image_size() const { return image.size; }
+  vec3 gf_image_position_texel(int i, int j) const {
+    return image.position[texel_index(image, i, j)];
+  }
+  vec3 gf_image_normal_texel(int i, int j) const { return image.normal[texel_index(image, i, j)]; }
+  vec3 gf_box_min() const { return field.box.min; }
+  vec3 gf_box_max() const { return field.box.max; }
+
+#include "../../shaders/lib/field_lookup.glsl"
+};
+
+bool same_box(const Box& a, const Box& b) {
+  const float tolerance = 1e-6f * diagonal(a);
+  return all(lessThanEqual(abs(a.min - b.min), vec3(tolerance))) &&
+         all(lessThanEqual(abs(a.max - b.max), vec3(tolerance)));
+}
+
+FieldHit trace(const FieldLookup& lookup, const Ray& ray, LookupMode mode, bool last) {
+  std::string error;
+  if (lookup.field == nullptr || lookup.image == nullptr || !check_ray(ray, error)) {
+    return {};
+  }
+  GlslFieldLookup glsl{*lookup.field, *lookup.image};
+  const auto h = glsl.gf_trace(ray.origin, ray.direction, ray.t_min, ray.t_max, int(mode), last);
+  FieldHit hit;
+  if (h.hit) {
+    hit.hit = true;
+    hit.t = h.t;
+    hit.distance = h.t * length(ray.direction);
+    hit.uv = h.uv;
+    hit.position = h.position;
+    hit.normal = h.normal;
+  }
+  return hit;
+}
+
+}  // namespace
+
+const char* lookup_mode_name(LookupMode mode) {
+  switch (mode) {
+    case LookupMode::kNearest:
+      return "nearest";
+    case LookupMode::kLinear:
+      return "linear";
+    case LookupMode::kRefined:
+      return "refined";
+  }
+  return "unknown";
+}
+
+bool parse_lookup_mode(const std::string& name, LookupMode& mode) {
+  for (LookupMode m : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
+    if (name == lookup_mode_name(m)) {
+      mode = m;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool make_field_lookup(const GeometryField& field, const GeometryImage& image, FieldLookup& lookup,
+                       std::string& error) {
+  const size_t side = size_t(sample_count(field.samples_per_side));
+  if (field.samples_per_side <= 0 || field.uv.size() != side * side) {
+    error = "geometry field: the table does not hold (6N^2)^2 entries";
+    return false;
+  }
+  const size_t texels = size_t(image.size) * size_t(image.size);
+  if (image.size < 2 || image.position.size() != texels || image.normal.size() != texels) {
+    error = "geometry image: empty or inconsistent texel arrays";
+    return false;
+  }
+  if (!same_box(field.box, image.box)) {
+    error = "the geometry field and the geometry image have different boxes (not built together)";
+    return false;
+  }
+  if (field.source != image.source) {
+    error = "the geometry field was built from '" + field.source +
+            "' but the geometry image from '" + image.source + "'";
+    return false;
+  }
+  lookup.field = &field;
+  lookup.image = &image;
+  return true;
+}
+
+bool check_ray(const Ray& ray, std::string& error) {
+  const auto finite = [](vec3 v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+  };
+  if (!finite(ray.origin) || !finite(ray.direction)) {
+    error = "ray with a non-finite origin or direction";
+    return false;
+  }
+  if (dot(ray.direction, ray.direction) == 0.0f) {
+    error = "ray with a zero direction";
+    return false;
+  }
+  if (!(ray.t_min <= ray.t_max)) {
+    error = "ray with t_min > t_max or a NaN range";
+    return false;
+  }
+  return true;
+}
+
+FieldHit lookup_first_hit(const FieldLookup& lookup, const Ray& ray, LookupMode mode) {
+  return trace(lookup, ray, mode, false);
+}
+
+FieldHit lookup_last_hit(const FieldLookup& lookup, const Ray& ray, LookupMode mode) {
+  return trace(lookup, ray, mode, true);
+}
+
+FieldHit lookup_instance(const FieldLookup& lookup, const glm::mat4& object_to_world,
+                         const Ray& world_ray, LookupMode mode, bool last_hit) {
+  const mat4 world_to_object = inverse(object_to_world);
+  Ray ray = world_ray;
+  ray.origin = vec3(world_to_object * vec4(world_ray.origin, 1.0f));
+  ray.direction = vec3(world_to_object * vec4(world_ray.direction, 0.0f));
+  FieldHit hit = trace(lookup, ray, mode, last_hit);
+  if (hit.hit) {
+    hit.position = vec3(object_to_world * vec4(hit.position, 1.0f));
+    hit.normal = normalize(vec3(transpose(world_to_object) * vec4(hit.normal, 0.0f)));
+    hit.distance = hit.t * length(world_ray.direction);
+  }
+  return hit;
+}
+
+}  // namespace gfield

@@ -1,0 +1,52 @@
+#pragma once
+// Geometry field precomputation (Li et al. 2006, section 2) with Embree 3.
+//
+// For every pair (entry sample, exit sample) of the 6 N^2 box samples on different faces, the ray
+// from the entry point towards the exit point (mesh coordinates, t in [0, 1]) is cast against the
+// mesh the geometry image was built from. A hit stores the geometry-image uv of the hit point,
+// interpolated from the hit triangle's corner uvs with Embree's barycentrics; a miss stores
+// kFieldMiss, a pair on one face kFieldNoRay. Rays are cast in coherent packets (one entry sample,
+// 8 consecutive exit samples, rtcIntersect8) with TBB over the entry samples.
+
+#include <cstddef>
+#include <string>
+
+#include "gfield/geometry_field.hpp"
+#include "preprocess/embree_mesh.hpp"
+#include "preprocess/parameterized_mesh.hpp"
+
+namespace gfield {
+
+/// Accepted samples per side N (the table has (6N^2)^2 entries: 0.3 MB at N = 4, 1.5 GB at 48).
+inline constexpr int kMinSamplesPerSide = 4;
+inline constexpr int kMaxSamplesPerSide = 48;
+
+/// Peak bytes of building and writing a field with N samples per side: the float uv table
+/// (8 bytes per entry) plus the EXR writer's copy (4 bytes per entry for HALF, 8 for FLOAT).
+size_t field_memory_estimate(int samples_per_side, bool half_precision);
+
+/// Available physical memory in bytes (Linux MemAvailable), 0 when unknown.
+size_t available_memory();
+
+/// Checks N against [kMinSamplesPerSide, kMaxSamplesPerSide] and the memory estimate against
+/// the available memory. False with an error that states both figures.
+bool check_field_size(int samples_per_side, bool half_precision, std::string& error);
+
+struct FieldBuildStats {
+  size_t rays = 0;  ///< rays cast (pairs on different faces)
+  size_t hits = 0;  ///< of those, rays that hit the mesh
+  double seconds = 0.0;
+};
+
+/// Builds the field of `pm` (the parameterised mesh, already in `embree`) in `box` with N samples
+/// per side. `field.source` is left to the caller. False with an error for N out of range or a
+/// mesh whose corner uvs do not match its triangles.
+bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree, const Box& box,
+                          int samples_per_side, GeometryField& field, std::string& error,
+                          FieldBuildStats* stats = nullptr);
+
+/// Casts exactly the rays and packets of build_geometry_field and stores nothing (the reference
+/// of the build benchmark). Returns the number of hits.
+size_t cast_field_rays(const EmbreeMesh& embree, const Box& box, int samples_per_side);
+
+}  // namespace gfield

@@ -1,0 +1,407 @@
+#include "preprocess/verify.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "gfield/exr_io.hpp"
+#include "preprocess/parameterized_mesh.hpp"
+
+namespace gfield {
+namespace {
+
+/// One ray's answer reduced to what is compared.
+struct Answer {
+  bool hit = false;
+  glm::vec3 position{0.0f};
+  glm::vec3 normal{0.0f};
+};
+
+constexpr LookupMode kModes[] = {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined};
+
+double percentile(std::vector<float>& values, double p) {
+  if (values.empty()) {
+    return 0.0;
+  }
+  const size_t k = size_t(p * double(values.size() - 1) + 0.5);
+  std::nth_element(values.begin(), values.begin() + ptrdiff_t(k), values.end());
+  return double(values[k]);
+}
+
+/// The exact first (or last) hit of `ray` in [t_min, t_max], cast with rtcIntersect1.
+Answer exact_answer(const EmbreeMesh& exact, const Box& box, const Ray& ray, bool last) {
+  Answer a;
+  RayHit h;
+  if (!last) {
+    h = intersect(exact, ray.origin, ray.direction, ray.t_min, ray.t_max);
+    if (h.hit) {
+      a.position = ray.origin + h.t * ray.direction;
+    }
+  } else {
+    // Cast the reversed line from the far end of the range (clipped to the box) backwards.
+    const CubeCrossing c = clip_to_unit_cube(to_unit_cube(box, ray.origin),
+                                             direction_to_unit_cube(box, ray.direction));
+    if (!c.hit) {
+      return a;
+    }
+    const float t_far = std::min(ray.t_max, c.t_exit);
+    if (t_far < ray.t_min) {
+      return a;
+    }
+    const glm::vec3 far = ray.origin + t_far * ray.direction;
+    h = intersect(exact, far, -ray.direction, 0.0f, t_far - ray.t_min);
+    if (h.hit) {
+      a.position = far - h.t * ray.direction;
+    }
+  }
+  a.hit = h.hit;
+  if (h.hit) {
+    a.normal = glm::normalize(h.geometric_normal);
+  }
+  return a;
+}
+
+std::vector<Answer> exact_answers(const EmbreeMesh& exact, const Box& box,
+                                  const std::vector<Ray>& rays, bool last) {
+  std::vector<Answer> answers(rays.size());
+  tbb::parallel_for(size_t(0), rays.size(),
+                    [&](size_t i) { answers[i] = exact_answer(exact, box, rays[i], last); });
+  return answers;
+}
+
+std::vector<Answer> lookup_answers(const FieldLookup& lookup, const std::vector<Ray>& rays,
+                                   LookupMode mode, bool last, double& seconds) {
+  std::vector<Answer> answers(rays.size());
+  const auto start = std::chrono::steady_clock::now();
+  tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
+    const FieldHit h =
+        last ? lookup_last_hit(lookup, rays[i], mode) : lookup_first_hit(lookup, rays[i], mode);
+    answers[i] = {h.hit, h.position, h.normal};
+  });
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return answers;
+}
+
+AccuracyStats compare(const std::vector<Answer>& answers, const std::vector<Answer>& exact,
+                      float diagonal_length) {
+  AccuracyStats s;
+  s.rays = answers.size();
+  std::vector<float> position_errors;
+  std::vector<float> normal_errors;
+  for (size_t i = 0; i < answers.size(); ++i) {
+    s.agree += size_t(answers[i].hit == exact[i].hit);
+    s.exact_hits += size_t(exact[i].hit);
+    s.answer_hits += size_t(answers[i].hit);
+    if (answers[i].hit && exact[i].hit) {
+      position_errors.push_back(100.0f * glm::distance(answers[i].position, exact[i].position) /
+                                diagonal_length);
+      const float c = glm::clamp(glm::dot(answers[i].normal, exact[i].normal), -1.0f, 1.0f);
+      normal_errors.push_back(glm::degrees(std::acos(c)));
+    }
+  }
+  s.both_hit = position_errors.size();
+  s.position_median = percentile(position_errors, 0.5);
+  s.position_p95 = percentile(position_errors, 0.95);
+  s.position_p99 = percentile(position_errors, 0.99);
+  s.normal_median = percentile(normal_errors, 0.5);
+  s.normal_p95 = percentile(normal_errors, 0.95);
+  return s;
+}
+
+/// Uniform point on face `face` of the unit cube.
+glm::vec3 random_face_point(std::mt19937_64& rng, int face) {
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const float s = unit(rng);
+  const float t = unit(rng);
+  return face_point(face, glm::vec2(s, t));
+}
+
+/// Lookups and exact casts of one ray family against every reference mesh.
+struct Family {
+  std::string name;
+  std::vector<Ray> rays;
+  bool with_last = false;  ///< also the last hit (segments only)
+};
+
+}  // namespace
+
+nlohmann::json accuracy_to_json(const AccuracyStats& s) {
+  return {{"rays", s.rays},
+          {"hit_agreement", s.hit_agreement()},
+          {"exact_hits", s.exact_hits},
+          {"answer_hits", s.answer_hits},
+          {"both_hit", s.both_hit},
+          {"position_error_percent_of_diagonal",
+           {{"median", s.position_median}, {"p95", s.position_p95}, {"p99", s.position_p99}}},
+          {"normal_error_degrees", {{"median", s.normal_median}, {"p95", s.normal_p95}}},
+          {"seconds", s.seconds}};
+}
+
+std::vector<Ray> random_box_rays(const Box& box, size_t count, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> face(0, 5);
+  std::uniform_int_distribution<int> other(1, 5);
+  std::vector<Ray> rays(count);
+  for (Ray& ray : rays) {
+    const int entry_face = face(rng);
+    const int exit_face = (entry_face + other(rng)) % 6;
+    const glm::vec3 entry = from_unit_cube(box, random_face_point(rng, entry_face));
+    const glm::vec3 exit = from_unit_cube(box, random_face_point(rng, exit_face));
+    ray.origin = entry;
+    ray.direction = exit - entry;
+    ray.t_min = 0.0f;
+    ray.t_max = 1.0f;
+  }
+  return rays;
+}
+
+std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<float> gauss(0.0f, 1.0f);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const glm::vec3 centre = 0.5f * (box.min + box.max);
+  const float radius = diagonal(box);
+  std::vector<Ray> rays(count);
+  for (Ray& ray : rays) {
+    glm::vec3 g(gauss(rng), gauss(rng), gauss(rng));
+    while (glm::dot(g, g) < 1e-12f) {
+      g = glm::vec3(gauss(rng), gauss(rng), gauss(rng));
+    }
+    const glm::vec3 eye = centre + radius * glm::normalize(g);
+    const glm::vec3 target = from_unit_cube(box, glm::vec3(unit(rng), unit(rng), unit(rng)));
+    ray.origin = eye;
+    ray.direction = glm::normalize(target - eye);
+    ray.t_min = 0.0f;
+    ray.t_max = 3.0e38f;
+  }
+  return rays;
+}
+
+AccuracyStats verify_table(const GeometryField& field, const GeometryImage& image,
+                           const EmbreeMesh& exact, size_t pairs, uint64_t seed) {
+  const int n = field.samples_per_side;
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> sample(0, sample_count(n) - 1);
+  std::vector<glm::ivec2> chosen(pairs);
+  for (glm::ivec2& pair : chosen) {
+    do {
+      pair = glm::ivec2(sample(rng), sample(rng));
+    } while (pair.x / (n * n) == pair.y / (n * n));
+  }
+  std::vector<Answer> stored(pairs);
+  std::vector<Answer> cast(pairs);
+  const auto start = std::chrono::steady_clock::now();
+  tbb::parallel_for(size_t(0), pairs, [&](size_t i) {
+    const glm::vec2 uv = field_uv(field, chosen[i].x, chosen[i].y);
+    if (is_field_hit(uv)) {
+      stored[i] = {true, sample_position(image, uv), sample_normal(image, uv)};
+    }
+  });
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  tbb::parallel_for(size_t(0), pairs, [&](size_t i) {
+    const glm::vec3 entry = from_unit_cube(field.box, sample_point(face_sample(chosen[i].x, n), n));
+    const glm::vec3 exit = from_unit_cube(field.box, sample_point(face_sample(chosen[i].y, n), n));
+    cast[i] = exact_answer(exact, field.box, Ray{entry, exit - entry, 0.0f, 1.0f}, false);
+  });
+  AccuracyStats s = compare(stored, cast, diagonal(field.box));
+  s.seconds = seconds;
+  return s;
+}
+
+AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& exact,
+                            const std::vector<Ray>& rays, LookupMode mode, bool last) {
+  double seconds = 0.0;
+  const std::vector<Answer> answers = lookup_answers(lookup, rays, mode, last, seconds);
+  const std::vector<Answer> cast = exact_answers(exact, lookup.field->box, rays, last);
+  AccuracyStats s = compare(answers, cast, diagonal(lookup.field->box));
+  s.seconds = seconds;
+  return s;
+}
+
+namespace {
+
+/// The original mesh file of asset NAME: the option, NAME.report.json's "source_path", or the
+/// image's source as a path (as given, or beside the asset). Empty when none exists.
+std::string find_original(const std::string& name, const VerifyOptions& options,
+                          const std::string& source) {
+  namespace fs = std::filesystem;
+  if (!options.original.empty()) {
+    return options.original;
+  }
+  std::ifstream report_file(name + ".report.json");
+  if (report_file) {
+    const nlohmann::json report = nlohmann::json::parse(report_file, nullptr, false);
+    if (report.is_object() && report.contains("source_path") && report["source_path"].is_string() &&
+        fs::exists(report["source_path"].get<std::string>())) {
+      return report["source_path"].get<std::string>();
+    }
+  }
+  if (!source.empty()) {
+    if (fs::exists(source)) {
+      return source;
+    }
+    const fs::path beside = fs::path(name).parent_path() / fs::path(source).filename();
+    if (fs::exists(beside)) {
+      return beside.string();
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,
+                  std::string& error) {
+  const std::string field_path = name + ".gfield.exr";
+  const std::string image_path = name + ".gimage.exr";
+  const std::string mesh_path = parameterized_mesh_path(image_path);
+  GeometryField field;
+  GeometryImage image;
+  ParameterizedMesh pm;
+  if (!load_geometry_field(field_path, field, error) ||
+      !load_geometry_image(image_path, image, error) ||
+      !load_parameterized_mesh(mesh_path, pm, error)) {
+    return false;
+  }
+  FieldLookup lookup;
+  if (!make_field_lookup(field, image, lookup, error)) {
+    error = field_path + ": " + error;
+    return false;
+  }
+
+  struct Reference {
+    std::string label;
+    std::string path;
+    TriangleMesh mesh;
+  };
+  std::vector<Reference> references;
+  references.push_back({"built", mesh_path, pm.mesh});
+  const std::string original = find_original(name, options, image.source);
+  if (!original.empty()) {
+    Reference r{"original", original, {}};
+    if (!load_mesh(original, r.mesh, error)) {
+      return false;
+    }
+    references.push_back(std::move(r));
+  }
+
+  std::vector<Family> families;
+  families.push_back({"box_rays", random_box_rays(field.box, options.rays, options.seed), true});
+  families.push_back(
+      {"view_rays", random_view_rays(field.box, options.rays, options.seed + 1), false});
+
+  // Lookup answers once per family and mode; each reference casts its own exact answers.
+  struct Run {
+    std::string family;
+    std::string mode;
+    bool last;
+    std::vector<Answer> answers;
+    double seconds;
+  };
+  std::vector<Run> runs;
+  for (const Family& family : families) {
+    for (LookupMode mode : kModes) {
+      for (bool last : {false, true}) {
+        if (last && (!family.with_last || mode != LookupMode::kRefined)) {
+          continue;
+        }
+        Run run{family.name, lookup_mode_name(mode), last, {}, 0.0};
+        run.answers = lookup_answers(lookup, family.rays, mode, last, run.seconds);
+        runs.push_back(std::move(run));
+      }
+    }
+  }
+
+  report = nlohmann::json::object();
+  report["name"] = name;
+  report["field"] = field_path;
+  report["samples_per_side"] = field.samples_per_side;
+  report["image_size"] = image.size;
+  report["source"] = image.source;
+  report["rays_per_family"] = options.rays;
+  report["seed"] = options.seed;
+  report["references"] = nlohmann::json::array();
+  for (const Reference& reference : references) {
+    EmbreeMesh exact;
+    if (!exact.build(reference.mesh, error)) {
+      error = reference.path + ": " + error;
+      return false;
+    }
+    nlohmann::json r;
+    r["mesh"] = reference.label;
+    r["path"] = reference.path;
+    r["table"] =
+        accuracy_to_json(verify_table(field, image, exact, options.rays, options.seed + 2));
+    for (const Family& family : families) {
+      const std::vector<Answer> first = exact_answers(exact, field.box, family.rays, false);
+      std::vector<Answer> last;
+      if (family.with_last) {
+        last = exact_answers(exact, field.box, family.rays, true);
+      }
+      for (const Run& run : runs) {
+        if (run.family != family.name) {
+          continue;
+        }
+        AccuracyStats s = compare(run.answers, run.last ? last : first, diagonal(field.box));
+        s.seconds = run.seconds;
+        r[family.name][run.last ? run.mode + "_last" : run.mode] = accuracy_to_json(s);
+      }
+    }
+    report["references"].push_back(std::move(r));
+  }
+  if (original.empty()) {
+    report["original_note"] = "original mesh file not found (use --original)";
+  }
+  return true;
+}
+
+std::string verify_report_to_text(const nlohmann::json& report) {
+  std::ostringstream out;
+  out << "verify " << report["name"].get<std::string>() << ": N = " << report["samples_per_side"]
+      << ", image " << report["image_size"] << "^2, " << report["rays_per_family"]
+      << " rays per family, seed " << report["seed"] << "\n";
+  out << "position error in % of the box diagonal, normal error in degrees\n";
+  char line[256];
+  for (const nlohmann::json& r : report["references"]) {
+    out << "against the " << r["mesh"].get<std::string>() << " mesh ("
+        << r["path"].get<std::string>() << "):\n";
+    std::snprintf(line, sizeof(line), "  %-22s %9s %8s %8s %8s %8s %8s %9s\n", "test", "hit/miss",
+                  "median", "p95", "p99", "n.med", "n.p95", "Mrays/s");
+    out << line;
+    const auto row = [&](const std::string& label, const nlohmann::json& s) {
+      const nlohmann::json& p = s["position_error_percent_of_diagonal"];
+      const nlohmann::json& nrm = s["normal_error_degrees"];
+      const double seconds = s["seconds"].get<double>();
+      const double rate = seconds > 0.0 ? s["rays"].get<double>() / seconds / 1e6 : 0.0;
+      std::snprintf(line, sizeof(line), "  %-22s %8.3f%% %8.4f %8.4f %8.4f %8.3f %8.3f %9.2f\n",
+                    label.c_str(), 100.0 * s["hit_agreement"].get<double>(),
+                    p["median"].get<double>(), p["p95"].get<double>(), p["p99"].get<double>(),
+                    nrm["median"].get<double>(), nrm["p95"].get<double>(), rate);
+      out << line;
+    };
+    row("table", r["table"]);
+    for (const char* family : {"box_rays", "view_rays"}) {
+      if (!r.contains(family)) {
+        continue;
+      }
+      for (const auto& [mode, s] : r[family].items()) {
+        row(std::string(family) + " " + mode, s);
+      }
+    }
+  }
+  if (report.contains("original_note")) {
+    out << report["original_note"].get<std::string>() << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace gfield

@@ -1,0 +1,66 @@
+#pragma once
+// Accuracy of a geometry field + geometry image against exact Embree ray casts (the ground
+// truth): the stored table itself, and the lookup modes on arbitrary rays.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "gfield/field_lookup.hpp"
+#include "preprocess/embree_mesh.hpp"
+
+namespace gfield {
+
+/// Agreement of some answers with exact casts. Position errors are in % of the box diagonal and
+/// normal errors in degrees, over the rays that both the answer and the exact cast call a hit.
+struct AccuracyStats {
+  size_t rays = 0;
+  size_t agree = 0;        ///< same hit/miss verdict
+  size_t exact_hits = 0;   ///< hits of the exact cast
+  size_t answer_hits = 0;  ///< hits of the answer under test
+  size_t both_hit = 0;
+  double position_median = 0.0;
+  double position_p95 = 0.0;
+  double position_p99 = 0.0;
+  double normal_median = 0.0;  ///< angle between the answer's normal and the exact face normal
+  double normal_p95 = 0.0;
+  double seconds = 0.0;  ///< time of the answers under test (lookups), not of the exact casts
+
+  double hit_agreement() const { return rays == 0 ? 0.0 : double(agree) / double(rays); }
+};
+
+nlohmann::json accuracy_to_json(const AccuracyStats& stats);
+
+/// `count` segments between uniform random points on two different faces of `box` (t in [0,1]).
+std::vector<Ray> random_box_rays(const Box& box, size_t count, uint64_t seed);
+/// `count` rays from uniform random viewpoints on the sphere of radius one box diagonal around
+/// the box centre, each aimed at a uniform random point of the box (unit direction, t >= 0).
+std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed);
+
+/// The table itself: `pairs` random sample pairs on different faces; the exact cast from entry to
+/// exit sample vs the stored uv (its position read from the geometry image).
+AccuracyStats verify_table(const GeometryField& field, const GeometryImage& image,
+                           const EmbreeMesh& exact, size_t pairs, uint64_t seed);
+
+/// Each ray's lookup (first hit, or last hit with `last`) vs the exact cast.
+AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& exact,
+                            const std::vector<Ray>& rays, LookupMode mode, bool last = false);
+
+struct VerifyOptions {
+  size_t rays = 1000000;  ///< arbitrary rays per family; the table subset uses as many pairs
+  uint64_t seed = 1;
+  std::string original;  ///< original mesh file; empty: from NAME.report.json or the source
+};
+
+/// Verifies the asset NAME (NAME.gfield.exr, NAME.gimage.exr, NAME.gimage.obj) against the mesh
+/// it was built from and, where found, against the original file. The report: see
+/// docs/geometry-field.md. False with an error "FILE: problem".
+bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,
+                  std::string& error);
+
+/// The report as readable text (one table per reference mesh).
+std::string verify_report_to_text(const nlohmann::json& report);
+
+}  // namespace gfield
