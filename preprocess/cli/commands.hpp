@@ -17,5 +17,7 @@ struct CommandError : std::runtime_error {
 };
 
 void add_info_command(CLI::App& app);
+void add_render_command(CLI::App& app);
+void add_compare_command(CLI::App& app);
 
 }  // namespace gfield

@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "gfield 0.1.0");
 
   gfield::add_info_command(app);
+  gfield::add_render_command(app);
+  gfield::add_compare_command(app);
 
   try {
     app.parse(argc, argv);
