@@ -12,18 +12,19 @@
 
 namespace gfield {
 
-/// One connected component (faces connected through shared vertices).
+/// One connected component: faces connected through shared edges. A pinched vertex (several
+/// fans of faces) counts once per fan, as if the surface were split there.
 struct ComponentTopology {
-  size_t vertices = 0;        ///< vertices referenced by the component's faces
-  size_t edges = 0;           ///< distinct undirected edges
+  size_t vertices = 0;  ///< (vertex, fan) pairs of the component's faces
+  size_t edges = 0;     ///< distinct undirected edges
   size_t faces = 0;
-  size_t boundary_edges = 0;  ///< edges with one face
-  size_t boundary_loops = 0;  ///< closed chains of boundary edges
+  size_t boundary_edges = 0;         ///< edges with one face
+  size_t boundary_loops = 0;         ///< closed chains of boundary edges
   size_t non_manifold_edges = 0;     ///< edges with more than two faces
   size_t non_manifold_vertices = 0;  ///< vertices whose faces form more than one fan
-  bool oriented = true;       ///< every interior edge is used once in each direction
-  long euler_characteristic = 0;  ///< V - E + F
-  /// (2 - chi - boundary loops) / 2 for a manifold oriented component, else -1 (undefined).
+  bool oriented = true;              ///< every interior edge is used once in each direction
+  long euler_characteristic = 0;     ///< V - E + F
+  /// (2 - chi - boundary loops) / 2 for an edge-manifold oriented component, else -1.
   long genus = -1;
   double area = 0.0;
   glm::dvec3 bounds_min{0.0};
@@ -31,9 +32,9 @@ struct ComponentTopology {
 };
 
 struct TopologyReport {
-  size_t vertices = 0;             ///< positions in the file
+  size_t vertices = 0;  ///< positions in the file
   size_t unreferenced_vertices = 0;
-  size_t faces = 0;                ///< triangles
+  size_t faces = 0;  ///< triangles
   size_t edges = 0;
   size_t boundary_edges = 0;
   size_t boundary_loops = 0;

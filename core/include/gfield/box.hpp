@@ -55,9 +55,13 @@ float diagonal(const Box& box);
 Box padded_bounds(const glm::vec3* points, size_t count, float relative_padding);
 
 /// 6 N^2: the number of samples on the cube (N samples per side of each face).
-inline int sample_count(int n) { return 6 * n * n; }
+inline int sample_count(int n) {
+  return 6 * n * n;
+}
 /// (face, a, b) -> sample index k.
-inline int sample_index(FaceSample s, int n) { return s.face * n * n + s.b * n + s.a; }
+inline int sample_index(FaceSample s, int n) {
+  return s.face * n * n + s.b * n + s.a;
+}
 /// Sample index k -> (face, a, b).
 inline FaceSample face_sample(int k, int n) {
   const int face = k / (n * n);
@@ -73,7 +77,9 @@ glm::vec2 face_coords(int face, glm::vec3 p);
 glm::vec3 sample_point(FaceSample s, int n);
 /// Face coordinates -> continuous sample coordinates: sample centres sit at integers, so (a, b) of
 /// the nearest sample is round(), and the 2 x 2 surrounding samples are floor() and floor() + 1.
-inline glm::vec2 sample_coords(glm::vec2 st, int n) { return st * float(n) - 0.5f; }
+inline glm::vec2 sample_coords(glm::vec2 st, int n) {
+  return st * float(n) - 0.5f;
+}
 /// The nearest sample on `face` to face coordinates `st` (clamped to the face).
 FaceSample nearest_sample(int face, glm::vec2 st, int n);
 

@@ -13,9 +13,9 @@ namespace gfield {
 /// n x n geometry image. Texel (i, j) = column i, scanline j, stored at index j * n + i, with its
 /// centre at uv ((i + 0.5) / n, (j + 0.5) / n).
 struct GeometryImage {
-  int size = 0;              ///< n, texels per side
-  Box box;                   ///< the box that maps to the unit cube (mesh coordinates)
-  std::string source;        ///< mesh file name the image was built from
+  int size = 0;                     ///< n, texels per side
+  Box box;                          ///< the box that maps to the unit cube (mesh coordinates)
+  std::string source;               ///< mesh file name the image was built from
   std::vector<glm::vec3> position;  ///< n*n surface points, mesh coordinates
   std::vector<glm::vec3> normal;    ///< n*n unit normals
   std::vector<float> coverage;      ///< n*n: 1 inside the parameterised surface, 0 in padding

@@ -3,7 +3,8 @@
 // total internal reflection, Fresnel reflectance, and named refractive indices.
 //
 // Conventions (as GLSL's reflect/refract): `incident` points towards the surface, `normal` is a
-// unit vector facing the incident side (dot(incident, normal) <= 0), eta = n_incident / n_transmitted.
+// unit vector facing the incident side (dot(incident, normal) <= 0), eta = n_incident /
+// n_transmitted.
 
 #include <optional>
 #include <span>

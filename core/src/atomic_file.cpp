@@ -1,0 +1,108 @@
+#include "gfield/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <csignal>
+#include <cstring>
+#include <fstream>
+#include <mutex>
+#include <system_error>
+
+namespace gfield {
+
+namespace {
+
+// Temporary files alive in this process, so that SIGINT/SIGTERM can remove them. Fixed-size
+// buffers: the signal handler may only call async-signal-safe functions (unlink, raise).
+constexpr int kSlots = 64;
+constexpr size_t kPathBytes = 4096;
+struct Slot {
+  std::atomic<bool> used{false};
+  char path[kPathBytes];
+};
+std::array<Slot, kSlots> g_slots;
+std::atomic<unsigned> g_counter{0};
+std::once_flag g_handlers_installed;
+
+extern "C" void remove_temporaries_and_reraise(int signal_number) {
+  for (Slot& slot : g_slots) {
+    if (slot.used.load()) {
+      ::unlink(slot.path);
+    }
+  }
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+void install_handlers() {
+  for (const int s : {SIGINT, SIGTERM, SIGHUP}) {
+    if (std::signal(s, remove_temporaries_and_reraise) == SIG_IGN) {
+      std::signal(s, SIG_IGN);  // keep an inherited "ignore" (e.g. nohup)
+    }
+  }
+}
+
+int register_slot(const std::filesystem::path& p) {
+  const std::string s = p.string();
+  if (s.size() >= kPathBytes) {
+    return -1;
+  }
+  for (int i = 0; i < kSlots; ++i) {
+    bool expected = false;
+    if (g_slots[i].used.compare_exchange_strong(expected, true)) {
+      g_slots[i].used.store(false);
+      std::memcpy(g_slots[i].path, s.c_str(), s.size() + 1);
+      g_slots[i].used.store(true);
+      return i;
+    }
+  }
+  return -1;
+}
+
+}  // namespace
+
+TemporaryFile::TemporaryFile(std::filesystem::path target) : target_(std::move(target)) {
+  std::call_once(g_handlers_installed, install_handlers);
+  temporary_ = target_;
+  temporary_ += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(g_counter++);
+  slot_ = register_slot(temporary_);
+}
+
+TemporaryFile::~TemporaryFile() {
+  if (!committed_) {
+    std::error_code ec;
+    std::filesystem::remove(temporary_, ec);
+  }
+  if (slot_ >= 0) {
+    g_slots[slot_].used.store(false);
+  }
+}
+
+bool TemporaryFile::commit(std::string& error) {
+  std::error_code ec;
+  std::filesystem::rename(temporary_, target_, ec);
+  if (ec) {
+    error = target_.string() + ": cannot write (" + ec.message() + ")";
+    return false;
+  }
+  committed_ = true;
+  return true;
+}
+
+bool write_text_file(const std::string& filename, const std::string& contents, std::string& error) {
+  TemporaryFile tmp(filename);
+  {
+    std::ofstream out(tmp.path(), std::ios::binary);
+    out << contents;
+    out.flush();
+    if (!out) {
+      error = filename + ": cannot write";
+      return false;
+    }
+  }
+  return tmp.commit(error);
+}
+
+}  // namespace gfield

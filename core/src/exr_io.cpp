@@ -1,0 +1,365 @@
+#include "gfield/exr_io.hpp"
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfThreading.h>
+#include <OpenEXR/ImfVecAttribute.h>
+#include <glm/gtx/compatibility.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "gfield/atomic_file.hpp"
+
+namespace gfield {
+
+namespace {
+
+constexpr const char* kImageTag = "geometry-image";
+constexpr const char* kFieldTag = "geometry-field";
+constexpr int kMinSamplesPerSide = 1;
+constexpr int kMaxSamplesPerSide = 64;
+
+void use_all_cores() {
+  static std::once_flag once;
+  std::call_once(once, [] { Imf::setGlobalThreadCount(int(std::thread::hardware_concurrency())); });
+}
+
+Imf::PixelType pixel_type(ExrPrecision precision) {
+  return precision == ExrPrecision::kHalf ? Imf::HALF : Imf::FLOAT;
+}
+
+Imath::V3f to_imath(glm::vec3 v) {
+  return {v.x, v.y, v.z};
+}
+glm::vec3 to_glm(const Imath::V3f& v) {
+  return {v.x, v.y, v.z};
+}
+
+Imf::Header make_header(int width, int height, const char* tag, const Box& box,
+                        const std::string& source) {
+  Imf::Header header(width, height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  header.insert("gfield.format", Imf::StringAttribute(tag));
+  header.insert("gfield.version", Imf::IntAttribute(kFormatVersion));
+  header.insert("gfield.boxMin", Imf::V3fAttribute(to_imath(box.min)));
+  header.insert("gfield.boxMax", Imf::V3fAttribute(to_imath(box.max)));
+  header.insert("gfield.source", Imf::StringAttribute(source));
+  return header;
+}
+
+// A float slice over an interleaved array of `components` floats per pixel.
+Imf::Slice float_slice(const float* base, int components, int width) {
+  const size_t x_stride = sizeof(float) * size_t(components);
+  return Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(base)), x_stride,
+                    x_stride * size_t(width));
+}
+
+// Frame buffer for writing: OpenEXR converts pixel types when reading but not when writing, so
+// HALF channels get a converted copy (kept alive in `halves` until the write is done).
+struct OutputChannels {
+  Imf::FrameBuffer frame_buffer;
+  std::vector<std::vector<half>> halves;
+
+  void add(Imf::Header& header, const char* name, Imf::PixelType type, const float* base,
+           int components, size_t count, int width) {
+    header.channels().insert(name, Imf::Channel(type));
+    if (type == Imf::FLOAT) {
+      frame_buffer.insert(name, float_slice(base, components, width));
+      return;
+    }
+    std::vector<half>& h = halves.emplace_back(count);
+    for (size_t i = 0; i < count; ++i) {
+      h[i] = half(base[i * size_t(components)]);
+    }
+    frame_buffer.insert(name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(h.data()), sizeof(half),
+                                         sizeof(half) * size_t(width)));
+  }
+};
+
+bool write_exr(const std::string& filename, const Imf::Header& header,
+               const Imf::FrameBuffer& frame_buffer, int height, std::string& error) {
+  use_all_cores();
+  TemporaryFile tmp(filename);
+  try {
+    Imf::OutputFile file(tmp.path().c_str(), header);
+    file.setFrameBuffer(frame_buffer);
+    file.writePixels(height);
+  } catch (const std::exception& e) {
+    error = filename + ": cannot write OpenEXR file (" + e.what() + ")";
+    return false;
+  }
+  return tmp.commit(error);
+}
+
+// Reads and checks the gfield header attributes.
+bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHeader& out,
+                 std::string& error) {
+  const auto* format = h.findTypedAttribute<Imf::StringAttribute>("gfield.format");
+  if (!format) {
+    error = filename + ": not a gfield asset (no gfield.format attribute)";
+    return false;
+  }
+  out.format = format->value();
+  const auto* version = h.findTypedAttribute<Imf::IntAttribute>("gfield.version");
+  if (!version) {
+    error = filename + ": missing gfield.version attribute";
+    return false;
+  }
+  out.version = version->value();
+  const auto* box_min = h.findTypedAttribute<Imf::V3fAttribute>("gfield.boxMin");
+  const auto* box_max = h.findTypedAttribute<Imf::V3fAttribute>("gfield.boxMax");
+  if (!box_min || !box_max) {
+    error = filename + ": missing gfield.boxMin/gfield.boxMax attribute";
+    return false;
+  }
+  out.box = {to_glm(box_min->value()), to_glm(box_max->value())};
+  if (!glm::all(glm::isfinite(out.box.min)) || !glm::all(glm::isfinite(out.box.max)) ||
+      !glm::all(glm::lessThan(out.box.min, out.box.max))) {
+    error = filename + ": invalid box (gfield.boxMin must be finite and below gfield.boxMax)";
+    return false;
+  }
+  const auto* source = h.findTypedAttribute<Imf::StringAttribute>("gfield.source");
+  out.source = source ? source->value() : std::string();
+  const auto* samples = h.findTypedAttribute<Imf::IntAttribute>("gfield.samplesPerSide");
+  out.samples_per_side = samples ? samples->value() : 0;
+  const Imath::Box2i dw = h.dataWindow();
+  out.width = dw.max.x - dw.min.x + 1;
+  out.height = dw.max.y - dw.min.y + 1;
+  return true;
+}
+
+bool check_format(const std::string& filename, const ExrAssetHeader& header, const char* tag,
+                  std::string& error) {
+  if (header.format != tag) {
+    error = filename + ": wrong format tag '" + header.format + "' (expected '" + tag + "')";
+    return false;
+  }
+  if (header.version != kFormatVersion) {
+    error = filename + ": unsupported format version " + std::to_string(header.version) +
+            " (this build reads version " + std::to_string(kFormatVersion) + ")";
+    return false;
+  }
+  return true;
+}
+
+bool check_channels(const std::string& filename, const Imf::Header& h,
+                    std::initializer_list<const char*> names, std::string& error) {
+  for (const char* name : names) {
+    if (!h.channels().findChannel(name)) {
+      error = filename + ": missing channel '" + name + "'";
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string describe(const std::exception& e) {
+  std::string what = e.what();
+  std::replace(what.begin(), what.end(), '\n', ' ');
+  return what;
+}
+
+bool open_input(const std::string& filename, std::unique_ptr<Imf::InputFile>& file,
+                std::string& error) {
+  std::error_code ec;
+  if (!std::filesystem::exists(filename, ec)) {
+    error = filename + ": no such file";
+    return false;
+  }
+  use_all_cores();
+  try {
+    file = std::make_unique<Imf::InputFile>(filename.c_str());
+  } catch (const std::exception& e) {
+    error = filename + ": not a readable OpenEXR file (" + describe(e) + ")";
+    return false;
+  }
+  return true;
+}
+
+bool read_pixels(const std::string& filename, Imf::InputFile& file,
+                 const Imf::FrameBuffer& frame_buffer, std::string& error) {
+  try {
+    const Imath::Box2i dw = file.header().dataWindow();
+    file.setFrameBuffer(frame_buffer);
+    file.readPixels(dw.min.y, dw.max.y);
+  } catch (const std::exception& e) {
+    error = filename + ": truncated or corrupt pixel data (" + describe(e) + ")";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool save_geometry_image(const std::string& filename, const GeometryImage& image,
+                         ExrPrecision precision, std::string& error) {
+  const size_t texels = size_t(image.size) * size_t(image.size);
+  if (image.size <= 0 || image.position.size() != texels || image.normal.size() != texels ||
+      image.coverage.size() != texels) {
+    error =
+        filename + ": geometry image arrays do not match its size " + std::to_string(image.size);
+    return false;
+  }
+  Imf::Header header = make_header(image.size, image.size, kImageTag, image.box, image.source);
+  const Imf::PixelType type = pixel_type(precision);
+  const float* p = &image.position[0].x;
+  const float* n = &image.normal[0].x;
+  const int w = image.size;
+  OutputChannels out;
+  out.add(header, "P.X", Imf::FLOAT, p + 0, 3, texels, w);
+  out.add(header, "P.Y", Imf::FLOAT, p + 1, 3, texels, w);
+  out.add(header, "P.Z", Imf::FLOAT, p + 2, 3, texels, w);
+  out.add(header, "N.X", type, n + 0, 3, texels, w);
+  out.add(header, "N.Y", type, n + 1, 3, texels, w);
+  out.add(header, "N.Z", type, n + 2, 3, texels, w);
+  out.add(header, "A", type, image.coverage.data(), 1, texels, w);
+  return write_exr(filename, header, out.frame_buffer, image.size, error);
+}
+
+bool load_geometry_image(const std::string& filename, GeometryImage& image, std::string& error) {
+  std::unique_ptr<Imf::InputFile> file;
+  if (!open_input(filename, file, error)) {
+    return false;
+  }
+  ExrAssetHeader header;
+  if (!read_header(filename, file->header(), header, error) ||
+      !check_format(filename, header, kImageTag, error) ||
+      !check_channels(filename, file->header(), {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A"},
+                      error)) {
+    return false;
+  }
+  if (header.width != header.height || header.width < 2) {
+    error = filename + ": geometry image must be square and at least 2x2, found " +
+            std::to_string(header.width) + "x" + std::to_string(header.height);
+    return false;
+  }
+  GeometryImage out;
+  out.size = header.width;
+  out.box = header.box;
+  out.source = header.source;
+  const size_t texels = size_t(out.size) * size_t(out.size);
+  out.position.resize(texels);
+  out.normal.resize(texels);
+  out.coverage.resize(texels);
+  const Imath::Box2i dw = file->header().dataWindow();
+  // OpenEXR addresses the frame buffer with absolute data-window coordinates.
+  const ptrdiff_t origin = ptrdiff_t(dw.min.y) * out.size + dw.min.x;
+  Imf::FrameBuffer fb;
+  float* p = &out.position[0].x - origin * 3;
+  float* n = &out.normal[0].x - origin * 3;
+  fb.insert("P.X", float_slice(p + 0, 3, out.size));
+  fb.insert("P.Y", float_slice(p + 1, 3, out.size));
+  fb.insert("P.Z", float_slice(p + 2, 3, out.size));
+  fb.insert("N.X", float_slice(n + 0, 3, out.size));
+  fb.insert("N.Y", float_slice(n + 1, 3, out.size));
+  fb.insert("N.Z", float_slice(n + 2, 3, out.size));
+  fb.insert("A", float_slice(out.coverage.data() - origin, 1, out.size));
+  if (!read_pixels(filename, *file, fb, error)) {
+    return false;
+  }
+  for (size_t t = 0; t < texels; ++t) {
+    if (!glm::all(glm::isfinite(out.position[t])) || !glm::all(glm::isfinite(out.normal[t]))) {
+      error = filename + ": non-finite position or normal at texel (" +
+              std::to_string(t % size_t(out.size)) + ", " + std::to_string(t / size_t(out.size)) +
+              ")";
+      return false;
+    }
+  }
+  image = std::move(out);
+  return true;
+}
+
+bool save_geometry_field(const std::string& filename, const GeometryField& field,
+                         ExrPrecision precision, std::string& error) {
+  const int n = field.samples_per_side;
+  if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide) {
+    error = filename + ": samples per side " + std::to_string(n) + " out of range";
+    return false;
+  }
+  const int side = field_side(field);
+  if (field.uv.size() != size_t(side) * size_t(side)) {
+    error = filename + ": geometry field table does not match N = " + std::to_string(n);
+    return false;
+  }
+  Imf::Header header = make_header(side, side, kFieldTag, field.box, field.source);
+  header.insert("gfield.samplesPerSide", Imf::IntAttribute(n));
+  OutputChannels out;
+  out.add(header, "U", pixel_type(precision), &field.uv[0].x, 2, field.uv.size(), side);
+  out.add(header, "V", pixel_type(precision), &field.uv[0].y, 2, field.uv.size(), side);
+  return write_exr(filename, header, out.frame_buffer, side, error);
+}
+
+bool load_geometry_field(const std::string& filename, GeometryField& field, std::string& error) {
+  std::unique_ptr<Imf::InputFile> file;
+  if (!open_input(filename, file, error)) {
+    return false;
+  }
+  ExrAssetHeader header;
+  if (!read_header(filename, file->header(), header, error) ||
+      !check_format(filename, header, kFieldTag, error) ||
+      !check_channels(filename, file->header(), {"U", "V"}, error)) {
+    return false;
+  }
+  const int n = header.samples_per_side;
+  if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide) {
+    error = filename + ": gfield.samplesPerSide " + std::to_string(n) + " missing or out of range";
+    return false;
+  }
+  const int side = sample_count(n);
+  if (header.width != side || header.height != side) {
+    error = filename + ": geometry field is " + std::to_string(header.width) + "x" +
+            std::to_string(header.height) + ", expected " + std::to_string(side) + "x" +
+            std::to_string(side) + " for N = " + std::to_string(n);
+    return false;
+  }
+  GeometryField out;
+  out.samples_per_side = n;
+  out.box = header.box;
+  out.source = header.source;
+  out.uv.resize(size_t(side) * size_t(side));
+  const Imath::Box2i dw = file->header().dataWindow();
+  const ptrdiff_t origin = ptrdiff_t(dw.min.y) * side + dw.min.x;
+  float* uv = &out.uv[0].x - origin * 2;
+  Imf::FrameBuffer fb;
+  fb.insert("U", float_slice(uv + 0, 2, side));
+  fb.insert("V", float_slice(uv + 1, 2, side));
+  if (!read_pixels(filename, *file, fb, error)) {
+    return false;
+  }
+  for (size_t k = 0; k < out.uv.size(); ++k) {
+    const glm::vec2 v = out.uv[k];
+    const bool valid = (v.x >= 0.0f && v.x <= 1.0f && v.y >= 0.0f && v.y <= 1.0f) ||
+                       (v.x == kFieldMiss && v.y == kFieldMiss) ||
+                       (v.x == kFieldNoRay && v.y == kFieldNoRay);
+    if (!valid) {
+      error = filename + ": invalid uv (" + std::to_string(v.x) + ", " + std::to_string(v.y) +
+              ") at entry " + std::to_string(k / size_t(side)) + ", exit " +
+              std::to_string(k % size_t(side));
+      return false;
+    }
+  }
+  field = std::move(out);
+  return true;
+}
+
+bool load_asset_header(const std::string& filename, ExrAssetHeader& header, std::string& error) {
+  std::unique_ptr<Imf::InputFile> file;
+  if (!open_input(filename, file, error)) {
+    return false;
+  }
+  return read_header(filename, file->header(), header, error);
+}
+
+}  // namespace gfield

@@ -1,0 +1,396 @@
+#include "preprocess/topology.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+
+namespace gfield {
+
+namespace {
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[size_t(x)] != x) {
+      parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+      x = parent[size_t(x)];
+    }
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) {
+      parent[size_t(std::max(a, b))] = std::min(a, b);
+    }
+  }
+};
+
+uint64_t edge_key(int a, int b) {
+  const auto lo = uint64_t(uint32_t(std::min(a, b)));
+  const auto hi = uint64_t(uint32_t(std::max(a, b)));
+  return (lo << 32) | hi;
+}
+
+// Use of one undirected edge: faces on it, and how often it runs low -> high index.
+struct EdgeUse {
+  int faces = 0;
+  int low_to_high = 0;
+  bool counted = false;  // already attributed to a component
+};
+
+bool has_repeated_corner(const glm::ivec3& t) {
+  return t.x == t.y || t.y == t.z || t.x == t.z;
+}
+
+}  // namespace
+
+TopologyReport analyze_topology(const TriangleMesh& mesh) {
+  TopologyReport r;
+  const size_t nv = mesh.positions.size();
+  const size_t nf = mesh.triangles.size();
+  r.vertices = nv;
+  r.faces = nf;
+
+  // Bounds over referenced vertices, degenerate faces, area.
+  std::vector<char> referenced(nv, 0);
+  for (const glm::ivec3& t : mesh.triangles) {
+    for (int c = 0; c < 3; ++c) {
+      referenced[size_t(t[c])] = 1;
+    }
+  }
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+  for (size_t v = 0; v < nv; ++v) {
+    if (referenced[v]) {
+      lo = glm::min(lo, mesh.positions[v]);
+      hi = glm::max(hi, mesh.positions[v]);
+    } else {
+      ++r.unreferenced_vertices;
+    }
+  }
+  r.bounds_min = lo;
+  r.bounds_max = hi;
+  const double diag2 = glm::dot(hi - lo, hi - lo);
+  std::vector<double> face_area(nf);
+  for (size_t f = 0; f < nf; ++f) {
+    const glm::ivec3& t = mesh.triangles[f];
+    const glm::dvec3 e1 = mesh.positions[size_t(t.y)] - mesh.positions[size_t(t.x)];
+    const glm::dvec3 e2 = mesh.positions[size_t(t.z)] - mesh.positions[size_t(t.x)];
+    face_area[f] = 0.5 * glm::length(glm::cross(e1, e2));
+    if (has_repeated_corner(t) || face_area[f] <= 1e-14 * diag2) {
+      ++r.degenerate_faces;
+    }
+    r.area += face_area[f];
+  }
+
+  // Duplicate positions (exact).
+  {
+    std::map<std::array<double, 3>, int> seen;
+    for (size_t v = 0; v < nv; ++v) {
+      const glm::dvec3& p = mesh.positions[v];
+      if (!seen.emplace(std::array<double, 3>{p.x, p.y, p.z}, int(v)).second) {
+        ++r.duplicate_positions;
+      }
+    }
+  }
+
+  // Edges. Faces with a repeated corner contribute only their proper edges.
+  std::unordered_map<uint64_t, EdgeUse> edges;
+  edges.reserve(nf * 2);
+  for (const glm::ivec3& t : mesh.triangles) {
+    for (int c = 0; c < 3; ++c) {
+      const int a = t[c];
+      const int b = t[(c + 1) % 3];
+      if (a == b) {
+        continue;
+      }
+      EdgeUse& use = edges[edge_key(a, b)];
+      ++use.faces;
+      use.low_to_high += a < b ? 1 : 0;
+    }
+  }
+
+  // Fans: around each vertex, faces linked through the edges they share at that vertex. A
+  // vertex with more than one fan is pinched (non-manifold) and counts once per fan, i.e. the
+  // surface is analysed as if pinched vertices were split. fan_of[v][k] is the fan (a local
+  // index) of the k-th face around v, vertex_faces[v][k].
+  std::vector<std::vector<int>> vertex_faces(nv);
+  for (size_t f = 0; f < nf; ++f) {
+    const glm::ivec3& t = mesh.triangles[f];
+    if (has_repeated_corner(t)) {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c) {
+      vertex_faces[size_t(t[c])].push_back(int(f));
+    }
+  }
+  std::vector<std::vector<int>> fan_of(nv);
+  for (size_t v = 0; v < nv; ++v) {
+    const std::vector<int>& around = vertex_faces[v];
+    UnionFind fan(around.size());
+    std::unordered_map<int, int> first_face_with;  // other corner -> local face index
+    for (size_t k = 0; k < around.size(); ++k) {
+      const glm::ivec3& t = mesh.triangles[size_t(around[k])];
+      for (int c = 0; c < 3; ++c) {
+        if (t[c] == int(v)) {
+          continue;
+        }
+        auto [it, inserted] = first_face_with.emplace(t[c], int(k));
+        if (!inserted) {
+          fan.unite(it->second, int(k));
+        }
+      }
+    }
+    fan_of[v].resize(around.size());
+    for (size_t k = 0; k < around.size(); ++k) {
+      fan_of[v][k] = fan.find(int(k));
+    }
+  }
+  const auto fan_at = [&](int v, int f) {
+    const std::vector<int>& around = vertex_faces[size_t(v)];
+    const size_t k = size_t(std::find(around.begin(), around.end(), f) - around.begin());
+    return fan_of[size_t(v)][k];
+  };
+
+  // Components: faces connected through shared edges.
+  UnionFind face_sets(nf);
+  {
+    std::unordered_map<uint64_t, int> first_face_on;
+    for (size_t f = 0; f < nf; ++f) {
+      const glm::ivec3& t = mesh.triangles[f];
+      for (int c = 0; c < 3; ++c) {
+        if (t[c] == t[(c + 1) % 3]) {
+          continue;
+        }
+        auto [it, inserted] = first_face_on.emplace(edge_key(t[c], t[(c + 1) % 3]), int(f));
+        if (!inserted) {
+          face_sets.unite(it->second, int(f));
+        }
+      }
+    }
+  }
+  std::unordered_map<int, size_t> component_of_root;
+  std::vector<ComponentTopology> components;
+  const auto component = [&](int face) -> ComponentTopology& {
+    auto [it, inserted] = component_of_root.emplace(face_sets.find(face), components.size());
+    if (inserted) {
+      components.emplace_back();
+      components.back().bounds_min = glm::dvec3(std::numeric_limits<double>::max());
+      components.back().bounds_max = glm::dvec3(std::numeric_limits<double>::lowest());
+    }
+    return components[it->second];
+  };
+  for (size_t f = 0; f < nf; ++f) {
+    ComponentTopology& c = component(int(f));
+    ++c.faces;
+    c.area += face_area[f];
+  }
+  // Vertices: one per (vertex, fan); pinched where a vertex has several fans in a component.
+  for (size_t v = 0; v < nv; ++v) {
+    std::map<size_t, int> fans_in_component;
+    for (size_t k = 0; k < vertex_faces[v].size(); ++k) {
+      if (fan_of[v][k] == int(k)) {
+        const int f = vertex_faces[v][k];
+        ComponentTopology& c = component(f);
+        ++c.vertices;
+        c.bounds_min = glm::min(c.bounds_min, mesh.positions[v]);
+        c.bounds_max = glm::max(c.bounds_max, mesh.positions[v]);
+        ++fans_in_component[component_of_root[face_sets.find(f)]];
+      }
+    }
+    size_t fans = 0;
+    for (const auto& [index, count] : fans_in_component) {
+      fans += size_t(count);
+      if (count > 1) {
+        ++components[index].non_manifold_vertices;
+      }
+    }
+    r.non_manifold_vertices += fans > 1 ? 1 : 0;
+  }
+
+  // Edge classes. Boundary edges are directed as in their one face; at each (vertex, fan) the
+  // incoming boundary edge continues with the outgoing one.
+  struct BoundaryEdge {
+    int from, to, face;
+  };
+  std::vector<BoundaryEdge> boundary;
+  for (size_t f = 0; f < nf; ++f) {
+    const glm::ivec3& t = mesh.triangles[f];
+    if (has_repeated_corner(t)) {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c) {
+      const int a = t[c];
+      const int b = t[(c + 1) % 3];
+      ComponentTopology& comp = component(int(f));
+      EdgeUse& use = edges[edge_key(a, b)];
+      // Count each undirected edge once, in the component of its first face.
+      if (!use.counted) {
+        use.counted = true;
+        ++comp.edges;
+        if (use.faces == 1) {
+          ++comp.boundary_edges;
+        } else if (use.faces > 2) {
+          ++comp.non_manifold_edges;
+        } else if (use.low_to_high != 1) {
+          comp.oriented = false;
+        }
+      }
+      if (use.faces == 1) {
+        boundary.push_back({a, b, int(f)});
+      }
+    }
+  }
+  std::map<std::pair<int, int>, int> outgoing;  // (vertex, fan) -> boundary edge leaving it
+  for (size_t e = 0; e < boundary.size(); ++e) {
+    outgoing[{boundary[e].from, fan_at(boundary[e].from, boundary[e].face)}] = int(e);
+  }
+  UnionFind loops(boundary.size());
+  for (size_t e = 0; e < boundary.size(); ++e) {
+    const auto next = outgoing.find({boundary[e].to, fan_at(boundary[e].to, boundary[e].face)});
+    if (next != outgoing.end()) {
+      loops.unite(int(e), next->second);
+    }
+  }
+  for (size_t e = 0; e < boundary.size(); ++e) {
+    if (loops.find(int(e)) == int(e)) {
+      ++component(boundary[e].face).boundary_loops;
+    }
+  }
+
+  for (ComponentTopology& c : components) {
+    c.euler_characteristic = long(c.vertices) - long(c.edges) + long(c.faces);
+    const long twice_genus = 2 - c.euler_characteristic - long(c.boundary_loops);
+    c.genus = (c.non_manifold_edges == 0 && c.oriented && twice_genus >= 0 && twice_genus % 2 == 0)
+                  ? twice_genus / 2
+                  : -1;
+    r.edges += c.edges;
+    r.boundary_edges += c.boundary_edges;
+    r.boundary_loops += c.boundary_loops;
+    r.non_manifold_edges += c.non_manifold_edges;
+    r.euler_characteristic += c.euler_characteristic;
+  }
+  std::stable_sort(
+      components.begin(), components.end(),
+      [](const ComponentTopology& a, const ComponentTopology& b) { return a.faces > b.faces; });
+  r.components = std::move(components);
+  return r;
+}
+
+namespace {
+
+nlohmann::json vec_json(const glm::dvec3& v) {
+  return {v.x, v.y, v.z};
+}
+
+std::string describe_surface(const ComponentTopology& c) {
+  if (c.non_manifold_edges > 0) {
+    return "non-manifold (" + std::to_string(c.non_manifold_edges) +
+           " edges with more than 2 faces)";
+  }
+  if (!c.oriented) {
+    return "manifold, not consistently oriented";
+  }
+  std::string s = c.boundary_loops == 0 ? "closed" : "open";
+  s += ", genus " + std::to_string(c.genus);
+  if (c.boundary_loops > 0) {
+    s += ", " + std::to_string(c.boundary_loops) + " boundary loop" +
+         (c.boundary_loops == 1 ? "" : "s");
+  }
+  if (c.genus == 0 && c.boundary_loops == 0) {
+    s += " (sphere)";
+  } else if (c.genus == 0 && c.boundary_loops == 1) {
+    s += " (disk)";
+  }
+  if (c.non_manifold_vertices > 0) {
+    s += ", " + std::to_string(c.non_manifold_vertices) + " pinched vertices (split)";
+  }
+  return s;
+}
+
+}  // namespace
+
+nlohmann::json topology_to_json(const TopologyReport& r) {
+  nlohmann::json j;
+  j["vertices"] = r.vertices;
+  j["unreferenced_vertices"] = r.unreferenced_vertices;
+  j["duplicate_positions"] = r.duplicate_positions;
+  j["faces"] = r.faces;
+  j["edges"] = r.edges;
+  j["degenerate_faces"] = r.degenerate_faces;
+  j["boundary_edges"] = r.boundary_edges;
+  j["boundary_loops"] = r.boundary_loops;
+  j["non_manifold_edges"] = r.non_manifold_edges;
+  j["non_manifold_vertices"] = r.non_manifold_vertices;
+  j["euler_characteristic"] = r.euler_characteristic;
+  j["closed"] = r.closed();
+  j["manifold"] = r.manifold();
+  j["area"] = r.area;
+  j["bounds"] = {{"min", vec_json(r.bounds_min)}, {"max", vec_json(r.bounds_max)}};
+  j["components"] = nlohmann::json::array();
+  for (const ComponentTopology& c : r.components) {
+    j["components"].push_back(
+        {{"vertices", c.vertices},
+         {"edges", c.edges},
+         {"faces", c.faces},
+         {"boundary_edges", c.boundary_edges},
+         {"boundary_loops", c.boundary_loops},
+         {"non_manifold_edges", c.non_manifold_edges},
+         {"non_manifold_vertices", c.non_manifold_vertices},
+         {"oriented", c.oriented},
+         {"euler_characteristic", c.euler_characteristic},
+         {"genus", c.genus},
+         {"surface", describe_surface(c)},
+         {"area", c.area},
+         {"bounds", {{"min", vec_json(c.bounds_min)}, {"max", vec_json(c.bounds_max)}}}});
+  }
+  return j;
+}
+
+std::string topology_to_text(const TopologyReport& r) {
+  std::ostringstream s;
+  char line[256];
+  s << "vertices           " << r.vertices;
+  if (r.unreferenced_vertices > 0) {
+    s << " (" << r.unreferenced_vertices << " unreferenced)";
+  }
+  if (r.duplicate_positions > 0) {
+    s << " (" << r.duplicate_positions << " at the position of another vertex)";
+  }
+  s << "\nfaces              " << r.faces << " triangles";
+  if (r.degenerate_faces > 0) {
+    s << " (" << r.degenerate_faces << " degenerate)";
+  }
+  s << "\nedges              " << r.edges;
+  s << "\nboundary           " << r.boundary_edges << " edges in " << r.boundary_loops << " loops";
+  s << "\nnon-manifold       " << r.non_manifold_edges << " edges, " << r.non_manifold_vertices
+    << " vertices";
+  s << "\neuler              " << r.euler_characteristic;
+  std::snprintf(line, sizeof line, "\nbounding box       (%.6g, %.6g, %.6g) - (%.6g, %.6g, %.6g)",
+                r.bounds_min.x, r.bounds_min.y, r.bounds_min.z, r.bounds_max.x, r.bounds_max.y,
+                r.bounds_max.z);
+  s << line;
+  const glm::dvec3 size = r.bounds_max - r.bounds_min;
+  std::snprintf(line, sizeof line, "\nsize               %.6g x %.6g x %.6g, diagonal %.6g", size.x,
+                size.y, size.z, glm::length(size));
+  s << line;
+  s << "\ncomponents         " << r.components.size();
+  for (size_t i = 0; i < r.components.size(); ++i) {
+    const ComponentTopology& c = r.components[i];
+    std::snprintf(line, sizeof line, "\n  #%-3zu %7zu faces %7zu vertices  chi %-4ld  ", i, c.faces,
+                  c.vertices, c.euler_characteristic);
+    s << line << describe_surface(c);
+  }
+  s << '\n';
+  return s.str();
+}
+
+}  // namespace gfield

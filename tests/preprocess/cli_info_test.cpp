@@ -1,0 +1,50 @@
+// End-to-end: the `gfield` executable on good and bad input (exit codes, one-line errors).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "test_support/cli_run.hpp"
+
+namespace {
+
+using gfield::test::CliRun;
+using gfield::test::run_cli;
+
+TEST(CliInfo, PrintsTheTopologyOfSpot) {
+  const CliRun run = run_cli(std::string("info ") + GFIELD_SHARED_MESHES + "/spot.obj");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("closed, genus 0 (sphere)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("5856 triangles"), std::string::npos) << run.out;
+}
+
+TEST(CliInfo, JsonOutputParses) {
+  const CliRun run =
+      run_cli(std::string("info --json ") + GFIELD_SHARED_MESHES + "/rocker-arm.obj");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json j = nlohmann::json::parse(run.out);
+  EXPECT_EQ(j["components"][0]["genus"], 1);
+  EXPECT_EQ(j["faces"], 20088);
+}
+
+TEST(CliInfo, BadInputExitsWithCodeTwoAndOneLine) {
+  const std::string tmp = GFIELD_TEST_TMP;
+  std::ofstream(tmp + "/cli_empty.obj").close();
+  std::ofstream(tmp + "/cli_range.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n";
+  for (const std::string& file : {tmp + "/cli_missing.obj", tmp + "/cli_empty.obj",
+                                  tmp + "/cli_range.obj", tmp + "/cli_mesh.unknown"}) {
+    const CliRun run = run_cli("info " + file);
+    EXPECT_EQ(run.exit_code, 2) << file;
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_NE(run.err.find(file), std::string::npos) << run.err;
+  }
+  const CliRun no_args = run_cli("info");
+  EXPECT_EQ(no_args.exit_code, 2);
+  const CliRun help = run_cli("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("info"), std::string::npos);
+}
+
+}  // namespace
