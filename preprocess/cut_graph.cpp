@@ -3,6 +3,7 @@
 #include "preprocess/cut_graph.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <limits>
 #include <numeric>
@@ -125,17 +126,24 @@ std::vector<Edge> tree_cotree_cut(const TriangleMesh& mesh, int root) {
 
   // Each leftover edge closes a loop through the vertex tree: cut along it (paths as a
   // symmetric difference, so a shared stem to the root cancels).
-  std::vector<char> in_cut(graph.edges.size(), 0);
+  std::vector<char> in_cut(graph.edges.size(), 0), in_loop(graph.edges.size(), 0);
+  std::vector<int> loop;
   for (size_t e = 0; e < graph.edges.size(); ++e) {
     if (in_tree[e] || in_cotree[e] || graph.boundary(int(e)))
       continue;
-    in_cut[e] ^= 1;
+    loop.assign(1, int(e));
     for (int end = 0; end < 2; ++end) {
       int v = graph.edges[e][end];
       while (parent_edge[v] >= 0) {
-        in_cut[parent_edge[v]] ^= 1;
+        loop.push_back(parent_edge[v]);
         v = graph.other(parent_edge[v], v);
       }
+    }
+    for (int l : loop)
+      in_loop[l] ^= 1;
+    for (int l : loop) {
+      in_cut[l] |= in_loop[l];
+      in_loop[l] = 0;
     }
   }
   // Prune dangling branches (degree-1 vertices off the boundary).

@@ -79,6 +79,59 @@ bool all_finite(const std::vector<glm::dvec2>& uvs) {
   return true;
 }
 
+/// Tutte embedding (uniform weights) of a disk whose border has exactly three vertices, mapped to
+/// the corners (0,0), (1,0), (0,1): one-to-one by Tutte's theorem. Chart uvs per corner.
+std::vector<glm::dvec2> tutte_triangle_border(const SurfaceMesh& sm,
+                                              SurfaceMesh::Halfedge_index border,
+                                              const std::vector<glm::ivec3>& triangles) {
+  const size_t n = sm.number_of_vertices();
+  std::vector<glm::dvec2> uv(n, glm::dvec2(0.0));
+  std::vector<char> fixed(n, 0);
+  const glm::dvec2 corners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+  int k = 0;
+  for (auto h : CGAL::halfedges_around_face(border, sm)) {
+    const size_t v = size_t(sm.target(h));
+    uv[v] = corners[k++ % 3];
+    fixed[v] = 1;
+  }
+  std::vector<int> unknown(n, -1);
+  int count = 0;
+  for (size_t v = 0; v < n; ++v)
+    if (!fixed[v])
+      unknown[v] = count++;
+  if (count > 0) {
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::VectorXd bu = Eigen::VectorXd::Zero(count), bv = Eigen::VectorXd::Zero(count);
+    for (size_t v = 0; v < n; ++v) {
+      if (fixed[v])
+        continue;
+      const int row = unknown[v];
+      double degree = 0.0;
+      for (auto w : CGAL::vertices_around_target(sm.halfedge(VertexIndex(v)), sm)) {
+        degree += 1.0;
+        if (fixed[size_t(w)]) {
+          bu[row] += uv[size_t(w)].x;
+          bv[row] += uv[size_t(w)].y;
+        } else {
+          entries.emplace_back(row, unknown[size_t(w)], -1.0);
+        }
+      }
+      entries.emplace_back(row, row, degree);
+    }
+    Eigen::SparseMatrix<double> a(count, count);
+    a.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> solver(a);
+    const Eigen::VectorXd xu = solver.solve(bu), xv = solver.solve(bv);
+    for (size_t v = 0; v < n; ++v)
+      if (!fixed[v])
+        uv[v] = {xu[unknown[v]], xv[unknown[v]]};
+  }
+  std::vector<glm::dvec2> corner_uv(3 * triangles.size());
+  for (size_t f = 0; f < triangles.size(); ++f)
+    for (int c = 0; c < 3; ++c)
+      corner_uv[3 * f + c] = uv[size_t(triangles[f][c])];
+  return corner_uv;
+}
 }  // namespace
 
 std::string parameterization_error_message(int code) {
@@ -234,6 +287,15 @@ bool parameterize_square(const TriangleMesh& component, const std::vector<Edge>&
   if (borders.size() != 1 || euler != 1) {
     error = "square: the cut does not leave a disk (" + std::to_string(borders.size()) +
             " borders, Euler characteristic " + std::to_string(euler) + ")";
+    return false;
+  }
+  if (CGAL::halfedges_around_face(borders[0], sm).size() == 3) {  // too short for a square
+    chart.corner_uv = tutte_triangle_border(sm, borders[0], disk.triangles);
+    chart.weights = "uniform";
+    orient_and_count(chart);
+    if (chart.flipped == 0 && all_finite(chart.corner_uv))
+      return true;
+    error = "square: the triangle-border Tutte embedding failed";
     return false;
   }
   using Border = SMP::Square_border_arc_length_parameterizer_3<SurfaceMesh>;

@@ -17,7 +17,12 @@ struct CommandError : std::runtime_error {
 };
 
 void add_info_command(CLI::App& app);
+void add_field_command(CLI::App& app);
+void add_build_command(CLI::App& app);
+void add_batch_command(CLI::App& app);
+void add_verify_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
+void add_image_command(CLI::App& app);
 
 }  // namespace gfield

@@ -17,8 +17,13 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "gfield 0.1.0");
 
   gfield::add_info_command(app);
+  gfield::add_field_command(app);
+  gfield::add_build_command(app);
+  gfield::add_batch_command(app);
+  gfield::add_verify_command(app);
   gfield::add_render_command(app);
   gfield::add_compare_command(app);
+  gfield::add_image_command(app);
 
   try {
     app.parse(argc, argv);

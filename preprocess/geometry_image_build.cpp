@@ -1,0 +1,519 @@
+// The geometry-image pipeline and its report.
+
+#include "preprocess/geometry_image_build.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <unordered_map>
+
+#include <nlohmann/json.hpp>
+
+#include "preprocess/cut_graph.hpp"
+#include "preprocess/parameterize.hpp"
+#include "preprocess/rasterize.hpp"
+#include "preprocess/surface_distance.hpp"
+
+namespace gfield {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// One connected component of the repaired mesh, re-indexed.
+struct Component {
+  std::vector<int> faces;     ///< faces of the repaired mesh
+  std::vector<int> vertices;  ///< local vertex -> repaired-mesh vertex
+  TriangleMesh mesh;          ///< local copy
+  size_t edges = 0;
+  size_t boundary_loops = 0;
+  long genus = 0;
+  double area = 0.0;
+};
+
+std::vector<Component> split_components(const TriangleMesh& mesh) {
+  std::vector<int> parent(mesh.positions.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const glm::ivec3& t : mesh.triangles) {
+    parent[find(t[1])] = find(t[0]);
+    parent[find(t[2])] = find(t[0]);
+  }
+  std::unordered_map<int, size_t> index;
+  std::vector<Component> components;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    auto [it, inserted] = index.emplace(find(mesh.triangles[f][0]), components.size());
+    if (inserted)
+      components.emplace_back();
+    components[it->second].faces.push_back(int(f));
+  }
+  std::vector<int> local(mesh.positions.size(), -1);
+  for (Component& c : components) {
+    for (int f : c.faces) {
+      glm::ivec3 t;
+      for (int k = 0; k < 3; ++k) {
+        const int v = mesh.triangles[f][k];
+        if (local[v] < 0) {
+          local[v] = int(c.vertices.size());
+          c.vertices.push_back(v);
+          c.mesh.positions.push_back(mesh.positions[v]);
+        }
+        t[k] = local[v];
+      }
+      c.mesh.triangles.push_back(t);
+      const std::vector<glm::dvec3>& q = c.mesh.positions;
+      c.area += 0.5 * glm::length(glm::cross(q[t[1]] - q[t[0]], q[t[2]] - q[t[0]]));
+    }
+    for (int v : c.vertices)
+      local[v] = -1;
+    // Edges, boundary loops (each boundary vertex of an oriented manifold has one outgoing
+    // boundary halfedge), genus from the Euler characteristic.
+    std::unordered_map<uint64_t, int> directed;
+    for (const glm::ivec3& t : c.mesh.triangles)
+      for (int k = 0; k < 3; ++k)
+        directed[(uint64_t(uint32_t(t[k])) << 32) | uint32_t(t[(k + 1) % 3])] = t[(k + 1) % 3];
+    std::unordered_map<int, int> boundary_next;
+    size_t interior = 0;
+    for (const auto& [key, target] : directed) {
+      const int source = int(key >> 32);
+      if (directed.count((uint64_t(uint32_t(target)) << 32) | uint32_t(source)))
+        ++interior;
+      else
+        boundary_next[target] = source;  // boundary halfedges, reversed: any consistent walk
+    }
+    c.edges = interior / 2 + boundary_next.size();
+    std::unordered_map<int, char> visited;
+    for (const auto& [start, next] : boundary_next) {
+      if (visited.count(start))
+        continue;
+      ++c.boundary_loops;
+      for (int v = start; !visited.count(v);) {
+        visited[v] = 1;
+        auto it = boundary_next.find(v);
+        if (it == boundary_next.end())
+          break;
+        v = it->second;
+      }
+    }
+    const long chi = long(c.mesh.positions.size()) - long(c.edges) + long(c.mesh.triangles.size());
+    c.genus = (2 - chi - long(c.boundary_loops)) / 2;
+  }
+  std::stable_sort(
+      components.begin(), components.end(),
+      [](const Component& a, const Component& b) { return a.faces.size() > b.faces.size(); });
+  return components;
+}
+
+/// Area-weighted percentile (p in [0,1]) of values.
+double weighted_percentile(std::vector<std::pair<double, double>> value_weight, double p) {
+  if (value_weight.empty())
+    return 0.0;
+  std::sort(value_weight.begin(), value_weight.end());
+  double total = 0.0;
+  for (const auto& vw : value_weight)
+    total += vw.second;
+  double cumulative = 0.0;
+  for (const auto& [value, weight] : value_weight) {
+    cumulative += weight;
+    if (cumulative >= p * total)
+      return value;
+  }
+  return value_weight.back().first;
+}
+
+ErrorStats error_stats(std::vector<double> distances, double diagonal) {
+  ErrorStats stats;
+  stats.samples = distances.size();
+  if (distances.empty() || !(diagonal > 0.0))
+    return stats;
+  std::sort(distances.begin(), distances.end());
+  const double scale = 100.0 / diagonal;
+  double sum = 0.0;
+  for (double d : distances)
+    sum += d;
+  stats.mean = sum / double(distances.size()) * scale;
+  const size_t p99 = size_t(std::ceil(0.99 * double(distances.size()))) - 1;
+  stats.p99 = distances[std::min(p99, distances.size() - 1)] * scale;
+  stats.max = distances.back() * scale;
+  return stats;
+}
+
+/// Parameterises one component into a chart; fills the route fields of `chart_report`.
+bool chart_component(const Component& c, size_t index, const GeometryImageOptions& options,
+                     Chart& chart, ChartReport& report, std::string& error) {
+  const bool sphere = c.boundary_loops == 0 && c.genus == 0;
+  const std::string what = "component " + std::to_string(index) + " (" +
+                           std::to_string(c.faces.size()) + " faces, genus " +
+                           std::to_string(c.genus) + ", " + std::to_string(c.boundary_loops) +
+                           " boundary loops)";
+  if (c.genus < 0) {
+    error = what + ": not an orientable surface";
+    return false;
+  }
+  if (c.faces.size() == 1) {  // too small for a square border: a right triangle in the square
+    chart = {};
+    chart.corner_uv = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+    chart.weights = "none";
+    report.route = "triangle";
+    return true;
+  }
+  if (options.method == ParameterizationMethod::kOrbifold && !sphere) {
+    error = what + ": the orbifold method needs closed genus-0 components (use --method auto)";
+    return false;
+  }
+  if (sphere && options.method != ParameterizationMethod::kSquare) {
+    std::string orbifold_error;
+    if (parameterize_orbifold(c.mesh, chart, orbifold_error)) {
+      report.route = "orbifold";
+      return true;
+    }
+    if (options.method == ParameterizationMethod::kOrbifold) {
+      error = what + ": " + orbifold_error;
+      return false;
+    }
+    report.note = orbifold_error + "; fell back to a slit and a square border";
+  }
+  std::vector<Edge> cut;
+  if (sphere) {
+    const std::vector<int> ends = farthest_points(c.mesh, 2);
+    cut = path_edges(shortest_path(c.mesh, ends[0], ends[1]));
+    report.route = "slit+square";
+  } else if (c.genus == 0 && c.boundary_loops == 1) {
+    report.route = "square";
+  } else {
+    cut = tree_cotree_cut(c.mesh);
+    report.route = "cut-graph+square";
+  }
+  if (!parameterize_square(c.mesh, cut, chart, error)) {
+    error = what + ": " + error;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TriangleMesh geometry_image_surface(const GeometryImage& image) {
+  TriangleMesh surface;
+  const int n = image.size;
+  surface.positions.resize(image.position.size());
+  for (size_t t = 0; t < image.position.size(); ++t)
+    surface.positions[t] = image.position[t];
+  auto covered = [&](int i, int j) { return image.coverage[texel_index(image, i, j)] > 0.0f; };
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      if (!covered(i, j) || !covered(i + 1, j) || !covered(i, j + 1) || !covered(i + 1, j + 1))
+        continue;
+      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      surface.triangles.push_back({a, b, d});
+      surface.triangles.push_back({a, d, c});
+    }
+  return surface;
+}
+
+bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions& options,
+                          GeometryImage& image, ParameterizedMesh& parameterized,
+                          GeometryImageReport& report, std::string& error) {
+  const auto start = Clock::now();
+  report = {};
+  if (options.size < kMinImageSize || options.size > kMaxImageSize) {
+    error = "image size " + std::to_string(options.size) + " is outside [" +
+            std::to_string(kMinImageSize) + ", " + std::to_string(kMaxImageSize) + "]";
+    return false;
+  }
+  if (input.triangles.size() > kMaxFaces) {
+    error = "the mesh has " + std::to_string(input.triangles.size()) + " faces; at most " +
+            std::to_string(kMaxFaces) + " are accepted (simplify it first)";
+    return false;
+  }
+  if (input.triangles.empty()) {
+    error = "the mesh has no faces";
+    return false;
+  }
+
+  // Repair.
+  auto stage = Clock::now();
+  RepairedMesh repaired;
+  if (!repair_mesh(input, options.holes, repaired, error))
+    return false;
+  report.repair = repaired.report;
+  std::vector<Component> components = split_components(repaired.mesh);
+  report.components = components.size();
+  if (options.components == ComponentSelection::kLargest && components.size() > 1) {
+    for (size_t c = 1; c < components.size(); ++c)
+      report.dropped_faces += components[c].faces.size();
+    report.dropped_components = components.size() - 1;
+    components.resize(1);
+  }
+  report.seconds.repair = seconds_since(stage);
+
+  // Parameterise each component.
+  stage = Clock::now();
+  std::vector<Chart> charts(components.size());
+  report.charts.resize(components.size());
+  for (size_t c = 0; c < components.size(); ++c) {
+    ChartReport& chart_report = report.charts[c];
+    if (!chart_component(components[c], c, options, charts[c], chart_report, error))
+      return false;
+    chart_report.faces = components[c].faces.size();
+    chart_report.vertices = components[c].vertices.size();
+    chart_report.genus = components[c].genus;
+    chart_report.boundary_loops = components[c].boundary_loops;
+    chart_report.weights = charts[c].weights;
+    chart_report.seam_edges = charts[c].seam_edges;
+    chart_report.flipped = charts[c].flipped;
+    chart_report.degenerate = charts[c].degenerate;
+    chart_report.area = components[c].area;
+    report.flipped += charts[c].flipped;
+    report.degenerate += charts[c].degenerate;
+  }
+  report.seconds.parameterize = seconds_since(stage);
+
+  // Pack.
+  stage = Clock::now();
+  std::vector<double> areas;
+  for (const Component& c : components)
+    areas.push_back(c.area);
+  std::vector<ChartRect> rects;
+  if (!pack_charts(areas, options.size, options.gutter, rects, error))
+    return false;
+  report.seconds.pack = seconds_since(stage);
+
+  // Rasterise.
+  stage = Clock::now();
+  std::vector<RasterChart> raster(components.size());
+  for (size_t c = 0; c < components.size(); ++c) {
+    raster[c].faces = components[c].faces;
+    raster[c].corner_uv = std::move(charts[c].corner_uv);
+    raster[c].orbifold = charts[c].orbifold;
+    raster[c].rect = rects[c];
+    report.charts[c].rect = rects[c];
+  }
+  const std::vector<glm::dvec3> normals = vertex_normals(repaired.mesh);
+  std::vector<glm::vec2> face_uv;
+  rasterize_charts(repaired.mesh, normals, raster, options.size, image, face_uv);
+
+  // The parameterised mesh: kept faces, compact vertices, image uv per corner.
+  parameterized = {};
+  std::vector<int> compact(repaired.mesh.positions.size(), -1);
+  for (const Component& c : components)
+    for (int f : c.faces) {
+      glm::ivec3 t;
+      for (int k = 0; k < 3; ++k) {
+        int& v = compact[repaired.mesh.triangles[f][k]];
+        if (v < 0) {
+          v = int(parameterized.mesh.positions.size());
+          parameterized.mesh.positions.push_back(
+              repaired.mesh.positions[repaired.mesh.triangles[f][k]]);
+        }
+        t[k] = v;
+        parameterized.corner_uv.push_back(face_uv[3 * size_t(f) + k]);
+      }
+      parameterized.mesh.triangles.push_back(t);
+    }
+  std::vector<glm::vec3> box_points(parameterized.mesh.positions.begin(),
+                                    parameterized.mesh.positions.end());
+  image.box = padded_bounds(box_points.data(), box_points.size(), kBoxPadding);
+  size_t covered = 0;
+  for (float a : image.coverage)
+    covered += a > 0.0f;
+  report.coverage = double(covered) / double(image.coverage.size());
+  report.seconds.rasterize = seconds_since(stage);
+
+  // Route summary: "orbifold", or "square x3 + orbifold".
+  std::vector<std::pair<std::string, int>> routes;
+  for (const ChartReport& chart : report.charts) {
+    auto it = std::find_if(routes.begin(), routes.end(),
+                           [&](const auto& r) { return r.first == chart.route; });
+    if (it == routes.end())
+      routes.push_back({chart.route, 1});
+    else
+      ++it->second;
+  }
+  for (size_t r = 0; r < routes.size(); ++r)
+    report.route += (r ? " + " : "") + routes[r].first +
+                    (routes[r].second > 1 ? " x" + std::to_string(routes[r].second) : "");
+
+  // Measure.
+  stage = Clock::now();
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const glm::dvec3& p : input.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  report.diagonal = glm::length(hi - lo);
+  if (options.measure) {
+    // Distortion of the map surface -> image uv, per face.
+    std::vector<std::pair<double, double>> conformal, area_ratio;
+    double surface_total = 0.0, uv_total = 0.0;
+    const TriangleMesh& pm = parameterized.mesh;
+    std::vector<double> surface_area(pm.triangles.size()), uv_area(pm.triangles.size());
+    for (size_t f = 0; f < pm.triangles.size(); ++f) {
+      const glm::ivec3& t = pm.triangles[f];
+      const glm::dvec3 e1 = pm.positions[t[1]] - pm.positions[t[0]];
+      const glm::dvec3 e2 = pm.positions[t[2]] - pm.positions[t[0]];
+      const glm::dvec2 u0 = parameterized.corner_uv[3 * f], u1 = parameterized.corner_uv[3 * f + 1],
+                       u2 = parameterized.corner_uv[3 * f + 2];
+      surface_area[f] = 0.5 * glm::length(glm::cross(e1, e2));
+      uv_area[f] = 0.5 * std::abs((u1.x - u0.x) * (u2.y - u0.y) - (u1.y - u0.y) * (u2.x - u0.x));
+      surface_total += surface_area[f];
+      uv_total += uv_area[f];
+      const double l1 = glm::length(e1);
+      if (!(surface_area[f] > 0.0) || !(l1 > 0.0))
+        continue;
+      // Local frame of the surface triangle; J maps it onto the uv triangle.
+      const glm::dvec2 q1(l1, 0.0), q2(glm::dot(e2, e1) / l1, 2.0 * surface_area[f] / l1);
+      const glm::dmat2 surface_edges(q1, q2), uv_edges(u1 - u0, u2 - u0);
+      const glm::dmat2 j = uv_edges * glm::inverse(surface_edges);
+      // Singular values of a 2x2 matrix.
+      const double a = j[0][0], b = j[1][0], c = j[0][1], d = j[1][1];
+      const double s1 = std::hypot(a + d, c - b) / 2.0, s2 = std::hypot(a - d, c + b) / 2.0;
+      const double sigma1 = s1 + s2, sigma2 = std::abs(s1 - s2);
+      conformal.push_back({sigma2 > 0.0 ? sigma1 / sigma2 : 1e30, surface_area[f]});
+    }
+    for (size_t f = 0; f < pm.triangles.size(); ++f)
+      if (surface_area[f] > 0.0 && uv_total > 0.0)
+        area_ratio.push_back(
+            {(uv_area[f] / uv_total) / (surface_area[f] / surface_total), surface_area[f]});
+    double weighted = 0.0, weight = 0.0;
+    for (const auto& [value, w] : conformal) {
+      weighted += std::min(value, 1e6) * w;
+      weight += w;
+    }
+    report.conformal_mean = weight > 0.0 ? weighted / weight : 0.0;
+    report.conformal_p95 = weighted_percentile(conformal, 0.95);
+    report.area_p5 = weighted_percentile(area_ratio, 0.05);
+    report.area_p50 = weighted_percentile(area_ratio, 0.50);
+    report.area_p95 = weighted_percentile(area_ratio, 0.95);
+
+    // Reconstruction error both ways.
+    const TriangleMesh surface = geometry_image_surface(image);
+    report.mesh_to_image = error_stats(
+        distances_to_surface(sample_surface(input, options.error_samples, options.seed), surface),
+        report.diagonal);
+    report.image_to_mesh =
+        error_stats(distances_to_surface(
+                        sample_surface(surface, options.error_samples, options.seed + 1), input),
+                    report.diagonal);
+  }
+  report.seconds.measure = seconds_since(stage);
+  report.seconds.total = seconds_since(start);
+  return true;
+}
+
+nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
+  using nlohmann::json;
+  auto stats = [](const ErrorStats& s) {
+    return json{{"mean_percent", s.mean},
+                {"p99_percent", s.p99},
+                {"max_percent", s.max},
+                {"samples", s.samples}};
+  };
+  json charts = json::array();
+  for (const ChartReport& c : r.charts)
+    charts.push_back({{"faces", c.faces},
+                      {"vertices", c.vertices},
+                      {"genus", c.genus},
+                      {"boundary_loops", c.boundary_loops},
+                      {"route", c.route},
+                      {"weights", c.weights},
+                      {"note", c.note},
+                      {"seam_edges", c.seam_edges},
+                      {"flipped_faces", c.flipped},
+                      {"degenerate_faces", c.degenerate},
+                      {"area", c.area},
+                      {"rect", {c.rect.x, c.rect.y, c.rect.size}}});
+  const RepairReport& rep = r.repair;
+  return json{
+      {"route", r.route},
+      {"components", r.components},
+      {"dropped_components", r.dropped_components},
+      {"dropped_faces", r.dropped_faces},
+      {"charts", charts},
+      {"repair",
+       {{"welded_positions", rep.welded_positions},
+        {"unreferenced_positions", rep.unreferenced_positions},
+        {"degenerate_faces", rep.degenerate_faces},
+        {"duplicate_faces", rep.duplicate_faces},
+        {"split_vertices", rep.split_vertices},
+        {"reversed_components", rep.reversed_components},
+        {"holes_found", rep.holes_found},
+        {"holes_filled", rep.holes_filled},
+        {"holes_fair_failed", rep.holes_fair_failed},
+        {"filled_faces", rep.filled_faces},
+        {"filled_area", rep.filled_area},
+        {"filled_area_percent", rep.area > 0.0 ? 100.0 * rep.filled_area / rep.area : 0.0}}},
+      {"flipped_faces", r.flipped},
+      {"degenerate_uv_faces", r.degenerate},
+      {"coverage", r.coverage},
+      {"conformal_distortion", {{"mean", r.conformal_mean}, {"p95", r.conformal_p95}}},
+      {"area_distortion", {{"p5", r.area_p5}, {"p50", r.area_p50}, {"p95", r.area_p95}}},
+      {"reconstruction_error",
+       {{"mesh_to_image", stats(r.mesh_to_image)},
+        {"image_to_mesh", stats(r.image_to_mesh)},
+        {"diagonal", r.diagonal}}},
+      {"seconds",
+       {{"repair", r.seconds.repair},
+        {"parameterize", r.seconds.parameterize},
+        {"pack", r.seconds.pack},
+        {"rasterize", r.seconds.rasterize},
+        {"measure", r.seconds.measure},
+        {"total", r.seconds.total}}}};
+}
+
+std::string geometry_image_report_to_text(const GeometryImageReport& r) {
+  std::string text;
+  char line[512];
+  auto add = [&](const char* format, auto... values) {
+    std::snprintf(line, sizeof(line), format, values...);
+    text += line;
+    text += '\n';
+  };
+  add("route: %s", r.route.c_str());
+  for (size_t c = 0; c < r.charts.size(); ++c) {
+    const ChartReport& chart = r.charts[c];
+    add("chart %zu: %zu faces, genus %ld, %zu boundary loops, %s (%s weights), %zu seam edges, "
+        "%zu flipped, %zu degenerate, %dx%d texels at (%d, %d)%s%s",
+        c, chart.faces, chart.genus, chart.boundary_loops, chart.route.c_str(),
+        chart.weights.c_str(), chart.seam_edges, chart.flipped, chart.degenerate, chart.rect.size,
+        chart.rect.size, chart.rect.x, chart.rect.y, chart.note.empty() ? "" : "; ",
+        chart.note.c_str());
+  }
+  if (r.dropped_components)
+    add("dropped: %zu smaller components (%zu faces) (--components largest)", r.dropped_components,
+        r.dropped_faces);
+  const RepairReport& rep = r.repair;
+  add("repair: %zu positions welded, %zu degenerate and %zu duplicate faces dropped, %zu vertices "
+      "split, %zu components turned outward",
+      rep.welded_positions, rep.degenerate_faces, rep.duplicate_faces, rep.split_vertices,
+      rep.reversed_components);
+  add("holes: %zu found, %zu filled (%zu faces, area %.6g = %.3f%% of the surface)%s",
+      rep.holes_found, rep.holes_filled, rep.filled_faces, rep.filled_area,
+      rep.area > 0.0 ? 100.0 * rep.filled_area / rep.area : 0.0,
+      rep.holes_fair_failed ? ", some unfaired" : "");
+  add("uv faces: %zu flipped, %zu degenerate", r.flipped, r.degenerate);
+  add("coverage: %.2f%% of the texels", 100.0 * r.coverage);
+  add("conformal distortion (sigma1/sigma2): mean %.3f, p95 %.3f", r.conformal_mean,
+      r.conformal_p95);
+  add("area distortion (uv share / surface share): p5 %.3g, p50 %.3g, p95 %.3g", r.area_p5,
+      r.area_p50, r.area_p95);
+  add("reconstruction error, mesh -> image (%% of diagonal %.4g): mean %.4f, p99 %.4f, max %.4f",
+      r.diagonal, r.mesh_to_image.mean, r.mesh_to_image.p99, r.mesh_to_image.max);
+  add("reconstruction error, image -> mesh: mean %.4f, p99 %.4f, max %.4f", r.image_to_mesh.mean,
+      r.image_to_mesh.p99, r.image_to_mesh.max);
+  add("seconds: repair %.3f, parameterize %.3f, pack %.3f, rasterize %.3f, measure %.3f, total "
+      "%.3f",
+      r.seconds.repair, r.seconds.parameterize, r.seconds.pack, r.seconds.rasterize,
+      r.seconds.measure, r.seconds.total);
+  return text;
+}
+
+}  // namespace gfield

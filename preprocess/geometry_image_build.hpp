@@ -1,0 +1,103 @@
+#pragma once
+// The geometry-image pipeline (docs/geometry-image.md): repair -> per-component route (orbifold
+// for closed genus 0, cut graph + square-border conformal map otherwise) -> chart packing ->
+// rasterisation -> measurements (uv faults, coverage, distortion, reconstruction error).
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "gfield/geometry_image.hpp"
+#include "preprocess/chart_packing.hpp"
+#include "preprocess/mesh_io.hpp"
+#include "preprocess/parameterized_mesh.hpp"
+#include "preprocess/repair.hpp"
+
+namespace gfield {
+
+enum class ParameterizationMethod { kAuto, kOrbifold, kSquare };
+enum class ComponentSelection { kAll, kLargest };
+
+/// Largest input accepted (faces). Above it the pipeline stops with an error instead of
+/// exhausting memory (about 1 KB per face at peak, CGAL's sparse solve included).
+inline constexpr size_t kMaxFaces = 4'000'000;
+/// Image sizes accepted (texels per side).
+inline constexpr int kMinImageSize = 8;
+inline constexpr int kMaxImageSize = 8192;
+/// Relative padding of the image box (GeometryImage::box = padded_bounds(repaired positions)).
+inline constexpr float kBoxPadding = 0.01f;
+
+struct GeometryImageOptions {
+  int size = 512;
+  ParameterizationMethod method = ParameterizationMethod::kAuto;
+  ComponentSelection components = ComponentSelection::kAll;
+  HoleFilling holes = HoleFilling::kAllButLongest;
+  int gutter = 2;                 ///< texels between packed charts
+  bool measure = true;            ///< distortion and reconstruction error (the slow part)
+  size_t error_samples = 100000;  ///< area-weighted points per direction
+  uint64_t seed = 1;
+};
+
+/// Error statistics in percent of the input's bounding-box diagonal.
+struct ErrorStats {
+  double mean = 0.0;
+  double p99 = 0.0;
+  double max = 0.0;
+  size_t samples = 0;
+};
+
+struct ChartReport {
+  size_t faces = 0;
+  size_t vertices = 0;
+  long genus = 0;
+  size_t boundary_loops = 0;
+  std::string route;    ///< "orbifold", "square" (disk), "cut-graph+square", "slit+square", ...
+  std::string weights;  ///< "cotangent" / "mean value"
+  std::string note;     ///< why a fallback was taken, if one was
+  size_t seam_edges = 0;
+  size_t flipped = 0;
+  size_t degenerate = 0;
+  double area = 0.0;  ///< surface area (mesh units squared)
+  ChartRect rect;
+};
+
+struct StageTimes {  ///< seconds
+  double repair = 0.0, parameterize = 0.0, pack = 0.0, rasterize = 0.0, measure = 0.0, total = 0.0;
+};
+
+struct GeometryImageReport {
+  RepairReport repair;
+  std::string route;  ///< the routes of the charts, e.g. "orbifold" or "square x3"
+  std::vector<ChartReport> charts;
+  size_t components = 0;          ///< after repair
+  size_t dropped_components = 0;  ///< --components largest
+  size_t dropped_faces = 0;
+  size_t flipped = 0;  ///< over all charts
+  size_t degenerate = 0;
+  double coverage = 0.0;  ///< fraction of texels inside a chart
+  /// sigma1/sigma2 of each face's uv Jacobian, area-weighted mean and 95th percentile.
+  double conformal_mean = 0.0, conformal_p95 = 0.0;
+  /// (uv area share) / (surface area share) per face, area-weighted percentiles 5, 50, 95.
+  double area_p5 = 0.0, area_p50 = 0.0, area_p95 = 0.0;
+  ErrorStats mesh_to_image;  ///< input surface -> image surface
+  ErrorStats image_to_mesh;  ///< image surface -> input surface
+  double diagonal = 0.0;     ///< input bounding-box diagonal (mesh units)
+  StageTimes seconds;
+};
+
+/// Builds the geometry image of `input` (as loaded). `image.source` is left for the caller.
+/// `parameterized` receives the repaired mesh (kept components) with every corner's image uv.
+/// False with an error in words (no file name) for input it cannot handle.
+bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions& options,
+                          GeometryImage& image, ParameterizedMesh& parameterized,
+                          GeometryImageReport& report, std::string& error);
+
+/// The surface of a geometry image: texel positions, two triangles per grid quad whose four
+/// texels are all covered.
+TriangleMesh geometry_image_surface(const GeometryImage& image);
+
+nlohmann::json geometry_image_report_to_json(const GeometryImageReport& report);
+std::string geometry_image_report_to_text(const GeometryImageReport& report);
+
+}  // namespace gfield

@@ -1,0 +1,175 @@
+// Chart rasterisation at texel centres, orbifold tiling and dilation into the padding.
+
+#include "preprocess/rasterize.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <set>
+#include <tuple>
+
+namespace gfield {
+namespace {
+
+ChartTransform compose(const ChartTransform& a, const ChartTransform& b) {  // a after b
+  return {a.m * b.m, a.m * b.t + a.t};
+}
+
+ChartTransform rotation_about(glm::dvec2 centre, bool clockwise) {
+  ChartTransform r;
+  r.m = clockwise ? glm::dmat2(0.0, -1.0, 1.0, 0.0) : glm::dmat2(0.0, 1.0, -1.0, 0.0);
+  r.t = centre - r.m * centre;
+  return r;
+}
+
+double cross(glm::dvec2 a, glm::dvec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+
+}  // namespace
+
+std::vector<ChartTransform> orbifold_copies(glm::dvec2 lo, glm::dvec2 hi) {
+  const ChartTransform generators[4] = {
+      rotation_about({0.0, 0.0}, false), rotation_about({0.0, 0.0}, true),
+      rotation_about({1.0, 1.0}, false), rotation_about({1.0, 1.0}, true)};
+  auto key = [](const ChartTransform& g) {
+    return std::make_tuple(std::lround(g.m[0][0]), std::lround(g.m[0][1]), std::lround(g.t.x * 1e6),
+                           std::lround(g.t.y * 1e6));
+  };
+  auto meets_square = [&](const ChartTransform& g) {
+    glm::dvec2 a(std::numeric_limits<double>::max()), b(-std::numeric_limits<double>::max());
+    for (glm::dvec2 corner : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)}) {
+      a = glm::min(a, g(corner));
+      b = glm::max(b, g(corner));
+    }
+    return a.x < 1.0 && a.y < 1.0 && b.x > 0.0 && b.y > 0.0;
+  };
+  std::vector<ChartTransform> copies{ChartTransform{}};
+  std::set<decltype(key(copies[0]))> seen{key(copies[0])};
+  // Breadth-first over the group; copies that miss the square are not expanded (the tile is
+  // connected and the copies meeting the square are reachable through copies meeting it).
+  for (size_t next = 0; next < copies.size() && copies.size() < 64; ++next)
+    for (const ChartTransform& generator : generators) {
+      const ChartTransform g = compose(generator, copies[next]);
+      if (!meets_square(g) || !seen.insert(key(g)).second)
+        continue;
+      copies.push_back(g);
+    }
+  return copies;
+}
+
+void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
+                      const std::vector<RasterChart>& charts, int size, GeometryImage& image,
+                      std::vector<glm::vec2>& face_uv) {
+  const size_t texels = size_t(size) * size_t(size);
+  image.size = size;
+  image.position.assign(texels, glm::vec3(0.0f));
+  image.normal.assign(texels, glm::vec3(0.0f, 0.0f, 1.0f));
+  image.coverage.assign(texels, 0.0f);
+  face_uv.assign(3 * mesh.triangles.size(), glm::vec2(0.0f));
+  // Per texel, the smallest barycentric weight of the triangle that wrote it: the triangle that
+  // holds the centre most firmly wins (ties: the first).
+  std::vector<double> best(texels, -std::numeric_limits<double>::infinity());
+  const double tolerance = 1e-6;
+
+  for (const RasterChart& chart : charts) {
+    const ChartRect& rect = chart.rect;
+    std::vector<ChartTransform> copies{ChartTransform{}};
+    if (chart.orbifold) {
+      glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+      for (const glm::dvec2& uv : chart.corner_uv) {
+        lo = glm::min(lo, uv);
+        hi = glm::max(hi, uv);
+      }
+      copies = orbifold_copies(lo, hi);
+    }
+    auto to_texels = [&](glm::dvec2 uv) {
+      return glm::dvec2(rect.x, rect.y) + uv * double(rect.size);
+    };
+    for (const ChartTransform& g : copies) {
+      for (size_t local = 0; local < chart.faces.size(); ++local) {
+        const glm::ivec3& t = mesh.triangles[chart.faces[local]];
+        const glm::dvec2 q[3] = {to_texels(g(chart.corner_uv[3 * local])),
+                                 to_texels(g(chart.corner_uv[3 * local + 1])),
+                                 to_texels(g(chart.corner_uv[3 * local + 2]))};
+        const double area = cross(q[1] - q[0], q[2] - q[0]);
+        if (!(area > 0.0))
+          continue;  // degenerate in uv: its neighbours cover its texels
+        const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2]));
+        const glm::dvec2 hi = glm::max(q[0], glm::max(q[1], q[2]));
+        const int i0 = std::max(rect.x, int(std::ceil(lo.x - 0.5)));
+        const int i1 = std::min(rect.x + rect.size - 1, int(std::floor(hi.x - 0.5)));
+        const int j0 = std::max(rect.y, int(std::ceil(lo.y - 0.5)));
+        const int j1 = std::min(rect.y + rect.size - 1, int(std::floor(hi.y - 0.5)));
+        for (int j = j0; j <= j1; ++j)
+          for (int i = i0; i <= i1; ++i) {
+            const glm::dvec2 c(i + 0.5, j + 0.5);
+            glm::dvec3 w(cross(q[1] - c, q[2] - c), cross(q[2] - c, q[0] - c),
+                         cross(q[0] - c, q[1] - c));
+            w /= area;
+            const double weakest = std::min(w.x, std::min(w.y, w.z));
+            const size_t texel = size_t(j) * size_t(size) + size_t(i);
+            if (weakest < -tolerance || weakest <= best[texel])
+              continue;
+            best[texel] = weakest;
+            w = glm::max(w, glm::dvec3(0.0));
+            w /= w.x + w.y + w.z;
+            const glm::dvec3 p = w.x * mesh.positions[t[0]] + w.y * mesh.positions[t[1]] +
+                                 w.z * mesh.positions[t[2]];
+            const glm::dvec3 n = w.x * normals[t[0]] + w.y * normals[t[1]] + w.z * normals[t[2]];
+            const double length = glm::length(n);
+            image.position[texel] = glm::vec3(p);
+            image.normal[texel] = length > 0.0 ? glm::vec3(n / length) : glm::vec3(0, 0, 1);
+            image.coverage[texel] = 1.0f;
+          }
+      }
+    }
+    // Image uv of every corner: one copy per face (orbifold: the copy holding the centroid).
+    for (size_t local = 0; local < chart.faces.size(); ++local) {
+      const glm::dvec2* uv = &chart.corner_uv[3 * local];
+      const ChartTransform* chosen = &copies[0];
+      const glm::dvec2 centroid = (uv[0] + uv[1] + uv[2]) / 3.0;
+      for (const ChartTransform& g : copies) {
+        const glm::dvec2 c = g(centroid);
+        if (c.x >= 0.0 && c.x <= 1.0 && c.y >= 0.0 && c.y <= 1.0) {
+          chosen = &g;
+          break;
+        }
+      }
+      for (int k = 0; k < 3; ++k)
+        face_uv[3 * size_t(chart.faces[local]) + k] =
+            glm::vec2(to_texels((*chosen)(uv[k])) / double(size));
+    }
+  }
+
+  // Dilation: every uncovered texel takes the values of the nearest covered texel (breadth-first
+  // over 4-neighbours, in texel order, so the result is deterministic).
+  std::vector<char> filled(texels, 0);
+  std::deque<size_t> queue;
+  for (size_t texel = 0; texel < texels; ++texel)
+    if (image.coverage[texel] > 0.0f) {
+      filled[texel] = 1;
+      queue.push_back(texel);
+    }
+  while (!queue.empty()) {
+    const size_t texel = queue.front();
+    queue.pop_front();
+    const int i = int(texel % size_t(size)), j = int(texel / size_t(size));
+    const int di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};
+    for (int k = 0; k < 4; ++k) {
+      const int ni = i + di[k], nj = j + dj[k];
+      if (ni < 0 || nj < 0 || ni >= size || nj >= size)
+        continue;
+      const size_t neighbour = size_t(nj) * size_t(size) + size_t(ni);
+      if (filled[neighbour])
+        continue;
+      filled[neighbour] = 1;
+      image.position[neighbour] = image.position[texel];
+      image.normal[neighbour] = image.normal[texel];
+      queue.push_back(neighbour);
+    }
+  }
+}
+
+}  // namespace gfield
