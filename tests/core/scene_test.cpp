@@ -1,0 +1,345 @@
+// Scene files: parsing, instancing, asset discovery, and errors with file:line:column.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gfield/environment.hpp"
+#include "gfield/image.hpp"
+#include "gfield/scene.hpp"
+
+namespace gfield {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kSpot = std::string(GFIELD_DATA_DIR) + "/meshes/spot.obj";
+
+/// A scene in the test folder (so relative paths resolve from there).
+std::string scene_path(const std::string& name) {
+  return (fs::path(GFIELD_TEST_TMP) / name).string();
+}
+
+bool parse(const std::string& text, Scene& scene, std::string& error) {
+  return parse_scene(text, scene_path("scene.json"), scene, error);
+}
+
+/// Expects a parse failure whose message starts with "FILE:LINE:COLUMN:" and contains `what`.
+void expect_error(const std::string& text, int line, int column, const std::string& what) {
+  Scene scene;
+  std::string error;
+  ASSERT_FALSE(parse(text, scene, error)) << text;
+  const std::string prefix =
+      scene_path("scene.json") + ":" + std::to_string(line) + ":" + std::to_string(column) + ":";
+  EXPECT_EQ(error.rfind(prefix, 0), 0u) << "error: " << error << "\nexpected prefix: " << prefix;
+  EXPECT_NE(error.find(what), std::string::npos) << "error: " << error;
+}
+
+const char* kCamera = R"("camera": {"position": [0, 1, 5], "target": [0, 0, 0]})";
+
+TEST(Scene, ParsesEveryPart) {
+  const std::string text = std::string("{\n") + R"("purpose": "test",
+)" + kCamera + R"(,
+"image": {"width": 64, "height": 32},
+"environment": {"type": "constant", "color": [0.5, 0.25, 1], "intensity": 2},
+"ambient": 0.1,
+"lights": [{"type": "directional", "direction": [0, -2, 0]},
+           {"type": "point", "position": [1, 2, 3], "color": 0.5, "intensity": 4}],
+"objects": [
+  {"shape": "mesh", "file": ")" +
+                           kSpot + R"(", "material": {"type": "mirror", "tint": 0.9}},
+  {"shape": "mesh", "file": ")" +
+                           kSpot + R"(", "normals": "flat",
+   "transform": {"translate": [1, 2, 3], "rotate": [0, 90, 0], "scale": [1, 2, 3]},
+   "material": {"type": "dielectric", "ior": "Water", "absorption": [0.1, 0.2, 0.3]}},
+  {"shape": "sphere", "radius": 0.5, "material": {"type": "dielectric", "ior": 2.4}},
+  {"shape": "quad", "size": [2, 3], "material": {"type": "diffuse", "texture": "checker",
+   "colors": [[1, 0, 0], 0.5], "scale": [4, 2]}},
+  {"shape": "slab", "size": [2, 3], "thickness": 0.2, "material": {"type": "dielectric", "ior": 1.5}},
+  {"shape": "hollow-cylinder", "radius": 1, "thickness": 0.1, "height": 3,
+   "material": {"type": "diffuse", "texture": "color-chart"}}
+]})";
+  Scene scene;
+  std::string error;
+  ASSERT_TRUE(parse(text, scene, error)) << error;
+  EXPECT_EQ(scene.purpose, "test");
+  EXPECT_EQ(scene.width, 64);
+  EXPECT_EQ(scene.height, 32);
+  EXPECT_EQ(scene.environment.type, EnvironmentType::kConstant);
+  EXPECT_EQ(scene.environment.color, glm::vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_FLOAT_EQ(scene.environment.intensity, 2.0f);
+  EXPECT_EQ(scene.ambient, glm::vec3(0.1f));
+  ASSERT_EQ(scene.lights.size(), 2u);
+  EXPECT_EQ(scene.lights[0].direction, glm::vec3(0, -1, 0));  // normalised
+  EXPECT_EQ(scene.lights[1].type, LightType::kPoint);
+  EXPECT_EQ(scene.lights[1].color, glm::vec3(0.5f));
+  ASSERT_EQ(scene.objects.size(), 6u);
+  // Two objects, one mesh asset: instances.
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_EQ(scene.objects[0].shape.mesh, 0);
+  EXPECT_EQ(scene.objects[1].shape.mesh, 0);
+  EXPECT_FALSE(scene.objects[1].shape.smooth_normals);
+  EXPECT_NEAR(scene.objects[1].material.ior, 1.33333f, 1e-4f);
+  EXPECT_EQ(scene.objects[1].material.ior_preset, "Water");
+  EXPECT_EQ(scene.objects[1].transform.scale, glm::vec3(1, 2, 3));
+  EXPECT_FLOAT_EQ(scene.objects[2].material.ior, 2.4f);
+  EXPECT_EQ(scene.objects[3].material.checker_colors[0], glm::vec3(1, 0, 0));
+  EXPECT_EQ(scene.objects[3].material.checker_colors[1], glm::vec3(0.5f));
+  EXPECT_EQ(scene.objects[3].material.checker_scale, glm::vec2(4, 2));
+  EXPECT_FLOAT_EQ(scene.objects[4].shape.thickness, 0.2f);
+  EXPECT_EQ(scene.objects[5].shape.type, ShapeType::kHollowCylinder);
+}
+
+TEST(Scene, TransformOrderIsScaleThenRotateXYZThenTranslate) {
+  Transform t;
+  t.translate = {1, 2, 3};
+  t.rotate_degrees = {90, 90, 0};
+  t.scale = {2, 1, 1};
+  const glm::dvec3 p = glm::dvec3(object_to_world(t) * glm::dvec4(1, 0, 0, 1));
+  // scale: (2,0,0); rotate X 90: (2,0,0); rotate Y 90: (0,0,-2); translate.
+  EXPECT_NEAR(p.x, 1.0, 1e-12);
+  EXPECT_NEAR(p.y, 2.0, 1e-12);
+  EXPECT_NEAR(p.z, 1.0, 1e-12);
+  const glm::dvec3 q = glm::dvec3(object_to_world(t) * glm::dvec4(0, 1, 0, 1));
+  // rotate X 90: (0,0,1); rotate Y 90: (1,0,0).
+  EXPECT_NEAR(q.x, 2.0, 1e-12);
+  EXPECT_NEAR(q.y, 2.0, 1e-12);
+  EXPECT_NEAR(q.z, 3.0, 1e-12);
+}
+
+TEST(Scene, CameraRayMatchesLookAtPerspective) {
+  Camera camera;
+  camera.position = {1, 2, 3};
+  camera.target = {0, 0.5f, -1};
+  camera.fov_degrees = 50;
+  const int width = 64, height = 48;
+  const glm::dmat4 view =
+      glm::lookAt(glm::dvec3(camera.position), glm::dvec3(camera.target), glm::dvec3(camera.up));
+  const glm::dmat4 projection =
+      glm::perspective(glm::radians(50.0), double(width) / double(height), 0.1, 100.0);
+  for (const glm::dvec2 pixel : {glm::dvec2(32, 24), glm::dvec2(0.5, 0.5), glm::dvec2(63.5, 10)}) {
+    const CameraRay ray = camera_ray(camera, width, height, pixel);
+    EXPECT_NEAR(glm::length(ray.direction), 1.0, 1e-12);
+    const glm::dvec4 clip = projection * view * glm::dvec4(ray.origin + 7.0 * ray.direction, 1.0);
+    const double x = (clip.x / clip.w * 0.5 + 0.5) * width;
+    const double y = (0.5 - clip.y / clip.w * 0.5) * height;  // row 0 at the top
+    EXPECT_NEAR(x, pixel.x, 1e-9);
+    EXPECT_NEAR(y, pixel.y, 1e-9);
+  }
+}
+
+TEST(Scene, FindsAssetsBesideTheMeshAndResolvesRelativePaths) {
+  const fs::path dir = fs::path(GFIELD_TEST_TMP) / "scene_assets";
+  fs::create_directories(dir / "meshes");
+  fs::copy_file(kSpot, dir / "meshes" / "cow.obj", fs::copy_options::overwrite_existing);
+  std::ofstream(dir / "meshes" / "cow.gimage.exr") << "x";
+  fs::remove(dir / "meshes" / "cow.gfield.exr");
+  const std::string text = std::string("{") + kCamera + R"(, "objects": [
+    {"shape": "mesh", "file": "meshes/cow.obj", "material": {"type": "diffuse"}}]})";
+  Scene scene;
+  std::string error;
+  ASSERT_TRUE(parse_scene(text, (dir / "s.json").string(), scene, error)) << error;
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_EQ(scene.meshes[0].file, (dir / "meshes" / "cow.obj").string());
+  EXPECT_EQ(scene.meshes[0].geometry_image, (dir / "meshes" / "cow.gimage.exr").string());
+  EXPECT_EQ(scene.meshes[0].geometry_field, "");
+  // A named asset that does not exist is an error.
+  const std::string named = std::string("{") + kCamera + R"(, "objects": [
+    {"shape": "mesh", "file": "meshes/cow.obj", "gfield": "nope.gfield.exr",
+     "material": {"type": "diffuse"}}]})";
+  EXPECT_FALSE(parse_scene(named, (dir / "s.json").string(), scene, error));
+  EXPECT_NE(error.find("nope.gfield.exr"), std::string::npos) << error;
+}
+
+TEST(Scene, ErrorsNameFileLineAndColumn) {
+  // Malformed JSON: a missing comma at line 3.
+  expect_error(
+      "{\n  \"camera\": {\"position\": [0, 0, 1], \"target\": [0, 0, 0]}\n  \"image\": {}\n}", 3, 3,
+      "expected ',' or '}'");
+  // Unknown top-level key.
+  expect_error(std::string("{") + kCamera + ",\n  \"objets\": []}", 2, 13,
+               "unknown key \"objets\"");
+  // Unknown material type, on line 3 column 39 (the value).
+  expect_error(
+      std::string("{") + kCamera +
+          ",\n\"objects\": [\n  {\"shape\": \"sphere\", \"material\": {\"type\": \"glas\"}}]}",
+      3, 44, "unknown material type \"glas\"");
+  // Unknown preset.
+  expect_error(std::string("{") + kCamera +
+                   ",\n\"objects\": [{\"shape\": \"sphere\",\n \"material\": {\"type\": "
+                   "\"dielectric\", \"ior\": \"unobtainium\"}}]}",
+               3, 44, "unknown refractive index preset");
+  // Index <= 0.
+  expect_error(std::string("{") + kCamera +
+                   ",\n\"objects\": [{\"shape\": \"sphere\", \"material\": {\"type\": "
+                   "\"dielectric\", \"ior\": 0}}]}",
+               2, 75, "must be > 0");
+  expect_error(std::string("{") + kCamera +
+                   ",\n\"objects\": [{\"shape\": \"sphere\", \"material\": {\"type\": "
+                   "\"dielectric\", \"ior\": -1.5}}]}",
+               2, 75, "must be > 0");
+  // Negative size.
+  expect_error(std::string("{") + kCamera +
+                   ",\n\"objects\": [{\"shape\": \"sphere\", \"radius\": -1, \"material\": "
+                   "{\"type\": \"mirror\"}}]}",
+               2, 43, "must be positive");
+  // Missing mesh file.
+  expect_error(std::string("{") + kCamera +
+                   ",\n\"objects\": [{\"shape\": \"mesh\", \"file\": \"missing.obj\", "
+                   "\"material\": {\"type\": \"mirror\"}}]}",
+               2, 39, "file not found");
+  // A non-finite number (the only way to write NaN/inf in JSON).
+  expect_error(std::string("{") + kCamera +
+                   ",\n\"objects\": [{\"shape\": \"sphere\", \"transform\": {\"translate\": "
+                   "[1e999, 0, 0]}, \"material\": {\"type\": \"mirror\"}}]}",
+               2, 61, "not finite");
+  // A zero scale (singular transform).
+  expect_error(std::string("{") + kCamera +
+                   ",\n\"objects\": [{\"shape\": \"sphere\", \"transform\": {\"scale\": [1, 0, "
+                   "1]}, \"material\": {\"type\": \"mirror\"}}]}",
+               2, 56, "must be positive");
+  // A dielectric quad bounds no volume.
+  expect_error(std::string("{") + kCamera +
+                   ",\n\"objects\": [{\"shape\": \"quad\", \"material\": {\"type\": "
+                   "\"dielectric\", \"ior\": 1.5}}]}",
+               2, 43, "closed shape");
+  // Keys that do not apply to a shape or material.
+  expect_error(std::string("{") + kCamera +
+                   ",\n\"objects\": [{\"shape\": \"sphere\", \"thickness\": 1, \"material\": "
+                   "{\"type\": \"mirror\"}}]}",
+               2, 46, "does not apply to a sphere");
+  // Degenerate camera.
+  expect_error("{\"camera\": {\"position\": [0, 0, 0], \"target\": [0, 0, 0]}}", 1, 12, "coincide");
+  expect_error("{\"camera\": {\"position\": [0, 0, 1], \"target\": [0, 0, 0], \"up\": [0, 0, 2]}}",
+               1, 63, "parallel");
+  // Duplicate keys.
+  expect_error("{\"camera\": {}, \"camera\": {}}", 1, 16, "duplicate key");
+  // Image size out of range.
+  expect_error(std::string("{") + kCamera + ",\n\"image\": {\"width\": -4}}", 2, 20,
+               "must be in [1, 16384]");
+}
+
+TEST(Scene, LoadSceneReportsAMissingFile) {
+  Scene scene;
+  std::string error;
+  EXPECT_FALSE(load_scene(scene_path("does-not-exist.json"), scene, error));
+  EXPECT_NE(error.find("does-not-exist.json"), std::string::npos);
+}
+
+TEST(Scene, ExampleScenesLoad) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(GFIELD_DATA_DIR) / "scenes")) {
+    if (entry.path().extension() != ".json")
+      continue;
+    Scene scene;
+    std::string error;
+    EXPECT_TRUE(load_scene(entry.path().string(), scene, error)) << error;
+    EXPECT_FALSE(scene.purpose.empty()) << entry.path();
+    ++count;
+  }
+  EXPECT_GE(count, 6);
+}
+
+TEST(Texture, ColorChartAndChecker) {
+  Material m;
+  m.texture = TextureType::kColorChart;
+  // Top-left patch "dark skin" (115, 82, 68) in the middle of its cell: u = 1/12, v = 1 - 1/8.
+  const glm::vec3 dark_skin = texture_albedo(m, {1.0f / 12.0f, 1.0f - 1.0f / 8.0f});
+  EXPECT_NEAR(dark_skin.r, srgb_to_linear(115.0f / 255.0f), 1e-6f);
+  EXPECT_NEAR(dark_skin.g, srgb_to_linear(82.0f / 255.0f), 1e-6f);
+  // Bottom-right patch "black" (52, 52, 52).
+  EXPECT_NEAR(texture_albedo(m, {11.0f / 12.0f, 1.0f / 8.0f}).r, srgb_to_linear(52.0f / 255.0f),
+              1e-6f);
+  // Gaps between patches are near black.
+  EXPECT_LT(texture_albedo(m, {1.0f / 6.0f, 0.5f}).r, 0.02f);
+  m.texture = TextureType::kChecker;
+  m.checker_scale = {4, 2};
+  EXPECT_EQ(texture_albedo(m, {0.1f, 0.1f}), m.checker_colors[0]);
+  EXPECT_EQ(texture_albedo(m, {0.3f, 0.1f}), m.checker_colors[1]);
+  EXPECT_EQ(texture_albedo(m, {0.3f, 0.6f}), m.checker_colors[0]);
+}
+
+TEST(Environment, DirectionMappings) {
+  // Equirectangular: -Z is the centre, +X three quarters, up is the top row.
+  EXPECT_NEAR(equirect_uv({0, 0, -1}).x, 0.5f, 1e-6f);
+  EXPECT_NEAR(equirect_uv({1, 0, 0}).x, 0.75f, 1e-6f);
+  EXPECT_NEAR(equirect_uv({0, 1, 0}).y, 0.0f, 1e-6f);
+  EXPECT_NEAR(equirect_uv({0, -1, 0}).y, 1.0f, 1e-6f);
+  // Cube: the OpenGL table (face, s, t).
+  const glm::vec3 px = cube_coords({1, 0.5f, -0.25f});
+  EXPECT_EQ(px.z, 0.0f);
+  EXPECT_NEAR(px.x, 0.5f * (0.25f + 1.0f), 1e-6f);  // sc = -rz
+  EXPECT_NEAR(px.y, 0.5f * (-0.5f + 1.0f), 1e-6f);  // tc = -ry
+  EXPECT_EQ(cube_coords({0, -2, 0.1f}).z, 3.0f);
+  EXPECT_EQ(cube_coords({0.1f, 0, -3}).z, 5.0f);
+}
+
+TEST(Environment, EquirectImageLookupReturnsPixelValues) {
+  Image image(8, 4);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 8; ++x)
+      image.at(x, y) = glm::vec3(float(x), float(y), 1.0f);
+  }
+  const std::string file = scene_path("env.exr");
+  std::string error;
+  ASSERT_TRUE(save_image(file, image, error)) << error;
+  EnvironmentDesc desc;
+  desc.type = EnvironmentType::kEquirect;
+  desc.file = file;
+  desc.intensity = 2.0f;
+  Environment env;
+  ASSERT_TRUE(load_environment(desc, env, error)) << error;
+  // The direction through the centre of pixel (5, 1): u = 5.5/8, v = 1.5/4.
+  const float phi = (5.5f / 8.0f - 0.5f) * 2.0f * 3.14159265f;
+  const float theta = 1.5f / 4.0f * 3.14159265f;
+  const glm::vec3 d(std::sin(theta) * std::sin(phi), std::cos(theta),
+                    -std::sin(theta) * std::cos(phi));
+  const glm::vec3 v = environment_radiance(env, d);
+  EXPECT_NEAR(v.x, 10.0f, 1e-3f);
+  EXPECT_NEAR(v.y, 2.0f, 1e-3f);
+  EXPECT_NEAR(v.z, 2.0f, 1e-6f);
+}
+
+TEST(Environment, StudioHasStructure) {
+  // Checkered floor below, brighter sky above, finite everywhere.
+  EXPECT_NE(studio_environment_radiance(glm::normalize(glm::vec3(0.2f, -1, 0.2f))),
+            studio_environment_radiance(glm::normalize(glm::vec3(1.2f, -1, 0.2f))));
+  for (int i = 0; i < 200; ++i) {
+    const float a = float(i) * 0.7f, b = float(i) * 0.31f;
+    const glm::vec3 d(std::cos(a) * std::cos(b), std::sin(b), std::sin(a) * std::cos(b));
+    const glm::vec3 v = studio_environment_radiance(d);
+    EXPECT_TRUE(std::isfinite(v.x) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f);
+  }
+}
+
+TEST(ImageIo, RoundTripsExrExactlyAndPngWithinQuantisation) {
+  Image image(5, 3);
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    image.pixels[i] = glm::vec3(float(i) / 15.0f, 0.25f, 1.0f - float(i) / 15.0f);
+  }
+  std::string error;
+  Image back;
+  ASSERT_TRUE(save_image(scene_path("rt.exr"), image, error)) << error;
+  ASSERT_TRUE(load_image(scene_path("rt.exr"), back, error)) << error;
+  ASSERT_EQ(back.width, 5);
+  ASSERT_EQ(back.height, 3);
+  EXPECT_EQ(back.pixels, image.pixels);
+  ASSERT_TRUE(save_image(scene_path("rt.png"), image, error)) << error;
+  ASSERT_TRUE(load_image(scene_path("rt.png"), back, error)) << error;
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(linear_to_srgb(back.pixels[i][c]), linear_to_srgb(image.pixels[i][c]),
+                  0.5f / 255.0f + 1e-5f);
+    }
+  }
+  EXPECT_FALSE(save_image(scene_path("rt.bmp"), image, error));
+  EXPECT_FALSE(load_image(scene_path("missing.exr"), back, error));
+  EXPECT_NE(error.find("missing.exr"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace gfield
