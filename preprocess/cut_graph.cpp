@@ -58,6 +58,21 @@ double edge_length(const TriangleMesh& mesh, int a, int b) {
 
 }  // namespace
 
+std::vector<Edge> boundary_edges(const TriangleMesh& mesh) {
+  std::unordered_map<uint64_t, char> directed;
+  for (const glm::ivec3& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      directed[(uint64_t(uint32_t(t[k])) << 32) | uint32_t(t[(k + 1) % 3])] = 1;
+  std::vector<Edge> edges;
+  for (const glm::ivec3& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (!directed.count((uint64_t(uint32_t(b)) << 32) | uint32_t(a)))
+        edges.push_back({a, b});
+    }
+  return edges;
+}
+
 std::vector<Edge> path_edges(const std::vector<int>& path) {
   std::vector<Edge> edges;
   for (size_t i = 1; i < path.size(); ++i)

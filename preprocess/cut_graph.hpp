@@ -46,6 +46,9 @@ struct DiskMesh {
 /// or boundary edges become one disk vertex.
 DiskMesh cut_open(const TriangleMesh& mesh, const std::vector<Edge>& cut);
 
+/// Boundary edges (edges with one face), each as (source, target) of its face's winding.
+std::vector<Edge> boundary_edges(const TriangleMesh& mesh);
+
 /// Edges of a vertex path (consecutive pairs).
 std::vector<Edge> path_edges(const std::vector<int>& path);
 

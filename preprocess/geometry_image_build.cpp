@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "preprocess/chart_split.hpp"
 #include "preprocess/cut_graph.hpp"
 #include "preprocess/parameterize.hpp"
 #include "preprocess/rasterize.hpp"
@@ -35,6 +36,61 @@ struct Component {
   double area = 0.0;
 };
 
+/// The component made of `faces` of `mesh`: local copy, edges, boundary loops, genus.
+Component make_component(const TriangleMesh& mesh, std::vector<int> faces) {
+  Component c;
+  c.faces = std::move(faces);
+  std::unordered_map<int, int> local;
+  for (int f : c.faces) {
+    glm::ivec3 t;
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.triangles[f][k];
+      auto [it, inserted] = local.emplace(v, int(c.vertices.size()));
+      if (inserted) {
+        c.vertices.push_back(v);
+        c.mesh.positions.push_back(mesh.positions[v]);
+      }
+      t[k] = it->second;
+    }
+    c.mesh.triangles.push_back(t);
+    const std::vector<glm::dvec3>& q = c.mesh.positions;
+    c.area += 0.5 * glm::length(glm::cross(q[t[1]] - q[t[0]], q[t[2]] - q[t[0]]));
+  }
+  // Edges, boundary loops (each boundary vertex of an oriented manifold has one outgoing
+  // boundary halfedge), genus from the Euler characteristic.
+  std::unordered_map<uint64_t, int> directed;
+  for (const glm::ivec3& t : c.mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      directed[(uint64_t(uint32_t(t[k])) << 32) | uint32_t(t[(k + 1) % 3])] = t[(k + 1) % 3];
+  std::unordered_map<int, int> boundary_next;
+  size_t interior = 0;
+  for (const auto& [key, target] : directed) {
+    const int source = int(key >> 32);
+    if (directed.count((uint64_t(uint32_t(target)) << 32) | uint32_t(source)))
+      ++interior;
+    else
+      boundary_next[target] = source;  // boundary halfedges, reversed: any consistent walk
+  }
+  c.edges = interior / 2 + boundary_next.size();
+  std::unordered_map<int, char> visited;
+  for (const auto& [start, next] : boundary_next) {
+    if (visited.count(start))
+      continue;
+    ++c.boundary_loops;
+    for (int v = start; !visited.count(v);) {
+      visited[v] = 1;
+      auto it = boundary_next.find(v);
+      if (it == boundary_next.end())
+        break;
+      v = it->second;
+    }
+  }
+  const long chi = long(c.mesh.positions.size()) - long(c.edges) + long(c.mesh.triangles.size());
+  c.genus = (2 - chi - long(c.boundary_loops)) / 2;
+  return c;
+}
+
+/// Connected components (faces sharing vertices), largest (by faces) first.
 std::vector<Component> split_components(const TriangleMesh& mesh) {
   std::vector<int> parent(mesh.positions.size());
   std::iota(parent.begin(), parent.end(), 0);
@@ -48,67 +104,18 @@ std::vector<Component> split_components(const TriangleMesh& mesh) {
     parent[find(t[2])] = find(t[0]);
   }
   std::unordered_map<int, size_t> index;
-  std::vector<Component> components;
+  std::vector<std::vector<int>> faces;
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    auto [it, inserted] = index.emplace(find(mesh.triangles[f][0]), components.size());
+    auto [it, inserted] = index.emplace(find(mesh.triangles[f][0]), faces.size());
     if (inserted)
-      components.emplace_back();
-    components[it->second].faces.push_back(int(f));
+      faces.emplace_back();
+    faces[it->second].push_back(int(f));
   }
-  std::vector<int> local(mesh.positions.size(), -1);
-  for (Component& c : components) {
-    for (int f : c.faces) {
-      glm::ivec3 t;
-      for (int k = 0; k < 3; ++k) {
-        const int v = mesh.triangles[f][k];
-        if (local[v] < 0) {
-          local[v] = int(c.vertices.size());
-          c.vertices.push_back(v);
-          c.mesh.positions.push_back(mesh.positions[v]);
-        }
-        t[k] = local[v];
-      }
-      c.mesh.triangles.push_back(t);
-      const std::vector<glm::dvec3>& q = c.mesh.positions;
-      c.area += 0.5 * glm::length(glm::cross(q[t[1]] - q[t[0]], q[t[2]] - q[t[0]]));
-    }
-    for (int v : c.vertices)
-      local[v] = -1;
-    // Edges, boundary loops (each boundary vertex of an oriented manifold has one outgoing
-    // boundary halfedge), genus from the Euler characteristic.
-    std::unordered_map<uint64_t, int> directed;
-    for (const glm::ivec3& t : c.mesh.triangles)
-      for (int k = 0; k < 3; ++k)
-        directed[(uint64_t(uint32_t(t[k])) << 32) | uint32_t(t[(k + 1) % 3])] = t[(k + 1) % 3];
-    std::unordered_map<int, int> boundary_next;
-    size_t interior = 0;
-    for (const auto& [key, target] : directed) {
-      const int source = int(key >> 32);
-      if (directed.count((uint64_t(uint32_t(target)) << 32) | uint32_t(source)))
-        ++interior;
-      else
-        boundary_next[target] = source;  // boundary halfedges, reversed: any consistent walk
-    }
-    c.edges = interior / 2 + boundary_next.size();
-    std::unordered_map<int, char> visited;
-    for (const auto& [start, next] : boundary_next) {
-      if (visited.count(start))
-        continue;
-      ++c.boundary_loops;
-      for (int v = start; !visited.count(v);) {
-        visited[v] = 1;
-        auto it = boundary_next.find(v);
-        if (it == boundary_next.end())
-          break;
-        v = it->second;
-      }
-    }
-    const long chi = long(c.mesh.positions.size()) - long(c.edges) + long(c.mesh.triangles.size());
-    c.genus = (2 - chi - long(c.boundary_loops)) / 2;
-  }
-  std::stable_sort(
-      components.begin(), components.end(),
-      [](const Component& a, const Component& b) { return a.faces.size() > b.faces.size(); });
+  std::stable_sort(faces.begin(), faces.end(),
+                   [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  std::vector<Component> components;
+  for (std::vector<int>& f : faces)
+    components.push_back(make_component(mesh, std::move(f)));
   return components;
 }
 
@@ -147,8 +154,10 @@ ErrorStats error_stats(std::vector<double> distances, double diagonal) {
 }
 
 /// Parameterises one component into a chart; fills the route fields of `chart_report`.
+/// A protrusion (a disk cut from a chart) is slit from its tip (the vertex farthest from its
+/// border) to the border so that the square map unrolls it instead of shrinking the tip.
 bool chart_component(const Component& c, size_t index, const GeometryImageOptions& options,
-                     Chart& chart, ChartReport& report, std::string& error) {
+                     bool protrusion, Chart& chart, ChartReport& report, std::string& error) {
   const bool sphere = c.boundary_loops == 0 && c.genus == 0;
   const std::string what = "component " + std::to_string(index) + " (" +
                            std::to_string(c.faces.size()) + " faces, genus " +
@@ -186,6 +195,22 @@ bool chart_component(const Component& c, size_t index, const GeometryImageOption
     const std::vector<int> ends = farthest_points(c.mesh, 2);
     cut = path_edges(shortest_path(c.mesh, ends[0], ends[1]));
     report.route = "slit+square";
+  } else if (c.genus == 0 && c.boundary_loops == 1 && protrusion) {
+    std::vector<int> border;
+    for (const Edge& e : boundary_edges(c.mesh))
+      border.push_back(e[0]);
+    const std::vector<double> from_border = edge_distances(c.mesh, border);
+    int tip = 0;
+    for (size_t v = 0; v < from_border.size(); ++v)
+      if (from_border[v] > from_border[tip])
+        tip = int(v);
+    const std::vector<double> from_tip = edge_distances(c.mesh, {tip});
+    int foot = border.empty() ? tip : border[0];
+    for (int v : border)
+      if (from_tip[v] < from_tip[foot])
+        foot = v;
+    cut = path_edges(shortest_path(c.mesh, tip, foot));
+    report.route = cut.empty() ? "square" : "slit+square";
   } else if (c.genus == 0 && c.boundary_loops == 1) {
     report.route = "square";
   } else {
@@ -196,6 +221,66 @@ bool chart_component(const Component& c, size_t index, const GeometryImageOption
     error = what + ": " + error;
     return false;
   }
+  return true;
+}
+
+/// A chart being built: its faces and topology, its uvs and its report.
+struct Piece {
+  Component component;
+  Chart chart;
+  ChartReport report;
+};
+
+/// Charts component `c` (index `index` in the report). While the chart compresses regions
+/// (protrusions) and `depth` allows, those regions are cut out and charted on their own; the rest
+/// keeps its uvs (an orbifold chart stays seamless). A split whose protrusions cannot all be
+/// charted is abandoned for the unsplit chart.
+bool chart_pieces(const TriangleMesh& mesh, Component c, size_t index, int depth, bool protrusion,
+                  const GeometryImageOptions& options, std::vector<Piece>& out,
+                  std::string& error) {
+  Piece piece;
+  if (!chart_component(c, index, options, protrusion, piece.chart, piece.report, error))
+    return false;
+  if (options.split_protrusions && depth < options.max_split_depth && c.faces.size() >= 64) {
+    std::vector<std::vector<int>> groups =
+        split_compressed_regions(c.mesh, piece.chart.corner_uv, SplitOptions{});
+    if (!groups.empty()) {
+      Piece rest;
+      rest.chart = piece.chart;
+      rest.chart.corner_uv.clear();
+      for (int f : groups[0])
+        for (int k = 0; k < 3; ++k)
+          rest.chart.corner_uv.push_back(piece.chart.corner_uv[3 * f + k]);
+      count_uv_faults(rest.chart.corner_uv, rest.chart.flipped, rest.chart.degenerate);
+      rest.report = piece.report;
+      rest.report.note = std::to_string(groups.size() - 1) + " protrusions cut out";
+      std::vector<Piece> split;
+      bool ok = true;
+      for (size_t g = 1; g < groups.size() && ok; ++g) {
+        std::vector<int> faces;
+        for (int f : groups[g])
+          faces.push_back(c.faces[f]);  // component-local -> mesh face
+        std::string ignored;
+        ok = chart_pieces(mesh, make_component(mesh, std::move(faces)), index, depth + 1, true,
+                          options, split, ignored);
+      }
+      if (ok) {
+        std::vector<int> faces;
+        for (int f : groups[0])
+          faces.push_back(c.faces[f]);
+        rest.component = make_component(mesh, std::move(faces));
+        out.push_back(std::move(rest));
+        for (Piece& p : split) {
+          if (p.report.note.empty())
+            p.report.note = "protrusion";
+          out.push_back(std::move(p));
+        }
+        return true;
+      }
+    }
+  }
+  piece.component = std::move(c);
+  out.push_back(std::move(piece));
   return true;
 }
 
@@ -255,25 +340,31 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
   }
   report.seconds.repair = seconds_since(stage);
 
-  // Parameterise each component.
+  // Parameterise each component (and the protrusions cut from it).
   stage = Clock::now();
-  std::vector<Chart> charts(components.size());
-  report.charts.resize(components.size());
-  for (size_t c = 0; c < components.size(); ++c) {
-    ChartReport& chart_report = report.charts[c];
-    if (!chart_component(components[c], c, options, charts[c], chart_report, error))
+  std::vector<Piece> pieces;
+  for (size_t c = 0; c < components.size(); ++c)
+    if (!chart_pieces(repaired.mesh, std::move(components[c]), c, 0, false, options, pieces, error))
       return false;
-    chart_report.faces = components[c].faces.size();
-    chart_report.vertices = components[c].vertices.size();
-    chart_report.genus = components[c].genus;
-    chart_report.boundary_loops = components[c].boundary_loops;
-    chart_report.weights = charts[c].weights;
-    chart_report.seam_edges = charts[c].seam_edges;
-    chart_report.flipped = charts[c].flipped;
-    chart_report.degenerate = charts[c].degenerate;
-    chart_report.area = components[c].area;
-    report.flipped += charts[c].flipped;
-    report.degenerate += charts[c].degenerate;
+  components.clear();
+  std::vector<Chart> charts;
+  for (Piece& piece : pieces) {
+    ChartReport& chart_report = piece.report;
+    const Component& component = piece.component;
+    chart_report.faces = component.faces.size();
+    chart_report.vertices = component.vertices.size();
+    chart_report.genus = component.genus;
+    chart_report.boundary_loops = component.boundary_loops;
+    chart_report.weights = piece.chart.weights;
+    chart_report.seam_edges = piece.chart.seam_edges;
+    chart_report.flipped = piece.chart.flipped;
+    chart_report.degenerate = piece.chart.degenerate;
+    chart_report.area = component.area;
+    report.flipped += piece.chart.flipped;
+    report.degenerate += piece.chart.degenerate;
+    report.charts.push_back(chart_report);
+    components.push_back(std::move(piece.component));
+    charts.push_back(std::move(piece.chart));
   }
   report.seconds.parameterize = seconds_since(stage);
 

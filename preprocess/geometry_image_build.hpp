@@ -33,7 +33,10 @@ struct GeometryImageOptions {
   ParameterizationMethod method = ParameterizationMethod::kAuto;
   ComponentSelection components = ComponentSelection::kAll;
   HoleFilling holes = HoleFilling::kAllButLongest;
-  int gutter = 2;                 ///< texels between packed charts
+  int gutter = 2;  ///< texels between packed charts
+  /// Cut regions a chart compresses (protrusions) into charts of their own (chart_split.hpp).
+  bool split_protrusions = true;
+  int max_split_depth = 2;
   bool measure = true;            ///< distortion and reconstruction error (the slow part)
   size_t error_samples = 100000;  ///< area-weighted points per direction
   uint64_t seed = 1;

@@ -28,7 +28,8 @@ void add_image_command(CLI::App& app) {
   struct Arguments {
     std::string mesh, output, json;
     int size = 512;
-    std::string method = "auto", components = "all", holes = "all-but-longest";
+    std::string method = "auto", components = "all", holes = "all-but-longest",
+                protrusions = "split";
     bool no_measure = false;
   };
   auto args = std::make_shared<Arguments>();
@@ -52,6 +53,12 @@ void add_image_command(CLI::App& app) {
                   "chart border), all, none")
       ->check(CLI::IsMember({"all-but-longest", "all", "none"}))
       ->capture_default_str();
+  cmd->add_option("--protrusions", args->protrusions,
+                  "split: regions a conformal map compresses below 1/10 of the mean texel\n"
+                  "density (ears, legs, spouts) get charts of their own; keep: one chart per\n"
+                  "component")
+      ->check(CLI::IsMember({"split", "keep"}))
+      ->capture_default_str();
   cmd->add_option("--json", args->json, "also write the report as JSON to this file");
   cmd->add_flag("--no-measure", args->no_measure,
                 "skip distortion and reconstruction error (faster)");
@@ -72,6 +79,7 @@ void add_image_command(CLI::App& app) {
                     : args->holes == "none" ? HoleFilling::kNone
                                             : HoleFilling::kAllButLongest;
     options.measure = !args->no_measure;
+    options.split_protrusions = args->protrusions == "split";
 
     GeometryImage image;
     ParameterizedMesh parameterized;
