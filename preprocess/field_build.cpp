@@ -138,30 +138,32 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
   const glm::vec2* corner_uv = pm.corner_uv.data();
   glm::vec2* table = field.uv.data();
   tbb::combinable<size_t> hits(size_t(0));
-  cast_packets(embree, box, n,
-               [&](int entry, int first, const int* valid, const RTCRayHit8& p, bool cast) {
-                 glm::vec2* row = table + size_t(entry) * side;
-                 const int lanes = std::min(8, int(side) - first);
-                 if (!cast) {
-                   std::fill_n(row + first, lanes, glm::vec2(kFieldNoRay));
-                   return;
-                 }
-                 size_t& local_hits = hits.local();
-                 for (int lane = 0; lane < lanes; ++lane) {
-                   glm::vec2 value(kFieldNoRay);
-                   if (valid[lane] != 0) {
-                     value = glm::vec2(kFieldMiss);
-                     if (p.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
-                       const glm::vec2* uv = corner_uv + 3 * size_t(p.hit.primID[lane]);
-                       const float u = p.hit.u[lane];
-                       const float v = p.hit.v[lane];
-                       value = (1.0f - u - v) * uv[0] + u * uv[1] + v * uv[2];
-                       ++local_hits;
-                     }
-                   }
-                   row[first + lane] = value;
-                 }
-               });
+  cast_packets(
+      embree, box, n, [&](int entry, int first, const int* valid, const RTCRayHit8& p, bool cast) {
+        glm::vec2* row = table + size_t(entry) * side;
+        const int lanes = std::min(8, int(side) - first);
+        if (!cast) {
+          std::fill_n(row + first, lanes, glm::vec2(kFieldNoRay));
+          return;
+        }
+        size_t& local_hits = hits.local();
+        for (int lane = 0; lane < lanes; ++lane) {
+          glm::vec2 value(kFieldNoRay);
+          if (valid[lane] != 0) {
+            value = glm::vec2(kFieldMiss);
+            if (p.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
+              const glm::vec2* uv = corner_uv + 3 * size_t(p.hit.primID[lane]);
+              const float u = p.hit.u[lane];
+              const float v = p.hit.v[lane];
+              // Corner uvs of faces across the image border (orbifold copies)
+              // may leave [0,1]^2 a little: clamp as GL_CLAMP_TO_EDGE would.
+              value = glm::clamp((1.0f - u - v) * uv[0] + u * uv[1] + v * uv[2], 0.0f, 1.0f);
+              ++local_hits;
+            }
+          }
+          row[first + lane] = value;
+        }
+      });
 
   if (stats != nullptr) {
     stats->rays = side * side - 6 * size_t(n * n) * size_t(n * n);

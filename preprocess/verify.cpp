@@ -14,6 +14,7 @@
 
 #include "gfield/exr_io.hpp"
 #include "preprocess/parameterized_mesh.hpp"
+#include "preprocess/repair.hpp"
 
 namespace gfield {
 namespace {
@@ -36,8 +37,20 @@ double percentile(std::vector<float>& values, double p) {
   return double(values[k]);
 }
 
+/// A reference mesh: Embree scene plus the smooth normal field the geometry image samples (unit
+/// vertex normals, interpolated with the hit's barycentrics).
+struct Exact {
+  const EmbreeMesh& embree;
+  const TriangleMesh& mesh;
+  std::vector<glm::dvec3> normals;
+
+  Exact(const EmbreeMesh& e, const TriangleMesh& m)
+      : embree(e), mesh(m), normals(vertex_normals(m)) {}
+};
+
 /// The exact first (or last) hit of `ray` in [t_min, t_max], cast with rtcIntersect1.
-Answer exact_answer(const EmbreeMesh& exact, const Box& box, const Ray& ray, bool last) {
+Answer exact_answer(const Exact& reference, const Box& box, const Ray& ray, bool last) {
+  const EmbreeMesh& exact = reference.embree;
   Answer a;
   RayHit h;
   if (!last) {
@@ -64,13 +77,18 @@ Answer exact_answer(const EmbreeMesh& exact, const Box& box, const Ray& ray, boo
   }
   a.hit = h.hit;
   if (h.hit) {
-    a.normal = glm::normalize(h.geometric_normal);
+    const glm::ivec3 t = reference.mesh.triangles[size_t(h.triangle)];
+    const glm::dvec3 n = (1.0 - h.u - h.v) * reference.normals[size_t(t[0])] +
+                         double(h.u) * reference.normals[size_t(t[1])] +
+                         double(h.v) * reference.normals[size_t(t[2])];
+    a.normal =
+        glm::length(n) > 0.0 ? glm::vec3(glm::normalize(n)) : glm::normalize(h.geometric_normal);
   }
   return a;
 }
 
-std::vector<Answer> exact_answers(const EmbreeMesh& exact, const Box& box,
-                                  const std::vector<Ray>& rays, bool last) {
+std::vector<Answer> exact_answers(const Exact& exact, const Box& box, const std::vector<Ray>& rays,
+                                  bool last) {
   std::vector<Answer> answers(rays.size());
   tbb::parallel_for(size_t(0), rays.size(),
                     [&](size_t i) { answers[i] = exact_answer(exact, box, rays[i], last); });
@@ -186,7 +204,9 @@ std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed) {
 }
 
 AccuracyStats verify_table(const GeometryField& field, const GeometryImage& image,
-                           const EmbreeMesh& exact, size_t pairs, uint64_t seed) {
+                           const EmbreeMesh& embree, const TriangleMesh& mesh, size_t pairs,
+                           uint64_t seed) {
+  const Exact exact(embree, mesh);
   const int n = field.samples_per_side;
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> sample(0, sample_count(n) - 1);
@@ -217,8 +237,10 @@ AccuracyStats verify_table(const GeometryField& field, const GeometryImage& imag
   return s;
 }
 
-AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& exact,
-                            const std::vector<Ray>& rays, LookupMode mode, bool last) {
+AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
+                            const TriangleMesh& mesh, const std::vector<Ray>& rays, LookupMode mode,
+                            bool last) {
+  const Exact exact(embree, mesh);
   double seconds = 0.0;
   const std::vector<Answer> answers = lookup_answers(lookup, rays, mode, last, seconds);
   const std::vector<Answer> cast = exact_answers(exact, lookup.field->box, rays, last);
@@ -331,16 +353,17 @@ bool verify_asset(const std::string& name, const VerifyOptions& options, nlohman
   report["seed"] = options.seed;
   report["references"] = nlohmann::json::array();
   for (const Reference& reference : references) {
-    EmbreeMesh exact;
-    if (!exact.build(reference.mesh, error)) {
+    EmbreeMesh embree;
+    if (!embree.build(reference.mesh, error)) {
       error = reference.path + ": " + error;
       return false;
     }
     nlohmann::json r;
     r["mesh"] = reference.label;
     r["path"] = reference.path;
-    r["table"] =
-        accuracy_to_json(verify_table(field, image, exact, options.rays, options.seed + 2));
+    r["table"] = accuracy_to_json(
+        verify_table(field, image, embree, reference.mesh, options.rays, options.seed + 2));
+    const Exact exact(embree, reference.mesh);
     for (const Family& family : families) {
       const std::vector<Answer> first = exact_answers(exact, field.box, family.rays, false);
       std::vector<Answer> last;

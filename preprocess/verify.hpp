@@ -15,6 +15,8 @@ namespace gfield {
 
 /// Agreement of some answers with exact casts. Position errors are in % of the box diagonal and
 /// normal errors in degrees, over the rays that both the answer and the exact cast call a hit.
+/// The exact normal is the mesh's smooth normal (area-weighted vertex normals interpolated with
+/// the hit's barycentrics), the field the geometry image samples.
 struct AccuracyStats {
   size_t rays = 0;
   size_t agree = 0;        ///< same hit/miss verdict
@@ -39,14 +41,18 @@ std::vector<Ray> random_box_rays(const Box& box, size_t count, uint64_t seed);
 /// the box centre, each aimed at a uniform random point of the box (unit direction, t >= 0).
 std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed);
 
-/// The table itself: `pairs` random sample pairs on different faces; the exact cast from entry to
-/// exit sample vs the stored uv (its position read from the geometry image).
+/// The table itself (`embree` holds `mesh`): `pairs` random sample pairs on different faces; the
+/// exact cast from entry to exit sample vs the stored uv (its position read from the geometry
+/// image).
 AccuracyStats verify_table(const GeometryField& field, const GeometryImage& image,
-                           const EmbreeMesh& exact, size_t pairs, uint64_t seed);
+                           const EmbreeMesh& embree, const TriangleMesh& mesh, size_t pairs,
+                           uint64_t seed);
 
-/// Each ray's lookup (first hit, or last hit with `last`) vs the exact cast.
-AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& exact,
-                            const std::vector<Ray>& rays, LookupMode mode, bool last = false);
+/// Each ray's lookup (first hit, or last hit with `last`) vs the exact cast. `embree` holds
+/// `mesh`.
+AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
+                            const TriangleMesh& mesh, const std::vector<Ray>& rays, LookupMode mode,
+                            bool last = false);
 
 struct VerifyOptions {
   size_t rays = 1000000;  ///< arbitrary rays per family; the table subset uses as many pairs

@@ -145,7 +145,8 @@ TEST_F(GeometryFieldTorus, TableLayoutAndBareCastAgree) {
 }
 
 TEST_F(GeometryFieldTorus, TableMatchesExactCasts) {
-  const AccuracyStats s = verify_table(asset_->field, asset_->image, asset_->embree, 20000, 1);
+  const AccuracyStats s =
+      verify_table(asset_->field, asset_->image, asset_->embree, asset_->pm.mesh, 20000, 1);
   std::printf("table: hit/miss %.5f p99 %.4f%%\n", s.hit_agreement(), s.position_p99);
   EXPECT_GE(s.hit_agreement(), 0.999);
   EXPECT_LE(s.position_p99, 0.5);
@@ -159,7 +160,7 @@ TEST_F(GeometryFieldTorus, LookupModesAgainstExactCasts) {
   const std::vector<Ray> rays = random_box_rays(asset_->field.box, 10000, 1);
   AccuracyStats s[3];
   for (int m = 0; m < 3; ++m) {
-    s[m] = verify_lookup(lookup, asset_->embree, rays, LookupMode(m));
+    s[m] = verify_lookup(lookup, asset_->embree, asset_->pm.mesh, rays, LookupMode(m));
     std::printf("%-8s hit/miss %.4f median %.4f%% p95 %.4f%% p99 %.4f%%\n",
                 lookup_mode_name(LookupMode(m)), s[m].hit_agreement(), s[m].position_median,
                 s[m].position_p95, s[m].position_p99);
@@ -174,12 +175,13 @@ TEST_F(GeometryFieldTorus, LookupModesAgainstExactCasts) {
   EXPECT_LT(refined.position_median, s[1].position_median);
 
   const AccuracyStats last =
-      verify_lookup(lookup, asset_->embree, rays, LookupMode::kRefined, true);
+      verify_lookup(lookup, asset_->embree, asset_->pm.mesh, rays, LookupMode::kRefined, true);
   EXPECT_GE(last.hit_agreement(), 0.99);
   EXPECT_LE(last.position_median, 0.1);
 
   const std::vector<Ray> views = random_view_rays(asset_->field.box, 5000, 2);
-  const AccuracyStats view = verify_lookup(lookup, asset_->embree, views, LookupMode::kRefined);
+  const AccuracyStats view =
+      verify_lookup(lookup, asset_->embree, asset_->pm.mesh, views, LookupMode::kRefined);
   EXPECT_GE(view.hit_agreement(), 0.99);
   EXPECT_LE(view.position_median, 0.1);
 }

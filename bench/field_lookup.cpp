@@ -1,0 +1,70 @@
+// CPU geometry-field lookups per mode vs Embree's rtcIntersect1 on the same rays (one thread
+// each, so the figures are per core). Usage: bench_field_lookup [rays] [N]
+// (100000 random box-face rays, N = 24, meshes spot, homer and the bunny at 512^2).
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+
+#include "bench/bench_assets.hpp"
+#include "gfield/field_lookup.hpp"
+#include "preprocess/field_build.hpp"
+#include "preprocess/verify.hpp"
+
+int main(int argc, char** argv) {
+  using namespace gfield;
+  const size_t count = argc > 1 ? size_t(std::atol(argv[1])) : 100000;
+  const int n = argc > 2 ? std::atoi(argv[2]) : 24;
+  std::printf("lookups of %zu random box-face rays, N = %d, one thread\n", count, n);
+  std::printf("%-16s %-14s %12s %10s %12s\n", "mesh", "method", "Mrays/s", "ns/ray", "vs embree");
+  for (const char* file : {"spot.obj", "homer.obj", "stanford-bunny.obj"}) {
+    BenchAsset asset;
+    if (!load_bench_asset(file, 512, asset)) {
+      return 1;
+    }
+    std::string error;
+    EmbreeMesh embree;
+    GeometryField field;
+    if (!embree.build(asset.pm.mesh, error) ||
+        !build_geometry_field(asset.pm, embree, asset.image.box, n, field, error)) {
+      std::fprintf(stderr, "%s: %s\n", file, error.c_str());
+      return 1;
+    }
+    field.source = asset.image.source;
+    FieldLookup lookup;
+    if (!make_field_lookup(field, asset.image, lookup, error)) {
+      std::fprintf(stderr, "%s: %s\n", file, error.c_str());
+      return 1;
+    }
+    const std::vector<Ray> rays = random_box_rays(field.box, count, 1);
+    const auto time = [&](const auto& cast) {
+      double best = 1e30;
+      size_t hits = 0;
+      for (int r = 0; r < 3; ++r) {
+        hits = 0;
+        const auto start = std::chrono::steady_clock::now();
+        for (const Ray& ray : rays) {
+          hits += size_t(cast(ray));
+        }
+        best = std::min(
+            best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      }
+      return std::make_pair(best, hits);
+    };
+    const auto [embree_seconds, embree_hits] = time([&](const Ray& ray) {
+      return intersect(embree, ray.origin, ray.direction, ray.t_min, ray.t_max).hit;
+    });
+    std::printf("%-16s %-14s %12.2f %10.0f %12s\n", asset.name.c_str(), "rtcIntersect1",
+                double(count) / embree_seconds / 1e6, 1e9 * embree_seconds / double(count), "1.00");
+    for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
+      const auto [seconds, hits] =
+          time([&](const Ray& ray) { return lookup_first_hit(lookup, ray, mode).hit; });
+      char ratio[32];
+      std::snprintf(ratio, sizeof(ratio), "%.2f", embree_seconds / seconds);
+      std::printf("%-16s %-14s %12.2f %10.0f %12s\n", "", lookup_mode_name(mode),
+                  double(count) / seconds / 1e6, 1e9 * seconds / double(count), ratio);
+    }
+  }
+  std::printf("vs embree: lookup rays/s divided by rtcIntersect1 rays/s (> 1: faster)\n");
+  return 0;
+}

@@ -1,0 +1,163 @@
+#include "preprocess/asset_build.hpp"
+
+#include <chrono>
+#include <filesystem>
+
+#include "gfield/atomic_file.hpp"
+#include "preprocess/parameterized_mesh.hpp"
+#include "preprocess/topology.hpp"
+#include "preprocess/verify.hpp"
+
+namespace gfield {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+nlohmann::json box_to_json(const Box& box) {
+  return {{"min", {box.min.x, box.min.y, box.min.z}}, {"max", {box.max.x, box.max.y, box.max.z}}};
+}
+
+}  // namespace
+
+nlohmann::json field_file_report_to_json(const FieldFileReport& r) {
+  return {{"samples_per_side", r.samples_per_side},
+          {"table_side", sample_count(r.samples_per_side)},
+          {"memory_estimate_bytes", r.memory_estimate},
+          {"rays", r.build.rays},
+          {"hits", r.build.hits},
+          {"bvh_seconds", r.bvh_seconds},
+          {"cast_seconds", r.build.seconds},
+          {"write_seconds", r.write_seconds},
+          {"file_bytes", r.file_bytes}};
+}
+
+bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, int samples_per_side,
+                      ExrPrecision precision, const std::string& output, FieldFileReport& report,
+                      std::string& error) {
+  report.samples_per_side = samples_per_side;
+  report.memory_estimate =
+      field_memory_estimate(samples_per_side, precision == ExrPrecision::kHalf);
+  if (!check_field_size(samples_per_side, precision == ExrPrecision::kHalf, error)) {
+    error = output + ": " + error;
+    return false;
+  }
+  auto start = std::chrono::steady_clock::now();
+  EmbreeMesh embree;
+  if (!embree.build(pm.mesh, error)) {
+    error = output + ": " + error;
+    return false;
+  }
+  report.bvh_seconds = seconds_since(start);
+  GeometryField field;
+  if (!build_geometry_field(pm, embree, image.box, samples_per_side, field, error, &report.build)) {
+    error = output + ": " + error;
+    return false;
+  }
+  field.source = image.source;
+  start = std::chrono::steady_clock::now();
+  if (!save_geometry_field(output, field, precision, error)) {
+    return false;
+  }
+  report.write_seconds = seconds_since(start);
+  std::error_code ec;
+  report.file_bytes = size_t(std::filesystem::file_size(output, ec));
+  return true;
+}
+
+std::string asset_image_path(const std::string& name) {
+  return name + ".gimage.exr";
+}
+std::string asset_field_path(const std::string& name) {
+  return name + ".gfield.exr";
+}
+std::string asset_report_path(const std::string& name) {
+  return name + ".report.json";
+}
+
+bool asset_up_to_date(const std::string& mesh_path, const std::string& name) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const auto mesh_time = fs::last_write_time(mesh_path, ec);
+  if (ec) {
+    return false;
+  }
+  const std::string image = asset_image_path(name);
+  for (const std::string& path :
+       {image, parameterized_mesh_path(image), asset_field_path(name), asset_report_path(name)}) {
+    const auto time = fs::last_write_time(path, ec);
+    if (ec || time < mesh_time) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
+                 nlohmann::json& report, std::string& error) {
+  const auto start = std::chrono::steady_clock::now();
+  if (options.samples_per_side < kMinSamplesPerSide ||
+      options.samples_per_side > kMaxSamplesPerSide) {
+    return check_field_size(options.samples_per_side, true, error);
+  }
+  TriangleMesh mesh;
+  if (!load_mesh(mesh_path, mesh, error)) {
+    return false;
+  }
+  report = nlohmann::json::object();
+  report["mesh"] = std::filesystem::path(mesh_path).filename().string();
+  report["source_path"] = std::filesystem::absolute(mesh_path).string();
+  report["topology"] = topology_to_json(analyze_topology(mesh));
+
+  GeometryImage image;
+  ParameterizedMesh pm;
+  GeometryImageReport image_report;
+  if (!build_geometry_image(mesh, options.image, image, pm, image_report, error)) {
+    error = mesh_path + ": " + error;
+    return false;
+  }
+  image.source = std::filesystem::path(mesh_path).filename().string();
+  const std::string image_path = asset_image_path(name);
+  const std::string field_path = asset_field_path(name);
+  auto write_start = std::chrono::steady_clock::now();
+  if (!save_parameterized_mesh(parameterized_mesh_path(image_path), pm, error) ||
+      !save_geometry_image(image_path, image, ExrPrecision::kFloat, error)) {
+    return false;
+  }
+  const double image_write_seconds = seconds_since(write_start);
+  report["geometry_image"] = geometry_image_report_to_json(image_report);
+  report["geometry_image"]["size"] = image.size;
+  report["geometry_image"]["write_seconds"] = image_write_seconds;
+  report["box"] = box_to_json(image.box);
+
+  FieldFileReport field_report;
+  if (!write_field_file(image, pm, options.samples_per_side, options.field_precision, field_path,
+                        field_report, error)) {
+    return false;
+  }
+  report["geometry_field"] = field_file_report_to_json(field_report);
+  report["geometry_field"]["precision"] =
+      options.field_precision == ExrPrecision::kHalf ? "half" : "float";
+
+  if (options.verify_rays > 0) {
+    VerifyOptions verify;
+    verify.rays = options.verify_rays;
+    verify.original = mesh_path;
+    nlohmann::json accuracy;
+    if (!verify_asset(name, verify, accuracy, error)) {
+      return false;
+    }
+    report["accuracy"] = std::move(accuracy);
+  }
+  std::error_code ec;
+  report["files"] = {{"geometry_image", image_path},
+                     {"parameterized_mesh", parameterized_mesh_path(image_path)},
+                     {"geometry_field", field_path},
+                     {"geometry_image_bytes", size_t(std::filesystem::file_size(image_path, ec))},
+                     {"geometry_field_bytes", field_report.file_bytes}};
+  report["seconds"] = seconds_since(start);
+  return write_text_file(asset_report_path(name), report.dump(2) + "\n", error);
+}
+
+}  // namespace gfield

@@ -1,0 +1,84 @@
+#pragma once
+// Options shared by `gfield build` and `gfield batch` (the asset pipeline's knobs).
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <string>
+
+#include "preprocess/asset_build.hpp"
+
+namespace gfield {
+
+struct AssetArguments {
+  int size = 512;
+  int samples = 24;
+  bool half = false;  ///< the default; the flag exists for symmetry with --float
+  bool full = false;
+  size_t verify_rays = 100000;
+  std::string method = "auto";
+  std::string components = "all";
+};
+
+/// Adds --size, --samples, --half/--float, --verify-rays, --method, --components to `cmd`.
+inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArguments>& args) {
+  cmd->add_option("--size", args->size, "geometry image texels per side")
+      ->check(CLI::Range(kMinImageSize, kMaxImageSize))
+      ->capture_default_str();
+  cmd->add_option("--samples", args->samples,
+                  "N, field samples per side of each box face (" +
+                      std::to_string(kMinSamplesPerSide) + " to " +
+                      std::to_string(kMaxSamplesPerSide) + ")")
+      ->capture_default_str();
+  auto* half = cmd->add_flag("--half", args->half, "field U, V as half floats (default)");
+  cmd->add_flag("--float", args->full, "field U, V as 32-bit floats")->excludes(half);
+  cmd->add_option("--verify-rays", args->verify_rays,
+                  "rays per family for the report's accuracy (0: skip)")
+      ->capture_default_str();
+  cmd->add_option("--method", args->method, "parameterisation: auto, orbifold, square")
+      ->check(CLI::IsMember({"auto", "orbifold", "square"}))
+      ->capture_default_str();
+  cmd->add_option("--components", args->components, "all (packed charts) or largest")
+      ->check(CLI::IsMember({"all", "largest"}))
+      ->capture_default_str();
+}
+
+inline AssetOptions asset_options(const AssetArguments& args) {
+  AssetOptions options;
+  options.image.size = args.size;
+  options.image.method = args.method == "orbifold" ? ParameterizationMethod::kOrbifold
+                         : args.method == "square" ? ParameterizationMethod::kSquare
+                                                   : ParameterizationMethod::kAuto;
+  options.image.components =
+      args.components == "largest" ? ComponentSelection::kLargest : ComponentSelection::kAll;
+  options.samples_per_side = args.samples;
+  options.field_precision = args.full ? ExrPrecision::kFloat : ExrPrecision::kHalf;
+  options.verify_rays = args.verify_rays;
+  return options;
+}
+
+/// One line: what an asset build produced and how accurate it is.
+inline std::string asset_summary(const nlohmann::json& report) {
+  char line[512];
+  const nlohmann::json& f = report["geometry_field"];
+  std::snprintf(line, sizeof(line), "image %d^2 (%s), field N = %d (casts %.2f s, write %.2f s)",
+                report["geometry_image"]["size"].get<int>(),
+                report["geometry_image"].value("route", std::string("?")).c_str(),
+                f["samples_per_side"].get<int>(), f["cast_seconds"].get<double>(),
+                f["write_seconds"].get<double>());
+  std::string text = line;
+  if (report.contains("accuracy")) {
+    const nlohmann::json& r = report["accuracy"]["references"][0];
+    const nlohmann::json& refined = r["box_rays"]["refined"];
+    std::snprintf(line, sizeof(line),
+                  ", table hit/miss %.3f%%, refined hit/miss %.3f%% median %.4f%% p95 %.4f%%",
+                  100.0 * r["table"]["hit_agreement"].get<double>(),
+                  100.0 * refined["hit_agreement"].get<double>(),
+                  refined["position_error_percent_of_diagonal"]["median"].get<double>(),
+                  refined["position_error_percent_of_diagonal"]["p95"].get<double>());
+    text += line;
+  }
+  return text;
+}
+
+}  // namespace gfield

@@ -1,0 +1,98 @@
+// gfield field MESH --image X.gimage.exr -o X.gfield.exr: the geometry field of a geometry image
+// (docs/geometry-field.md).
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "gfield/exr_io.hpp"
+#include "preprocess/asset_build.hpp"
+#include "preprocess/cli/commands.hpp"
+#include "preprocess/parameterized_mesh.hpp"
+
+namespace gfield {
+
+void add_field_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "field",
+      "Build the geometry field of a geometry image: for every pair of the 6N^2 box-face\n"
+      "samples, the image uv of the first hit of the ray between them, cast with Embree against\n"
+      "the parameterised mesh beside the image (X.gimage.obj). Writes a (6N^2)^2 EXR (U, V).");
+  struct Arguments {
+    std::string mesh, image, output;
+    int samples = 24;
+    bool half = false;
+    bool full = false;
+  };
+  auto args = std::make_shared<Arguments>();
+  cmd->add_option("MESH", args->mesh, "the mesh file the geometry image was built from")
+      ->required();
+  cmd->add_option("--image", args->image, "geometry image (X.gimage.exr, X.gimage.obj beside it)")
+      ->required();
+  cmd->add_option("-o,--output", args->output, "output geometry field (X.gfield.exr)")->required();
+  cmd->add_option("--samples", args->samples,
+                  "N, samples per side of each box face (" + std::to_string(kMinSamplesPerSide) +
+                      " to " + std::to_string(kMaxSamplesPerSide) + ")")
+      ->capture_default_str();
+  auto* half = cmd->add_flag("--half", args->half, "store U, V as half floats (default)");
+  cmd->add_flag("--float", args->full, "store U, V as 32-bit floats")->excludes(half);
+  cmd->callback([args] {
+    std::string error;
+    const bool use_half = !args->full;
+    if (!check_field_size(args->samples, use_half, error)) {
+      throw CommandError(args->output + ": " + error);
+    }
+    ExrAssetHeader header;
+    if (!load_asset_header(args->image, header, error)) {
+      throw CommandError(error);
+    }
+    if (header.format != "geometry-image") {
+      throw CommandError(args->image + ": not a geometry image (format '" + header.format + "')");
+    }
+    const std::string mesh_name = std::filesystem::path(args->mesh).filename().string();
+    if (!header.source.empty() && header.source != mesh_name) {
+      throw CommandError(args->image + ": built from '" + header.source + "', not from '" +
+                         mesh_name + "'");
+    }
+    GeometryImage image;
+    ParameterizedMesh pm;
+    const std::string obj = parameterized_mesh_path(args->image);
+    if (!load_geometry_image(args->image, image, error) ||
+        !load_parameterized_mesh(obj, pm, error)) {
+      throw CommandError(error);
+    }
+    glm::vec3 lo(3.0e38f);
+    glm::vec3 hi(-3.0e38f);
+    for (const glm::dvec3& p : pm.mesh.positions) {
+      lo = glm::min(lo, glm::vec3(p));
+      hi = glm::max(hi, glm::vec3(p));
+    }
+    if (!glm::all(glm::lessThanEqual(image.box.min, lo)) ||
+        !glm::all(glm::lessThanEqual(hi, image.box.max))) {
+      throw CommandError(obj + ": the mesh does not lie inside the geometry image's box (" +
+                         args->image + "): they do not belong together");
+    }
+    const int side = sample_count(args->samples);
+    std::printf("field N = %d: %d x %d sample pairs, ~%.0f MB in memory (%s)\n", args->samples,
+                side, side, double(field_memory_estimate(args->samples, use_half)) / 1e6,
+                use_half ? "half" : "float");
+    std::fflush(stdout);
+    FieldFileReport report;
+    if (!write_field_file(image, pm, args->samples,
+                          use_half ? ExrPrecision::kHalf : ExrPrecision::kFloat, args->output,
+                          report, error)) {
+      throw CommandError(error);
+    }
+    std::printf(
+        "%zu rays, %zu hits (%.1f%%)\nBVH %.3f s, casts %.3f s (%.1f Mrays/s), write %.3f s\n"
+        "wrote %s (%.1f MB)\n",
+        report.build.rays, report.build.hits,
+        100.0 * double(report.build.hits) / double(std::max<size_t>(1, report.build.rays)),
+        report.bvh_seconds, report.build.seconds,
+        double(report.build.rays) / std::max(1e-9, report.build.seconds) / 1e6,
+        report.write_seconds, args->output.c_str(), double(report.file_bytes) / 1e6);
+  });
+}
+
+}  // namespace gfield
