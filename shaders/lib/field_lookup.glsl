@@ -206,6 +206,16 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, GF_INOUT(vec2) uv, GF_
     float j22 = dot(pv, e2);
     float det = j11 * j22 - j12 * j21;
     if (det == 0.0f) {
+      // A collapsed patch: padding texels are copies of the nearest chart-border texel, so the
+      // walk has left the chart towards a neighbouring one (the line crosses the seam between
+      // two charts, where neither chart's patches reach). Accept the border point when the line
+      // passes within one texel of it, moved onto the line.
+      float texel = max(dot(pu, pu), dot(pv, pv));
+      if (dot(r, r) <= texel) {
+        p -= r.x * e1 + r.y * e2;
+        uv = (x + 0.5f) / float(n);
+        return true;
+      }
       return false;
     }
     vec2 delta = vec2(j22 * r.x - j12 * r.y, j11 * r.y - j21 * r.x) / -det;
