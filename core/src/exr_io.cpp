@@ -295,6 +295,9 @@ bool save_geometry_field(const std::string& filename, const GeometryField& field
   }
   Imf::Header header = make_header(side, side, kFieldTag, field.box, field.source);
   header.insert("gfield.samplesPerSide", Imf::IntAttribute(n));
+  // zlib level 1 (docs/geometry-field.md): a 3456^2 half table writes ~30% faster than at the
+  // default level 4 for ~7% more bytes; RLE is faster still but ~55% larger.
+  header.zipCompressionLevel() = 1;
   OutputChannels out;
   out.add(header, "U", pixel_type(precision), &field.uv[0].x, 2, field.uv.size(), side);
   out.add(header, "V", pixel_type(precision), &field.uv[0].y, 2, field.uv.size(), side);
