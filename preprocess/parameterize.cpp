@@ -41,6 +41,24 @@ using SeamVertex = boost::graph_traits<SeamMesh>::vertex_descriptor;
 using SparseLU = CGAL::Eigen_solver_traits<
     Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int>>>;
 
+/// SparseLU that factorises a matrix once: CGAL's fixed-border parameterisers solve for u and for
+/// v with two linear_solver(A, B, X, D) calls on the same A, which would factorise it twice.
+class FactorOnceSparseLU : public SparseLU {
+ public:
+  bool linear_solver(const Matrix& a, const Vector& b, Vector& x, NT& d) {
+    d = 1;
+    if (factored_ != &a.eigen_object()) {
+      if (!factor(a, d))
+        return false;
+      factored_ = &a.eigen_object();
+    }
+    return SparseLU::linear_solver(b, x);
+  }
+
+ private:
+  const void* factored_ = nullptr;
+};
+
 /// Surface_mesh with vertex v = positions[v] and faces in triangle order; false if a face cannot
 /// be added (not an oriented manifold).
 bool build_surface_mesh(const std::vector<glm::dvec3>& positions,
@@ -303,10 +321,12 @@ bool parameterize_square(const TriangleMesh& component, const std::vector<Edge>&
     auto uvmap = sm.add_property_map<VertexIndex, Point2>("v:uv", Point2(0, 0)).first;
     SMP::Error_code code;
     if (attempt == 0) {
-      SMP::Discrete_conformal_map_parameterizer_3<SurfaceMesh, Border, SparseLU> parameterizer;
+      SMP::Discrete_conformal_map_parameterizer_3<SurfaceMesh, Border, FactorOnceSparseLU>
+          parameterizer;
       code = SMP::parameterize(sm, parameterizer, borders[0], uvmap);
     } else {
-      SMP::Mean_value_coordinates_parameterizer_3<SurfaceMesh, Border, SparseLU> parameterizer;
+      SMP::Mean_value_coordinates_parameterizer_3<SurfaceMesh, Border, FactorOnceSparseLU>
+          parameterizer;
       code = SMP::parameterize(sm, parameterizer, borders[0], uvmap);
     }
     if (code == SMP::OK) {

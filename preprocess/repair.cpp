@@ -82,17 +82,18 @@ size_t orient_outward(TriangleMesh& mesh) {
       component.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
   std::vector<double> volume(count, 0.0);
   std::vector<char> closed(count, 1);
-  std::map<std::pair<int, int>, int> directed;
+  std::unordered_map<uint64_t, int> directed;
+  auto key = [](int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); };
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
     const glm::ivec3& t = mesh.triangles[f];
     const glm::dvec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]],
                      &c = mesh.positions[t[2]];
     volume[component[f]] += glm::dot(a, glm::cross(b, c));
     for (int k = 0; k < 3; ++k)
-      directed[{t[k], t[(k + 1) % 3]}] = component[f];
+      directed[key(t[k], t[(k + 1) % 3])] = component[f];
   }
   for (const auto& [edge, c] : directed)
-    if (!directed.count({edge.second, edge.first}))
+    if (!directed.count(key(int(edge & 0xffffffffu), int(edge >> 32))))
       closed[c] = 0;
   size_t reversed = 0;
   for (int c = 0; c < count; ++c)
@@ -139,7 +140,7 @@ bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out
 
   // Drop degenerate and duplicate faces.
   std::vector<std::array<int, 3>> faces;
-  std::map<std::array<int, 3>, int> seen;
+  std::map<std::array<int, 3>, char> seen;
   for (const glm::ivec3& t : input.triangles) {
     const std::array<int, 3> f{welded[t[0]], welded[t[1]], welded[t[2]]};
     if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] ||
