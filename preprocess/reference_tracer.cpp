@@ -51,6 +51,7 @@ struct ObjectRecord {
   glm::dmat4 to_object{1.0};
   glm::dmat3 normal_to_world{1.0};  ///< inverse transpose of the linear part
   glm::dvec3 world_lo{0.0}, world_hi{0.0};
+  double diagonal = 0.0;  ///< of the world bounds
   unsigned mask = kOpaqueMask;
 };
 
@@ -283,6 +284,7 @@ struct ReferenceTracer::Impl {
         r.world_lo = glm::min(r.world_lo, w);
         r.world_hi = glm::max(r.world_hi, w);
       }
+      r.diagonal = glm::length(r.world_hi - r.world_lo);
       lo = glm::min(lo, r.world_lo);
       hi = glm::max(hi, r.world_hi);
       if (r.object.shape.type == ShapeType::kMesh) {
@@ -382,7 +384,9 @@ struct ReferenceTracer::Impl {
         hit.shading_normal = glm::normalize(r.normal_to_world * n);
     }
     hit.uv = glm::dvec2(0.0);
-    hit.epsilon = 2e-5 * extent;
+    // Embree works in float: step well past its intersection error, relative to the object's
+    // size and to the magnitude of the coordinates.
+    hit.epsilon = 1e-5 * (r.diagonal + glm::length(hit.position));
     return true;
   }
 
