@@ -75,9 +75,8 @@ int main(int argc, char** argv) {
     FieldBuildStats stats;
     for (int r = 0; r < repetitions; ++r) {  // interleaved, so that load changes hit both alike
       bare.run([&] { bare_hits = cast_field_rays(embree, asset.image.box, n); });
-      build.run([&] {
-        build_geometry_field(asset.pm, embree, asset.image.box, n, field, error, &stats);
-      });
+      build.run(
+          [&] { build_geometry_field(asset.pm, embree, asset.image, n, field, error, &stats); });
     }
     if (bare_hits != stats.hits) {
       std::fprintf(stderr, "%s: bare cast and build disagree (%zu vs %zu hits)\n", file, bare_hits,

@@ -51,7 +51,7 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
   }
   report.bvh_seconds = seconds_since(start);
   GeometryField field;
-  if (!build_geometry_field(pm, embree, image.box, samples_per_side, field, error, &report.build)) {
+  if (!build_geometry_field(pm, embree, image, samples_per_side, field, error, &report.build)) {
     error = output + ": " + error;
     return false;
   }

@@ -115,10 +115,48 @@ bool check_field_size(int samples_per_side, bool half_precision, std::string& er
   return true;
 }
 
-bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree, const Box& box,
-                          int samples_per_side, GeometryField& field, std::string& error,
-                          FieldBuildStats* stats) {
+glm::vec2 snap_to_covered(const GeometryImage& image, glm::vec2 uv, glm::vec3 hit) {
+  const int n = image.size;
+  const auto covered = [&](int i, int j) {
+    return image.coverage[texel_index(image, i, j)] > 0.0f &&
+           image.coverage[texel_index(image, i + 1, j)] > 0.0f &&
+           image.coverage[texel_index(image, i, j + 1)] > 0.0f &&
+           image.coverage[texel_index(image, i + 1, j + 1)] > 0.0f;
+  };
+  const glm::vec2 x = glm::clamp(uv * float(n) - 0.5f, glm::vec2(0.0f), glm::vec2(float(n - 1)));
+  const glm::ivec2 c = glm::min(glm::ivec2(glm::floor(x)), glm::ivec2(n - 2));
+  if (covered(c.x, c.y)) {
+    return uv;
+  }
+  glm::vec2 best = uv;
+  float best_distance = glm::distance(sample_position(image, uv), hit);
+  for (int j = std::max(0, c.y - 2); j <= std::min(n - 2, c.y + 2); ++j) {
+    for (int i = std::max(0, c.x - 2); i <= std::min(n - 2, c.x + 2); ++i) {
+      if (!covered(i, j)) {
+        continue;
+      }
+      const glm::vec2 q = glm::clamp(x, glm::vec2(i, j), glm::vec2(i + 1, j + 1));
+      const glm::vec2 q_uv = (q + 0.5f) / float(n);
+      const float d = glm::distance(sample_position(image, q_uv), hit);
+      if (d < best_distance) {
+        best_distance = d;
+        best = q_uv;
+      }
+    }
+  }
+  return best;
+}
+
+bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
+                          const GeometryImage& image, int samples_per_side, GeometryField& field,
+                          std::string& error, FieldBuildStats* stats) {
   const auto start = std::chrono::steady_clock::now();
+  const Box& box = image.box;
+  if (image.size < 2 || image.coverage.size() != size_t(image.size) * size_t(image.size) ||
+      image.position.size() != image.coverage.size()) {
+    error = "the geometry image is empty or inconsistent";
+    return false;
+  }
   const int n = samples_per_side;
   if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide) {
     error = "samples per side " + std::to_string(n) + " out of range [" +
@@ -136,6 +174,7 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
   field.uv.resize(side * side);  // every entry is written below, row by row
 
   const glm::vec2* corner_uv = pm.corner_uv.data();
+  const std::vector<glm::vec3> points = sample_points(box, n);
   glm::vec2* table = field.uv.data();
   tbb::combinable<size_t> hits(size_t(0));
   cast_packets(
@@ -158,6 +197,10 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
               // Corner uvs of faces across the image border (orbifold copies)
               // may leave [0,1]^2 a little: clamp as GL_CLAMP_TO_EDGE would.
               value = glm::clamp((1.0f - u - v) * uv[0] + u * uv[1] + v * uv[2], 0.0f, 1.0f);
+              const glm::vec3 origin = points[size_t(entry)];
+              const glm::vec3 hit =
+                  origin + p.ray.tfar[lane] * (points[size_t(first + lane)] - origin);
+              value = snap_to_covered(image, value, hit);
               ++local_hits;
             }
           }

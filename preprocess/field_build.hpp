@@ -12,6 +12,7 @@
 #include <string>
 
 #include "gfield/geometry_field.hpp"
+#include "gfield/geometry_image.hpp"
 #include "preprocess/embree_mesh.hpp"
 #include "preprocess/parameterized_mesh.hpp"
 
@@ -38,12 +39,20 @@ struct FieldBuildStats {
   double seconds = 0.0;
 };
 
-/// Builds the field of `pm` (the parameterised mesh, already in `embree`) in `box` with N samples
-/// per side. `field.source` is left to the caller. False with an error for N out of range or a
-/// mesh whose corner uvs do not match its triangles.
-bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree, const Box& box,
-                          int samples_per_side, GeometryField& field, std::string& error,
-                          FieldBuildStats* stats = nullptr);
+/// Builds the field of `pm` (the parameterised mesh of `image`, already in `embree`) in the
+/// image's box with N samples per side. A hit whose uv falls where the image's bilinear patch
+/// reaches into uncovered (padding) texels is moved to the nearby covered patch point closest to
+/// the hit (snap_to_covered). `field.source` is left to the caller. False with an error for N out
+/// of range or a mesh whose corner uvs do not match its triangles.
+bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
+                          const GeometryImage& image, int samples_per_side, GeometryField& field,
+                          std::string& error, FieldBuildStats* stats = nullptr);
+
+/// `uv` itself when the 2 x 2 texels of its bilinear patch are all covered; otherwise, of `uv`
+/// and the points of the fully covered patches within 2 texels, the one whose image position is
+/// closest to `hit` (padding texels are copies of other texels, so a lookup there can land far
+/// from the surface).
+glm::vec2 snap_to_covered(const GeometryImage& image, glm::vec2 uv, glm::vec3 hit);
 
 /// Casts exactly the rays and packets of build_geometry_field and stores nothing (the reference
 /// of the build benchmark). Returns the number of hits.

@@ -106,8 +106,8 @@ class GeometryFieldTorus : public ::testing::Test {
     }
     const Box box = padded_bounds(points.data(), points.size(), 0.02f);
     asset_->image = rasterize_torus(asset_->pm, 256, box);
-    ASSERT_TRUE(build_geometry_field(asset_->pm, asset_->embree, box, 10, asset_->field, error,
-                                     &asset_->stats))
+    ASSERT_TRUE(build_geometry_field(asset_->pm, asset_->embree, asset_->image, 10, asset_->field,
+                                     error, &asset_->stats))
         << error;
     asset_->field.source = asset_->image.source;
   }
@@ -197,11 +197,37 @@ TEST(GeometryField, SamplesPerSideOutOfRangeIsRefused) {
   ParameterizedMesh pm = make_torus();
   EmbreeMesh embree;
   ASSERT_TRUE(embree.build(pm.mesh, error)) << error;
+  const GeometryImage image = rasterize_torus(pm, 16, Box{glm::vec3(-1.5f), glm::vec3(1.5f)});
   GeometryField field;
-  EXPECT_FALSE(build_geometry_field(pm, embree, Box{}, 2, field, error));
+  EXPECT_FALSE(build_geometry_field(pm, embree, image, 2, field, error));
   pm.corner_uv.pop_back();
-  EXPECT_FALSE(build_geometry_field(pm, embree, Box{}, 8, field, error));
+  EXPECT_FALSE(build_geometry_field(pm, embree, image, 8, field, error));
   EXPECT_NE(error.find("corner uvs"), std::string::npos);
+}
+
+TEST(GeometryField, HitsNextToPaddingSnapToTheCoveredPatches) {
+  // A plane z = 0 sampled on 8 x 8 texels; columns 5..7 are padding whose copies come from far
+  // away (z = 1), as dilation can produce between charts.
+  GeometryImage image;
+  image.size = 8;
+  for (int j = 0; j < 8; ++j) {
+    for (int i = 0; i < 8; ++i) {
+      const bool covered = i < 5;
+      image.position.push_back(covered ? glm::vec3(i, j, 0.0f) : glm::vec3(0.0f, 0.0f, 1.0f));
+      image.normal.push_back(glm::vec3(0.0f, 0.0f, 1.0f));
+      image.coverage.push_back(covered ? 1.0f : 0.0f);
+    }
+  }
+  const auto uv_of = [](float i, float j) { return glm::vec2(i + 0.5f, j + 0.5f) / 8.0f; };
+  // Inside the covered patches nothing moves.
+  EXPECT_EQ(snap_to_covered(image, uv_of(2.3f, 3.6f), glm::vec3(2.3f, 3.6f, 0.0f)),
+            uv_of(2.3f, 3.6f));
+  // Between the last covered column (4) and the padding: the stored uv would blend in z = 1.
+  const glm::vec3 hit(4.3f, 3.5f, 0.0f);
+  const glm::vec2 snapped = snap_to_covered(image, uv_of(4.3f, 3.5f), hit);
+  EXPECT_GT(glm::distance(sample_position(image, uv_of(4.3f, 3.5f)), hit), 0.25f);
+  EXPECT_LT(glm::distance(sample_position(image, snapped), hit), 0.31f);
+  EXPECT_NEAR(sample_position(image, snapped).z, 0.0f, 1e-6f);
 }
 
 TEST_F(GeometryFieldTorus, FilesRoundTripAndBadFilesAreErrors) {
