@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include <stb/stb_image_write.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gfield/environment.hpp"
@@ -302,6 +303,38 @@ TEST(Environment, EquirectImageLookupReturnsPixelValues) {
   EXPECT_NEAR(v.x, 10.0f, 1e-3f);
   EXPECT_NEAR(v.y, 2.0f, 1e-3f);
   EXPECT_NEAR(v.z, 2.0f, 1e-6f);
+}
+
+TEST(Environment, CubeFacesInOpenGlOrder) {
+  EnvironmentDesc desc;
+  desc.type = EnvironmentType::kCube;
+  std::string error;
+  for (size_t f = 0; f < 6; ++f) {
+    desc.faces[f] = scene_path("face" + std::to_string(f) + ".exr");
+    ASSERT_TRUE(save_image(desc.faces[f], Image(4, 4, glm::vec3(float(f))), error)) << error;
+  }
+  Environment env;
+  ASSERT_TRUE(load_environment(desc, env, error)) << error;
+  const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (int f = 0; f < 6; ++f) {
+    EXPECT_EQ(environment_radiance(env, axes[f]).x, float(f));
+  }
+  // Faces of different sizes are refused, naming the file.
+  ASSERT_TRUE(save_image(desc.faces[3], Image(8, 8), error));
+  EXPECT_FALSE(load_environment(desc, env, error));
+  EXPECT_NE(error.find("face3.exr"), std::string::npos) << error;
+}
+
+TEST(ImageIo, ReadsRadianceHdr) {
+  const float pixels[2 * 1 * 3] = {0.5f, 2.0f, 8.0f, 0.125f, 0.25f, 1.0f};
+  const std::string file = scene_path("tiny.hdr");
+  ASSERT_NE(stbi_write_hdr(file.c_str(), 2, 1, 3, pixels), 0);
+  Image image;
+  std::string error;
+  ASSERT_TRUE(load_image(file, image, error)) << error;
+  ASSERT_EQ(image.width, 2);
+  EXPECT_EQ(image.at(0, 0), glm::vec3(0.5f, 2.0f, 8.0f));  // powers of two are exact in RGBE
+  EXPECT_EQ(image.at(1, 0), glm::vec3(0.125f, 0.25f, 1.0f));
 }
 
 TEST(Environment, StudioHasStructure) {
