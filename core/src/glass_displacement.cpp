@@ -23,8 +23,10 @@ glm::vec3 plate_displace(const GlassPlate& plate, glm::vec3 eye, glm::vec3 verte
 
 CylinderPathPoints cylinder_path(const GlassCylinder& cylinder, CylinderPath path, glm::vec3 eye,
                                  glm::vec3 vertex) {
-  const glsl::GdPath p = glsl::gd_cylinder_solve(int(path), cylinder.outer_radius,
-                                                 cylinder.inner_radius, cylinder.ior, eye, vertex);
+  const glsl::GdPath p =
+      glsl::gd_solve(glsl::gd_cylinder_glass(int(path), cylinder.outer_radius,
+                                             cylinder.inner_radius, cylinder.ior),
+                     eye, vertex);
   CylinderPathPoints out;
   out.valid = p.valid;
   out.count = p.count;

@@ -86,14 +86,18 @@ float gd_plate_shift(float s, float w, float n_rel) {
 // normal `normal` (either sign), thickness `w`, relative index `n_rel` >= 1. The system is
 // rotated into the plate's frame (section 2.2, any orientation): Y along the normal away from the
 // eye, X towards the vertex in the plane of incidence; there A(x, y) moves to B(x, y - L) and
-// the inverse rotation gives the world position. Vertices not behind the plate's far face (and
-// an eye inside the plate) are returned unchanged.
+// the inverse rotation gives the world position. Vertices in front of the plate (and an eye
+// inside the plate) are returned unchanged.
 vec3 gd_plate_displace(vec3 eye, vec3 a, vec3 centre, vec3 normal, float w, float n_rel) {
   vec3 ny = dot(centre - eye, normal) >= 0.0f ? normal : -normal;
   float front = dot(centre - eye, ny) - 0.5f * w;  // eye to the near face, along ny
   vec3 rel = a - eye;
   float y = dot(rel, ny);
-  if (!(front > 0.0f) || !(y > front + w)) return a;
+  if (!(front > 0.0f) || !(y > front)) return a;
+  // A vertex inside the glass is seen through the near face alone: equations 5 and 2 with the
+  // glass ending at the vertex (W = y - front), which is the one-interface case of equations 6-8
+  // and meets the plate's answer at the far face.
+  float glass = min(w, y - front);
   vec3 lateral = rel - y * ny;
   float x = sqrt(dot(lateral, lateral));
   vec3 nx = x > 0.0f ? lateral / x : vec3(0.0f);
@@ -101,8 +105,8 @@ vec3 gd_plate_displace(vec3 eye, vec3 a, vec3 centre, vec3 normal, float w, floa
   // Rotation into the plate's frame: rows nx, ny, nz.
   mat3 to_plate = transpose(mat3(nx, ny, nz));
   vec3 local = to_plate * rel;  // = (x, y, 0)
-  float s = gd_plate_incidence_sine(local.x, local.y, w, n_rel);
-  local.y = local.y - gd_plate_shift(s, w, n_rel);
+  float s = gd_plate_incidence_sine(local.x, local.y, glass, n_rel);
+  local.y = local.y - gd_plate_shift(s, glass, n_rel);
   return eye + transpose(to_plate) * local;
 }
 
@@ -128,6 +132,23 @@ struct GdPath {
   vec3 dir[5];      // unit directions: dir[0] from the eye, dir[k] after interface point k
   float index[5];   // relative index of the medium of dir[k]
 };
+
+// The glass a path crosses: the hollow cylinder and one of its GD_PATH_* paths.
+struct GdGlass {
+  int path;  // GD_PATH_*
+  float outer_radius;
+  float inner_radius;
+  float n_rel;
+};
+
+GdGlass gd_cylinder_glass(int path, float outer_radius, float inner_radius, float n_rel) {
+  GdGlass g;
+  g.path = path;
+  g.outer_radius = outer_radius;
+  g.inner_radius = inner_radius;
+  g.n_rel = n_rel;
+  return g;
+}
 
 int gd_path_steps(int path) {
   if (path == GD_PATH_BOTH_WALLS) return 4;
@@ -219,6 +240,25 @@ GdPath gd_cylinder_trace(int path, float outer_radius, float inner_radius, float
   return p;
 }
 
+GdPath gd_empty_path(vec3 d) {
+  GdPath p;
+  p.valid = false;
+  p.count = 0;
+  for (int k = 0; k < 4; k++) {
+    p.point[k] = vec3(0.0f);
+    p.facing[k] = vec3(0.0f);
+  }
+  for (int k = 0; k < 5; k++) {
+    p.dir[k] = d;
+    p.index[k] = 1.0f;
+  }
+  return p;
+}
+
+GdPath gd_trace(GdGlass g, vec3 origin, vec3 d) {
+  return gd_cylinder_trace(g.path, g.outer_radius, g.inner_radius, g.n_rel, origin, d);
+}
+
 // The miss of the traced path at vertex q: q's offset from the final ray, in the basis (e1, e2).
 // The z component is the distance from the last interface to q along the final ray.
 vec3 gd_path_miss(GdPath p, vec3 q, vec3 e1, vec3 e2) {
@@ -233,14 +273,13 @@ vec3 gd_direction(vec3 d0, vec3 e1, vec3 e2, float u, float v) {
   return normalize(d0 + u * e1 + v * e2);
 }
 
-// The path of type `path` from `eye` that reaches vertex q (both in the cylinder's object space):
+// The path through glass g from `eye` that reaches vertex q (the cylinder's object space):
 // the eye ray's direction is found by Newton's method on the 2 angles of the miss (Jacobian by
 // finite differences, steps halved while they leave the valid paths or do not reduce the miss),
 // started from the straight line to q (or, when that one does not take the path, from the best
 // of a fan of lines across the cylinder). Invalid when it does not converge or q is not beyond
 // the last interface.
-GdPath gd_cylinder_solve(int path, float outer_radius, float inner_radius, float n_rel,
-                         vec3 eye, vec3 q) {
+GdPath gd_solve(GdGlass g, vec3 eye, vec3 q) {
   vec3 d0 = normalize(q - eye);
   vec3 helper = abs(d0.y) < 0.9f ? vec3(0.0f, 1.0f, 0.0f) : vec3(1.0f, 0.0f, 0.0f);
   vec3 e1 = normalize(cross(d0, helper));
@@ -248,20 +287,20 @@ GdPath gd_cylinder_solve(int path, float outer_radius, float inner_radius, float
   float scale = length(q - eye) + length(q) + length(eye);
   float u = 0.0f;
   float v = 0.0f;
-  GdPath p = gd_cylinder_trace(path, outer_radius, inner_radius, n_rel, eye, d0);
+  GdPath p = gd_trace(g, eye, d0);
   if (!p.valid) {
-    // Start instead from the valid one of a fan of lines across the cylinder (e1 is horizontal
+    // Start instead from the valid one of a fan of lines across the axis (e1 is horizontal
     // unless the line is nearly vertical) that misses q least; the fan's step is half the wall's
     // apparent width, so no band of valid lines falls between two of them.
-    float distance_to_axis = max(sqrt(eye.x * eye.x + eye.z * eye.z), outer_radius);
-    float span = 2.0f * outer_radius / distance_to_axis;
-    float fan_step = max(0.5f * (outer_radius - inner_radius) / distance_to_axis, span / 32.0f);
     float best = 3.0e38f;
+    float distance_to_axis = max(sqrt(eye.x * eye.x + eye.z * eye.z), g.outer_radius);
+    float span = 2.0f * g.outer_radius / distance_to_axis;
+    float fan_step =
+        max(0.5f * (g.outer_radius - g.inner_radius) / distance_to_axis, span / 32.0f);
     for (int k = 0; k <= 64; k++) {
       float offset = -span + fan_step * float(k);
       if (offset > span) break;
-      GdPath trial = gd_cylinder_trace(path, outer_radius, inner_radius, n_rel, eye,
-                                       gd_direction(d0, e1, e2, offset, 0.0f));
+      GdPath trial = gd_trace(g, eye, gd_direction(d0, e1, e2, offset, 0.0f));
       if (!trial.valid) continue;
       vec3 trial_miss = gd_path_miss(trial, q, e1, e2);
       float err = trial_miss.x * trial_miss.x + trial_miss.y * trial_miss.y;
@@ -283,23 +322,24 @@ GdPath gd_cylinder_solve(int path, float outer_radius, float inner_radius, float
       break;
     }
     // Finite differences away from the current point (one-sided, towards the valid side).
-    GdPath pu = gd_cylinder_trace(path, outer_radius, inner_radius, n_rel, eye,
+    GdPath pu = gd_trace(g, eye,
                                   gd_direction(d0, e1, e2, u + h, v));
     float hu = h;
     if (!pu.valid) {
       hu = -h;
-      pu = gd_cylinder_trace(path, outer_radius, inner_radius, n_rel, eye,
+      pu = gd_trace(g, eye,
                              gd_direction(d0, e1, e2, u - h, v));
     }
-    GdPath pv = gd_cylinder_trace(path, outer_radius, inner_radius, n_rel, eye,
+    GdPath pv = gd_trace(g, eye,
                                   gd_direction(d0, e1, e2, u, v + h));
     float hv = h;
     if (!pv.valid) {
       hv = -h;
-      pv = gd_cylinder_trace(path, outer_radius, inner_radius, n_rel, eye,
+      pv = gd_trace(g, eye,
                              gd_direction(d0, e1, e2, u, v - h));
     }
-    if (!pu.valid || !pv.valid) return pu.valid ? pv : pu;
+    if (!pu.valid) return pu;
+    if (!pv.valid) return pv;
     vec3 mu = gd_path_miss(pu, q, e1, e2);
     vec3 mv = gd_path_miss(pv, q, e1, e2);
     float j11 = (mu.x - miss.x) / hu;
@@ -314,7 +354,7 @@ GdPath gd_cylinder_solve(int path, float outer_radius, float inner_radius, float
     bool accepted = false;
     float lambda = 1.0f;
     for (int b = 0; b < 12 && !accepted; b++) {
-      GdPath trial = gd_cylinder_trace(path, outer_radius, inner_radius, n_rel, eye,
+      GdPath trial = gd_trace(g, eye,
                                        gd_direction(d0, e1, e2, u + lambda * du, v + lambda * dv));
       if (trial.valid) {
         vec3 trial_miss = gd_path_miss(trial, q, e1, e2);
@@ -361,12 +401,17 @@ vec3 gd_path_virtual_point(GdPath p, vec3 q) {
   return cur;
 }
 
-// Where vertex q (object space of the cylinder) is seen from `eye` along `path`; `ok` false (and
-// q returned) when no such path reaches q.
-vec3 gd_cylinder_displace(int path, float outer_radius, float inner_radius, float n_rel, vec3 eye,
-                          vec3 q, GD_OUT(bool) ok) {
-  GdPath p = gd_cylinder_solve(path, outer_radius, inner_radius, n_rel, eye, q);
+// Where vertex q is seen from `eye` through glass g; `ok` false (and q returned) when no path
+// through g reaches q.
+vec3 gd_displace(GdGlass g, vec3 eye, vec3 q, GD_OUT(bool) ok) {
+  GdPath p = gd_solve(g, eye, q);
   ok = p.valid;
   if (!p.valid) return q;
   return gd_path_virtual_point(p, q);
+}
+
+// Where vertex q (object space of the cylinder) is seen from `eye` along `path`.
+vec3 gd_cylinder_displace(int path, float outer_radius, float inner_radius, float n_rel, vec3 eye,
+                          vec3 q, GD_OUT(bool) ok) {
+  return gd_displace(gd_cylinder_glass(path, outer_radius, inner_radius, n_rel), eye, q, ok);
 }

@@ -118,13 +118,29 @@ TEST(GlassDisplacement, PlateVertexSeenWhereTheExactRayGoes) {
   EXPECT_EQ(checked, 240);
 }
 
+TEST(GlassDisplacement, PlateVertexInsideTheGlassSeenThroughTheNearFace) {
+  GlassPlate plate;
+  plate.centre = glm::vec3(0.0f, 0.0f, 0.0f);
+  plate.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+  plate.thickness = 0.5f;
+  const dvec3 eye(0.0, 0.3, 5.0);
+  for (const dvec3 q : {dvec3(0.8, -0.4, 0.1), dvec3(1.5, 0.7, -0.2), dvec3(0.0, 0.3, 0.0)}) {
+    const glm::vec3 seen = plate_displace(plate, glm::vec3(eye), glm::vec3(q));
+    // Exact: the eye ray through `seen` refracted once at the near face z = 0.25 reaches q.
+    dvec3 d = glm::normalize(dvec3(seen) - eye);
+    const dvec3 p = eye + (0.25 - eye.z) / d.z * d;
+    ASSERT_TRUE(refract_exact(d, dvec3(0, 0, 1), 1.0 / 1.5, d));
+    EXPECT_LT(distance_to_line(q, p, d), kTolerance) << q.x << " " << q.y << " " << q.z;
+  }
+}
+
 TEST(GlassDisplacement, PlateLeavesVerticesInFrontUnchanged) {
   GlassPlate plate;
   plate.centre = glm::vec3(0.0f, 0.0f, 0.0f);
   plate.normal = glm::vec3(0.0f, 0.0f, 1.0f);
   plate.thickness = 0.5f;
   const glm::vec3 eye(0.0f, 0.0f, 5.0f);
-  for (const glm::vec3 v : {glm::vec3(0.3f, 0.1f, 1.0f), glm::vec3(0.3f, 0.1f, 0.0f)}) {
+  for (const glm::vec3 v : {glm::vec3(0.3f, 0.1f, 1.0f), glm::vec3(0.3f, 0.1f, 0.25f)}) {
     const glm::vec3 seen = plate_displace(plate, eye, v);
     EXPECT_EQ(seen, v);
   }

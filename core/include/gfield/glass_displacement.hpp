@@ -32,7 +32,8 @@ struct GlassPlate {
 float plate_incidence_sine(float x, float y, float thickness, float ior);
 
 /// Where `vertex` is seen from `eye` through `plate` (equations 5, 4 and 2 in the plate's frame,
-/// rotated there and back). Vertices not behind the far face come back unchanged.
+/// rotated there and back). A vertex inside the plate is seen through the near face alone (the
+/// same equations with the glass ending at the vertex); vertices in front come back unchanged.
 glm::vec3 plate_displace(const GlassPlate& plate, glm::vec3 eye, glm::vec3 vertex);
 
 /// A hollow glass cylinder in its object space: axis Y through the origin, walls between the

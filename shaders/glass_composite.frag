@@ -1,0 +1,241 @@
+#version 450
+// The glass method's final pass (Mukai et al. 2013, Figure 8): each pixel takes its colour from
+// the scene image of its refraction class, the class read from the depth-peeled glass layers.
+// On top, what the paper leaves for future work: the Fresnel transmittance of the interfaces the
+// pixel's light crosses and the Fresnel reflection at the glass (the reflected ray meets the
+// scene's opaque analytic shapes or the environment), and the environment seen through the glass
+// (its direction by an exact per-pixel trace of the glass, which has no vertices).
+#include "lib/shapes.glsl"
+#include "lib/optics.glsl"
+#include "lib/scene_environment.glsl"
+#include "lib/glass_shading.glsl"
+
+#define GLASS_LAYERS 4
+#define GLASS_CLASSES 8
+
+layout(binding = 0) uniform sampler2D u_layer0;  // peeled layers: x code (-1: none), y depth
+layout(binding = 1) uniform sampler2D u_layer1;
+layout(binding = 2) uniform sampler2D u_layer2;
+layout(binding = 3) uniform sampler2D u_layer3;
+layout(binding = 4) uniform sampler2DArray u_class_images;  // rgb radiance, a depth (2: none)
+
+uniform int u_layer_of_class[GLASS_CLASSES];  // class -> layer of u_class_images (-1: not drawn)
+uniform int u_glass_shape;        // SHAPE_SLAB or SHAPE_HOLLOW_CYLINDER
+uniform vec4 u_glass_params;      // radius, height, thickness
+uniform vec3 u_glass_size;
+uniform mat4 u_glass_to_object;
+uniform mat4 u_glass_to_world;
+uniform float u_ior;
+uniform vec3 u_absorption;
+uniform bool u_fresnel;
+uniform float u_epsilon;          // ray offset (scene units)
+
+uniform vec3 u_camera_position;
+uniform vec3 u_camera_forward;
+uniform vec3 u_camera_right;
+uniform vec3 u_camera_up;
+uniform vec2 u_tan_half;
+uniform vec2 u_image_size;
+uniform vec2 u_jitter;
+
+// Opaque analytic shapes, for the reflected rays.
+struct GlassOpaque {
+  mat4 to_object;
+  mat4 to_world;
+  vec4 shape;     // radius, height, thickness
+  vec4 size;
+  vec4 color;
+  vec4 checker0;
+  vec4 checker1;
+  ivec4 kind;     // shape type, texture type
+};
+layout(std430, binding = 0) readonly buffer Opaque { GlassOpaque opaque[]; };
+uniform int u_opaque_count;
+
+layout(location = 0) out vec4 o_color;
+
+vec3 camera_direction() {
+  vec2 pixel = vec2(gl_FragCoord.x, u_image_size.y - gl_FragCoord.y) + u_jitter;
+  float sx = (2.0f * pixel.x / u_image_size.x - 1.0f) * u_tan_half.x;
+  float sy = (1.0f - 2.0f * pixel.y / u_image_size.y) * u_tan_half.y;
+  return normalize(u_camera_forward + sx * u_camera_right + sy * u_camera_up);
+}
+
+// The refraction class of a pattern of peeled surface codes (glass.cpp's glass_class), -1 for a
+// pattern the displacement does not model.
+int glass_class(int codes[GLASS_LAYERS], int count) {
+  if (count == 0) return 0;
+  if (u_glass_shape == SHAPE_SLAB) {
+    // In through one face, out through the opposite one: the plate of that pair of faces.
+    if (count == 2 && codes[0] % 2 == 0 && codes[1] == codes[0] + 1) return 1 + codes[0] / 2;
+    return -1;
+  }
+  // Hollow cylinder: 0/1 outer entered/left, 2/3 inner (glass entered from the interior / left).
+  if (count == 4 && codes[0] == 0 && codes[1] == 3 && codes[2] == 2 && codes[3] == 1) return 4;
+  if (count == 2 && codes[0] == 0 && codes[1] == 1) return 5;
+  if (count == 2 && codes[0] == 0 && codes[1] == 3) return 6;
+  if (count == 2 && codes[0] == 2 && codes[1] == 1) return 7;
+  return -1;
+}
+
+// The nearest opaque analytic shape along o + t d, t in (epsilon, t_max): its index (-1: none),
+// and its t, normal and texture coordinates in `hit`.
+int nearest_opaque(vec3 o, vec3 d, float t_max, out ShapeHit hit) {
+  int hit_object = -1;
+  hit.hit = false;
+  hit.t = t_max;
+  hit.normal = vec3(0.0f);
+  hit.uv = vec2(0.0f);
+  for (int k = 0; k < u_opaque_count; k++) {
+    vec3 lo = (opaque[k].to_object * vec4(o, 1.0f)).xyz;
+    vec3 ld = (opaque[k].to_object * vec4(d, 0.0f)).xyz;
+    ShapeHit h = intersect_shape(opaque[k].kind.x, opaque[k].shape, opaque[k].size.xyz, lo, ld,
+                                 u_epsilon, hit.t);
+    if (h.hit && h.t < hit.t) {
+      hit = h;
+      hit_object = k;
+    }
+  }
+  return hit_object;
+}
+
+// Diffuse radiance of opaque shape k hit at t along o + t d.
+vec3 shade_opaque(int k, ShapeHit hit, vec3 o, vec3 d) {
+  vec3 p = o + hit.t * d;
+  vec3 n = normalize(transpose(mat3(opaque[k].to_object)) * hit.normal);
+  vec3 albedo = glass_albedo(opaque[k].kind.y, opaque[k].color.rgb, opaque[k].checker0,
+                             opaque[k].checker1, hit.uv);
+  return glass_shade(albedo, p, n, n, d);
+}
+
+// Radiance arriving along a ray that starts at a glass surface (`inside`: in the glass): the
+// ray followed through the glass (refracted, totally reflected, Fresnel-weighted) until it
+// leaves, then the opaque analytic shapes or the environment. Black after GLASS_MAX_EVENTS
+// events, as the reference tracer's depth limit.
+#define GLASS_MAX_EVENTS 10
+vec3 glass_exit_radiance(vec3 o, vec3 d, bool inside) {
+  vec3 weight = vec3(1.0f);
+  for (int event = 0; event < GLASS_MAX_EVENTS; event++) {
+    vec3 lo = (u_glass_to_object * vec4(o, 1.0f)).xyz;
+    vec3 ld = (u_glass_to_object * vec4(d, 0.0f)).xyz;
+    ShapeHit h = intersect_shape(u_glass_shape, u_glass_params, u_glass_size, lo, ld, u_epsilon,
+                                 3.0e38f);
+    ShapeHit opaque_hit;
+    int k = nearest_opaque(o, d, h.hit ? h.t : 3.0e38f, opaque_hit);
+    if (k >= 0) {
+      if (inside) weight *= exp(-u_absorption * opaque_hit.t);
+      return weight * shade_opaque(k, opaque_hit, o, d);
+    }
+    if (!h.hit) return inside ? vec3(0.0f) : weight * environment_radiance(d);
+    vec3 p = o + h.t * d;
+    if (inside) weight *= exp(-u_absorption * h.t);
+    vec3 n = normalize(transpose(mat3(u_glass_to_object)) * h.normal);
+    bool front = dot(d, n) < 0.0f;
+    vec3 m = front ? n : -n;
+    float n1 = front ? 1.0f : u_ior;
+    float n2 = front ? u_ior : 1.0f;
+    vec3 t = refract(d, m, n1 / n2);
+    if (dot(t, t) == 0.0f) {
+      d = reflect(d, m);
+    } else {
+      weight *= 1.0f - fresnel_dielectric(-dot(d, m), n1, n2);
+      d = normalize(t);
+      inside = !inside;
+    }
+    o = p;
+  }
+  return vec3(0.0f);
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 layers[GLASS_LAYERS];
+  layers[0] = texelFetch(u_layer0, pixel, 0);
+  layers[1] = texelFetch(u_layer1, pixel, 0);
+  layers[2] = texelFetch(u_layer2, pixel, 0);
+  layers[3] = texelFetch(u_layer3, pixel, 0);
+  int codes[GLASS_LAYERS];
+  int count = 0;
+  for (int k = 0; k < GLASS_LAYERS; k++) {
+    codes[k] = int(layers[k].x + 0.5f);
+    if (layers[k].x >= 0.0f && count == k) count++;
+  }
+  int cls = glass_class(codes, count);
+  // A pattern the displacement does not model (a slab's side faces, the cylinder's rims) is
+  // traced through the glass per pixel to the analytic shapes and the environment.
+  bool traced = cls < 0;
+  int layer = u_layer_of_class[max(cls, 0)];
+  if (layer < 0) layer = u_layer_of_class[0];
+  vec4 seen = texelFetch(u_class_images, ivec3(pixel, layer), 0);
+  bool object = !traced && seen.a <= 1.0f;
+  // Glass surfaces in front of what the class image shows.
+  int in_front = 0;
+  for (int k = 0; k < count; k++) {
+    if (!object || layers[k].y < seen.a) in_front++;
+  }
+
+  // The pixel's exact path through the glass for the Fresnel factors, absorption and the
+  // direction the light leaves in; at every refraction the reflected light is added.
+  vec3 o = u_camera_position;
+  vec3 d = camera_direction();
+  vec3 transmittance = vec3(1.0f);
+  vec3 reflections = vec3(0.0f);
+  int refractions = 0;
+  bool inside = false;
+  vec3 ended = vec3(-1.0f);  // a traced path's radiance when it ended on an opaque shape
+  int event = 0;
+  for (; event < GLASS_MAX_EVENTS && (refractions < in_front || inside || traced); event++) {
+    vec3 lo = (u_glass_to_object * vec4(o, 1.0f)).xyz;
+    vec3 ld = (u_glass_to_object * vec4(d, 0.0f)).xyz;
+    ShapeHit h = intersect_shape(u_glass_shape, u_glass_params, u_glass_size, lo, ld, u_epsilon,
+                                 3.0e38f);
+    if (traced) {
+      // An opaque shape before the next glass surface ends the traced path.
+      ShapeHit opaque_hit;
+      int k = nearest_opaque(o, d, h.hit ? h.t : 3.0e38f, opaque_hit);
+      if (k >= 0) {
+        if (inside) transmittance *= exp(-u_absorption * opaque_hit.t);
+        ended = transmittance * shade_opaque(k, opaque_hit, o, d);
+        inside = false;
+        break;
+      }
+    }
+    if (!h.hit) break;
+    vec3 p = o + h.t * d;
+    if (inside) transmittance *= exp(-u_absorption * h.t);
+    vec3 n = normalize(transpose(mat3(u_glass_to_object)) * h.normal);
+    bool front = dot(d, n) < 0.0f;
+    vec3 m = front ? n : -n;
+    float n1 = front ? 1.0f : u_ior;
+    float n2 = front ? u_ior : 1.0f;
+    vec3 t = refract(d, m, n1 / n2);
+    if (dot(t, t) == 0.0f) {
+      d = reflect(d, m);  // total internal reflection
+    } else {
+      if (u_fresnel) {
+        float r = fresnel_dielectric(-dot(d, m), n1, n2);
+        reflections += transmittance * r * glass_exit_radiance(p, reflect(d, m), inside);
+        transmittance *= 1.0f - r;
+      }
+      d = normalize(t);
+      inside = !inside;
+      refractions++;
+    }
+    o = p;
+  }
+
+  vec3 radiance;
+  if (object) {
+    radiance = seen.rgb * transmittance;
+  } else if (ended.r >= 0.0f) {
+    radiance = ended;
+  } else if (inside || event == GLASS_MAX_EVENTS) {
+    radiance = vec3(0.0f);  // still in the glass at the depth limit
+  } else {
+    // Nothing drawn (or a traced path that met no opaque shape): the environment in the
+    // direction the light leaves the glass.
+    radiance = transmittance * environment_radiance(d);
+  }
+  radiance += reflections;
+  o_color = vec4(radiance, 1.0f);
+}

@@ -1,0 +1,27 @@
+#version 450
+// The glass method's scene pass: diffuse shading at the undisplaced point, colour + depth out.
+#include "lib/glass_shading.glsl"
+
+layout(location = 0) in vec3 v_world;
+layout(location = 1) in vec3 v_normal;
+layout(location = 2) in vec2 v_uv;
+layout(location = 3) in float v_valid;
+
+uniform vec3 u_eye;
+uniform bool u_smooth;        // interpolated normals (else the face's)
+uniform int u_texture;        // GLASS_TEXTURE_*
+uniform vec3 u_color;
+uniform vec4 u_checker0;      // rgb, squares along u
+uniform vec4 u_checker1;      // rgb, squares along v
+
+layout(location = 0) out vec4 o_color;  // rgb radiance, a = window depth of the drawn point
+
+void main() {
+  // A triangle with a vertex no path of this class reaches is dropped rather than smeared.
+  if (v_valid < 0.999f) discard;
+  vec3 g = normalize(cross(dFdx(v_world), dFdy(v_world)));
+  vec3 n = u_smooth ? normalize(v_normal) : g;
+  if (dot(g, n) < 0.0f) g = -g;
+  vec3 albedo = glass_albedo(u_texture, u_color, u_checker0, u_checker1, v_uv);
+  o_color = vec4(glass_shade(albedo, v_world, n, g, v_world - u_eye), gl_FragCoord.z);
+}

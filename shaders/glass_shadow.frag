@@ -1,0 +1,3 @@
+#version 450
+// Depth only.
+void main() {}
