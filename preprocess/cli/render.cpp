@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 
 #include "gfield/image.hpp"
@@ -111,7 +112,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "output image (.exr linear float, .png sRGB)")
       ->required();
   cmd->add_option("--spp", args->spp, "samples per pixel (stratified)")
-      ->check(CLI::Range(1, 1 << 20))
+      ->check(CLI::Range(1, std::numeric_limits<int>::max()))
       ->capture_default_str();
   cmd->add_option("--depth", args->depth, "reflections/refractions per path")
       ->check(CLI::Range(0, 1000))
