@@ -285,7 +285,7 @@ TEST(Environment, EquirectImageLookupReturnsPixelValues) {
     for (int x = 0; x < 8; ++x)
       image.at(x, y) = glm::vec3(float(x), float(y), 1.0f);
   }
-  const std::string file = scene_path("env.exr");
+  const std::string file = scene_path("scene_test_env.exr");
   std::string error;
   ASSERT_TRUE(save_image(file, image, error)) << error;
   EnvironmentDesc desc;
@@ -310,7 +310,7 @@ TEST(Environment, CubeFacesInOpenGlOrder) {
   desc.type = EnvironmentType::kCube;
   std::string error;
   for (size_t f = 0; f < 6; ++f) {
-    desc.faces[f] = scene_path("face" + std::to_string(f) + ".exr");
+    desc.faces[f] = scene_path("scene_test_face" + std::to_string(f) + ".exr");
     ASSERT_TRUE(save_image(desc.faces[f], Image(4, 4, glm::vec3(float(f))), error)) << error;
   }
   Environment env;
@@ -322,12 +322,12 @@ TEST(Environment, CubeFacesInOpenGlOrder) {
   // Faces of different sizes are refused, naming the file.
   ASSERT_TRUE(save_image(desc.faces[3], Image(8, 8), error));
   EXPECT_FALSE(load_environment(desc, env, error));
-  EXPECT_NE(error.find("face3.exr"), std::string::npos) << error;
+  EXPECT_NE(error.find("scene_test_face3.exr"), std::string::npos) << error;
 }
 
 TEST(ImageIo, ReadsRadianceHdr) {
   const float pixels[2 * 1 * 3] = {0.5f, 2.0f, 8.0f, 0.125f, 0.25f, 1.0f};
-  const std::string file = scene_path("tiny.hdr");
+  const std::string file = scene_path("scene_test_tiny.hdr");
   ASSERT_NE(stbi_write_hdr(file.c_str(), 2, 1, 3, pixels), 0);
   Image image;
   std::string error;
@@ -356,20 +356,20 @@ TEST(ImageIo, RoundTripsExrExactlyAndPngWithinQuantisation) {
   }
   std::string error;
   Image back;
-  ASSERT_TRUE(save_image(scene_path("rt.exr"), image, error)) << error;
-  ASSERT_TRUE(load_image(scene_path("rt.exr"), back, error)) << error;
+  ASSERT_TRUE(save_image(scene_path("scene_test_rt.exr"), image, error)) << error;
+  ASSERT_TRUE(load_image(scene_path("scene_test_rt.exr"), back, error)) << error;
   ASSERT_EQ(back.width, 5);
   ASSERT_EQ(back.height, 3);
   EXPECT_EQ(back.pixels, image.pixels);
-  ASSERT_TRUE(save_image(scene_path("rt.png"), image, error)) << error;
-  ASSERT_TRUE(load_image(scene_path("rt.png"), back, error)) << error;
+  ASSERT_TRUE(save_image(scene_path("scene_test_rt.png"), image, error)) << error;
+  ASSERT_TRUE(load_image(scene_path("scene_test_rt.png"), back, error)) << error;
   for (size_t i = 0; i < image.pixels.size(); ++i) {
     for (int c = 0; c < 3; ++c) {
       EXPECT_NEAR(linear_to_srgb(back.pixels[i][c]), linear_to_srgb(image.pixels[i][c]),
                   0.5f / 255.0f + 1e-5f);
     }
   }
-  EXPECT_FALSE(save_image(scene_path("rt.bmp"), image, error));
+  EXPECT_FALSE(save_image(scene_path("scene_test_rt.bmp"), image, error));
   EXPECT_FALSE(load_image(scene_path("missing.exr"), back, error));
   EXPECT_NE(error.find("missing.exr"), std::string::npos);
 }

@@ -375,13 +375,13 @@ TEST(ReferenceTracer, EveryExampleSceneRenders) {
 
 TEST(RenderCli, RendersComparesAndRefusesBadInput) {
   const std::string dir = GFIELD_TEST_TMP;
-  const std::string scene_file = dir + "/cli_scene.json";
+  const std::string scene_file = dir + "/tracer_cli_scene.json";
   std::ofstream(scene_file) << R"({"purpose": "cli test",
   "camera": {"position": [0, 0, 4], "target": [0, 0, 0]},
   "image": {"width": 16, "height": 12},
   "objects": [{"shape": "sphere", "material": {"type": "dielectric", "ior": "glass"}}]}
 )";
-  const std::string out = dir + "/cli_render.exr";
+  const std::string out = dir + "/tracer_cli_render.exr";
   fs::remove(out);
   auto run = test::run_cli("render " + scene_file + " -o " + out + " --spp 2 --depth 4");
   EXPECT_EQ(run.exit_code, 0) << run.err;
@@ -390,28 +390,29 @@ TEST(RenderCli, RendersComparesAndRefusesBadInput) {
   ASSERT_TRUE(load_image(out, image, error)) << error;
   EXPECT_EQ(image.width, 16);
   EXPECT_EQ(image.height, 12);
-  run = test::run_cli("render " + scene_file + " -o " + dir + "/cli_render.png --size 20x10 -q");
+  run = test::run_cli("render " + scene_file + " -o " + dir +
+                      "/tracer_cli_render.png --size 20x10 -q");
   EXPECT_EQ(run.exit_code, 0) << run.err;
   run = test::run_cli("compare " + out + " " + out + " --json");
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("\"psnr_db\": \"inf\""), std::string::npos) << run.out;
   // Bad scene: one line with file:line:column, exit 2, no output file.
-  const std::string bad = dir + "/cli_bad.json";
+  const std::string bad = dir + "/tracer_cli_bad.json";
   std::ofstream(bad)
       << "{\"camera\": {\"position\": [0, 0, 4], \"target\": [0, 0, 0]},\n"
          "\"objects\": [{\"shape\": \"sphere\", \"material\": {\"type\": \"glas\"}}]}\n";
-  fs::remove(dir + "/cli_bad.exr");
-  run = test::run_cli("render " + bad + " -o " + dir + "/cli_bad.exr");
+  fs::remove(dir + "/tracer_cli_bad.exr");
+  run = test::run_cli("render " + bad + " -o " + dir + "/tracer_cli_bad.exr");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find(bad + ":2:54:"), std::string::npos) << run.err;
-  EXPECT_FALSE(fs::exists(dir + "/cli_bad.exr"));
+  EXPECT_FALSE(fs::exists(dir + "/tracer_cli_bad.exr"));
   // Huge requests are refused with an estimate.
   run = test::run_cli("render " + scene_file + " -o " + out + " --spp 100000 --size 8192x8192");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("refusing"), std::string::npos) << run.err;
   run = test::run_cli("render " + scene_file + " -o " + out + " --dielectric sometimes");
   EXPECT_EQ(run.exit_code, 2);
-  run = test::run_cli("compare " + out + " " + dir + "/cli_render.png");
+  run = test::run_cli("compare " + out + " " + dir + "/tracer_cli_render.png");
   EXPECT_EQ(run.exit_code, 2);  // sizes differ
 }
 
