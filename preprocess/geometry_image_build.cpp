@@ -447,6 +447,7 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
     double surface_total = 0.0, uv_total = 0.0;
     const TriangleMesh& pm = parameterized.mesh;
     std::vector<double> surface_area(pm.triangles.size()), uv_area(pm.triangles.size());
+    std::vector<double> sigma_ratio(pm.triangles.size(), -1.0);
     for (size_t f = 0; f < pm.triangles.size(); ++f) {
       const glm::ivec3& t = pm.triangles[f];
       const glm::dvec3 e1 = pm.positions[t[1]] - pm.positions[t[0]];
@@ -468,15 +469,19 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
       const double a = j[0][0], b = j[1][0], c = j[0][1], d = j[1][1];
       const double s1 = std::hypot(a + d, c - b) / 2.0, s2 = std::hypot(a - d, c + b) / 2.0;
       const double sigma1 = s1 + s2, sigma2 = std::abs(s1 - s2);
-      conformal.push_back({sigma2 > 0.0 ? sigma1 / sigma2 : 1e30, surface_area[f]});
+      sigma_ratio[f] = sigma2 > 0.0 ? sigma1 / sigma2 : 1e30;
     }
+    // Degenerate uv faces (counted apart) are left out of the conformal distortion.
+    for (size_t f = 0; f < pm.triangles.size(); ++f)
+      if (sigma_ratio[f] >= 1.0 && uv_area[f] > 1e-12 * uv_total)
+        conformal.push_back({sigma_ratio[f], surface_area[f]});
     for (size_t f = 0; f < pm.triangles.size(); ++f)
       if (surface_area[f] > 0.0 && uv_total > 0.0)
         area_ratio.push_back(
             {(uv_area[f] / uv_total) / (surface_area[f] / surface_total), surface_area[f]});
     double weighted = 0.0, weight = 0.0;
     for (const auto& [value, w] : conformal) {
-      weighted += std::min(value, 1e6) * w;
+      weighted += value * w;
       weight += w;
     }
     report.conformal_mean = weight > 0.0 ? weighted / weight : 0.0;
