@@ -28,6 +28,7 @@ uniform mat4 u_glass_to_world;
 uniform float u_ior;
 uniform vec3 u_absorption;
 uniform bool u_fresnel;
+uniform bool u_trace_verge;     // the cylinder's verge traced per pixel instead of displaced
 uniform float u_epsilon;          // ray offset (scene units)
 
 uniform vec3 u_camera_position;
@@ -72,7 +73,7 @@ int glass_class(int codes[GLASS_LAYERS], int count) {
   }
   // Hollow cylinder: 0/1 outer entered/left, 2/3 inner (glass entered from the interior / left).
   if (count == 4 && codes[0] == 0 && codes[1] == 3 && codes[2] == 2 && codes[3] == 1) return 4;
-  if (count == 2 && codes[0] == 0 && codes[1] == 1) return 5;
+  if (count == 2 && codes[0] == 0 && codes[1] == 1) return u_trace_verge ? -1 : 5;
   if (count == 2 && codes[0] == 0 && codes[1] == 3) return 6;
   if (count == 2 && codes[0] == 2 && codes[1] == 1) return 7;
   return -1;

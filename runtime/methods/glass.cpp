@@ -253,7 +253,7 @@ GlassSoup glass_triangles(const SceneObject& object) {
 
 /// The class of a sequence of peeled surface codes (shaders/glass_composite.frag's glass_class),
 /// -1 for a pattern the displacement does not model (traced per pixel there).
-int glass_class(ShapeType shape, const std::vector<int>& codes) {
+int glass_class(ShapeType shape, const std::vector<int>& codes, bool trace_verge) {
   const size_t count = std::min<size_t>(codes.size(), 4);
   if (count == 0)
     return 0;
@@ -265,7 +265,7 @@ int glass_class(ShapeType shape, const std::vector<int>& codes) {
   if (count == 4 && codes[0] == 0 && codes[1] == 3 && codes[2] == 2 && codes[3] == 1)
     return 4;
   if (count == 2 && codes[0] == 0 && codes[1] == 1)
-    return 5;
+    return trace_verge ? -1 : 5;
   if (count == 2 && codes[0] == 0 && codes[1] == 3)
     return 6;
   if (count == 2 && codes[0] == 2 && codes[1] == 1)
@@ -618,7 +618,8 @@ bool GlassRenderer::ensure_targets(int width, int height, int class_layers) {
   return complete;
 }
 
-std::vector<int> GlassRenderer::classes_present(const Camera& camera, float aspect) const {
+std::vector<int> GlassRenderer::classes_present(const Camera& camera, float aspect,
+                                                bool trace_verge) const {
   // The straight eye lines of a grid of pixels against the exact glass: the same codes as the
   // peeling, hence the classes the frame needs.
   const SceneObject& glass = scene_.objects[size_t(glass_object_)];
@@ -651,7 +652,7 @@ std::vector<int> GlassRenderer::classes_present(const Camera& camera, float aspe
         codes.push_back(2 * surface + (glm::dot(d, hit.normal) < 0.0 ? 0 : 1));
         t_min = hit.t * (1.0 + 1e-9) + 1e-9;
       }
-      const int c = glass_class(glass.shape.type, codes);
+      const int c = glass_class(glass.shape.type, codes, trace_verge);
       if (c >= 0)
         classes.insert(c);
     }
@@ -664,7 +665,7 @@ void GlassRenderer::render(const Camera& camera, const GlassSettings& settings, 
   const auto start = std::chrono::steady_clock::now();
   const int width = target.width(), height = target.height();
   const float aspect = float(width) / float(height);
-  const std::vector<int> classes = classes_present(camera, aspect);
+  const std::vector<int> classes = classes_present(camera, aspect, settings.trace_verge);
   ensure_targets(width, height, int(classes.size()));
   const SceneObject& glass = scene_.objects[size_t(glass_object_)];
 
@@ -825,6 +826,7 @@ void GlassRenderer::render(const Camera& camera, const GlassSettings& settings, 
   glUniform1f(v("u_ior"), glass.material.ior);
   glUniform3fv(v("u_absorption"), 1, &glass.material.absorption.x);
   glUniform1i(v("u_fresnel"), settings.fresnel ? 1 : 0);
+  glUniform1i(v("u_trace_verge"), settings.trace_verge ? 1 : 0);
   glUniform1f(v("u_epsilon"), 1e-5f * extent_);
   glUniform1i(v("u_opaque_count"), opaque_count_);
   glUniform1i(v("u_env_type"), int(scene_.environment.type));

@@ -34,6 +34,11 @@ struct GlassSettings {
   float max_edge = 1.0f / 160.0f;
   int samples_per_pixel = 1;  ///< stratified grid at the strata centres, as Renderer
   bool fresnel = true;        ///< transmittance and reflection at the glass
+  /// The hollow cylinder's verge (the band between its inner and outer silhouettes) traced per
+  /// pixel to the analytic shapes and the environment instead of displaced: the verge's mapping
+  /// folds (each point there is seen twice) and compresses too much for linear interpolation
+  /// between vertices, but meshes are not seen on traced paths.
+  bool trace_verge = false;
   int shadow_map_size = 2048;
 };
 
@@ -94,7 +99,7 @@ class GlassRenderer {
   void release_targets();
   bool ensure_targets(int width, int height, int class_layers);
   void render_shadow_maps();
-  std::vector<int> classes_present(const Camera& camera, float aspect) const;
+  std::vector<int> classes_present(const Camera& camera, float aspect, bool trace_verge) const;
 
   Scene scene_;
   int glass_object_ = -1;
