@@ -388,11 +388,8 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
     raster[c].rect = rects[c];
     report.charts[c].rect = rects[c];
   }
-  const std::vector<glm::dvec3> normals = vertex_normals(repaired.mesh);
-  std::vector<glm::vec2> face_uv;
-  rasterize_charts(repaired.mesh, normals, raster, options.size, image, face_uv);
-
-  // The parameterised mesh: kept faces, compact vertices, image uv per corner.
+  // The parameterised mesh: kept faces, compact vertices (image uvs per corner below), and the
+  // box of the image: the padded bounds of its vertices.
   parameterized = {};
   std::vector<int> compact(repaired.mesh.positions.size(), -1);
   for (const Component& c : components)
@@ -406,13 +403,20 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
               repaired.mesh.positions[repaired.mesh.triangles[f][k]]);
         }
         t[k] = v;
-        parameterized.corner_uv.push_back(face_uv[3 * size_t(f) + k]);
       }
       parameterized.mesh.triangles.push_back(t);
     }
   std::vector<glm::vec3> box_points(parameterized.mesh.positions.begin(),
                                     parameterized.mesh.positions.end());
   image.box = padded_bounds(box_points.data(), box_points.size(), kBoxPadding);
+
+  const std::vector<glm::dvec3> normals = vertex_normals(repaired.mesh);
+  std::vector<glm::vec2> face_uv;
+  rasterize_charts(repaired.mesh, normals, raster, options.size, image.box, image, face_uv);
+  for (const Component& c : components)
+    for (int f : c.faces)
+      for (int k = 0; k < 3; ++k)
+        parameterized.corner_uv.push_back(face_uv[3 * size_t(f) + k]);
   size_t covered = 0;
   for (float a : image.coverage)
     covered += a > 0.0f;

@@ -60,8 +60,8 @@ std::vector<ChartTransform> orbifold_copies(glm::dvec2 lo, glm::dvec2 hi) {
 }
 
 void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
-                      const std::vector<RasterChart>& charts, int size, GeometryImage& image,
-                      std::vector<glm::vec2>& face_uv) {
+                      const std::vector<RasterChart>& charts, int size, const Box& box,
+                      GeometryImage& image, std::vector<glm::vec2>& face_uv) {
   const size_t texels = size_t(size) * size_t(size);
   image.size = size;
   image.position.assign(texels, glm::vec3(0.0f));
@@ -143,20 +143,57 @@ void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& n
     }
   }
 
-  // Dilation: every uncovered texel takes the values of the nearest covered texel (breadth-first
-  // over 4-neighbours, in texel order, so the result is deterministic).
+  // Padding. The first ring around the charts extrapolates the surface linearly (2 p1 - p2
+  // along each direction with two covered texels, averaged, clamped to the box), so a bilinear
+  // lookup between a chart's last texel centre and its edge follows the surface instead of
+  // stopping at the last texel; further texels take the values of the nearest ring texel
+  // (breadth-first over 4-neighbours, in texel order, so the result is deterministic).
+  const int di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};
+  auto covered = [&](int i, int j) {
+    return i >= 0 && j >= 0 && i < size && j < size &&
+           image.coverage[size_t(j) * size_t(size) + size_t(i)] > 0.0f;
+  };
   std::vector<char> filled(texels, 0);
   std::deque<size_t> queue;
   for (size_t texel = 0; texel < texels; ++texel)
-    if (image.coverage[texel] > 0.0f) {
-      filled[texel] = 1;
-      queue.push_back(texel);
+    filled[texel] = image.coverage[texel] > 0.0f;
+  for (size_t texel = 0; texel < texels; ++texel) {
+    if (filled[texel])
+      continue;
+    const int i = int(texel % size_t(size)), j = int(texel / size_t(size));
+    glm::vec3 position(0.0f), normal(0.0f);
+    int extrapolated = 0, nearest = -1;
+    for (int k = 0; k < 4; ++k) {
+      const int i1 = i - di[k], j1 = j - dj[k];
+      if (!covered(i1, j1))
+        continue;
+      const size_t t1 = size_t(j1) * size_t(size) + size_t(i1);
+      if (nearest < 0)
+        nearest = int(t1);
+      if (!covered(i1 - di[k], j1 - dj[k]))
+        continue;
+      const size_t t2 = size_t(j1 - dj[k]) * size_t(size) + size_t(i1 - di[k]);
+      position += 2.0f * image.position[t1] - image.position[t2];
+      normal += 2.0f * image.normal[t1] - image.normal[t2];
+      ++extrapolated;
     }
+    if (nearest < 0)
+      continue;
+    if (extrapolated > 0 && glm::length(normal) > 0.0f) {
+      image.position[texel] = glm::clamp(position / float(extrapolated), box.min, box.max);
+      image.normal[texel] = glm::normalize(normal);
+    } else {
+      image.position[texel] = image.position[nearest];
+      image.normal[texel] = image.normal[nearest];
+    }
+    queue.push_back(texel);
+  }
+  for (size_t texel : queue)
+    filled[texel] = 1;
   while (!queue.empty()) {
     const size_t texel = queue.front();
     queue.pop_front();
     const int i = int(texel % size_t(size)), j = int(texel / size_t(size));
-    const int di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};
     for (int k = 0; k < 4; ++k) {
       const int ni = i + di[k], nj = j + dj[k];
       if (ni < 0 || nj < 0 || ni >= size || nj >= size)

@@ -107,7 +107,7 @@ TEST_P(SharedMesh, RouteFlipsCoverageAndReconstructionAt256) {
   EXPECT_LT(r.image_to_mesh.p99, 1.5) << e.mesh;
   EXPECT_EQ(r.mesh_to_image.samples, 20000u);
   // The uv of every corner finds its face in the image.
-  EXPECT_LT(uv_contract_p95(b), 1.0) << e.mesh;  // measured 0.14 (spot) to 0.89 (suzanne)
+  EXPECT_LT(uv_contract_p95(b), 1.0) << e.mesh;  // measured 0.09 (spot) to 0.69 (suzanne)
 }
 
 INSTANTIATE_TEST_SUITE_P(GeometryImage, SharedMesh,
