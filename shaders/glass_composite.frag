@@ -4,7 +4,9 @@
 // On top, what the paper leaves for future work: the Fresnel transmittance of the interfaces the
 // pixel's light crosses and the Fresnel reflection at the glass (the reflected ray meets the
 // scene's opaque analytic shapes or the environment), and the environment seen through the glass
-// (its direction by an exact per-pixel trace of the glass, which has no vertices).
+// (its direction by an exact per-pixel trace of the glass, which has no vertices). Paths the
+// displacement does not model are traced per pixel: exactly against the analytic shapes, and
+// against the undisplaced scene image by a screen-space march for the meshes.
 #include "lib/shapes.glsl"
 #include "lib/optics.glsl"
 #include "lib/scene_environment.glsl"
@@ -30,6 +32,18 @@ uniform vec3 u_absorption;
 uniform bool u_fresnel;
 uniform bool u_trace_verge;     // the cylinder's verge traced per pixel instead of displaced
 uniform float u_epsilon;          // ray offset (scene units)
+uniform mat4 u_view_projection;   // of the class images (jitter included)
+uniform float u_near;             // their clip planes
+uniform float u_far;
+uniform float u_scene_extent;
+
+#define GLASS_MARCH_STEPS 48
+
+// View-space distance of a window depth of the class images' perspective projection.
+float linear_depth(float window_z) {
+  float z = 2.0f * window_z - 1.0f;
+  return 2.0f * u_near * u_far / (u_far + u_near - z * (u_far - u_near));
+}
 
 uniform vec3 u_camera_position;
 uniform vec3 u_camera_forward;
@@ -79,6 +93,81 @@ int glass_class(int codes[GLASS_LAYERS], int count) {
   return -1;
 }
 
+// The surface of the glass at object-space point p with outward normal n: slab face
+// 2 * axis + (1 on the + side) (axis 0 X, 1 Y, 2 Z); hollow cylinder 0 outer, 1 inner, 2 rims.
+int glass_surface(vec3 p, vec3 n) {
+  if (u_glass_shape == SHAPE_SLAB) {
+    vec3 a = abs(n);
+    int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+    return 2 * axis + (n[axis] > 0.0f ? 1 : 0);
+  }
+  if (abs(n.y) > 0.5f) return 2;
+  float r = length(vec2(p.x, p.z));
+  float inner = u_glass_params.x - u_glass_params.z;
+  return abs(r - inner) < abs(r - u_glass_params.x) ? 1 : 0;
+}
+
+// True when the pixel's exact path (eye ray o + t d) crosses the interfaces that class `cls`
+// assumes, up to its `in_front`-th refraction: otherwise the straight line's class is wrong
+// there (e.g. light inside a plate totally reflected off a side face) and the pixel is traced.
+bool path_matches(int cls, int in_front, vec3 o, vec3 d) {
+  if (cls <= 0 || in_front == 0) return true;
+  int events[6];
+  int event_count = 0;
+  int refractions = 0;
+  bool inside = false;
+  for (int k = 0; k < 6 && refractions < in_front; k++) {
+    vec3 lo = (u_glass_to_object * vec4(o, 1.0f)).xyz;
+    vec3 ld = (u_glass_to_object * vec4(d, 0.0f)).xyz;
+    ShapeHit h = intersect_shape(u_glass_shape, u_glass_params, u_glass_size, lo, ld, u_epsilon,
+                                 3.0e38f);
+    if (!h.hit) return false;
+    vec3 p = o + h.t * d;
+    vec3 n = normalize(transpose(mat3(u_glass_to_object)) * h.normal);
+    bool front = dot(d, n) < 0.0f;
+    vec3 m = front ? n : -n;
+    vec3 t = refract(d, m, front ? 1.0f / u_ior : u_ior);
+    bool total = dot(t, t) == 0.0f;
+    events[event_count] = 2 * glass_surface(lo + h.t * ld, h.normal) + (total ? 1 : 0);
+    event_count++;
+    if (total) {
+      d = reflect(d, m);
+    } else {
+      d = normalize(t);
+      inside = !inside;
+      refractions++;
+    }
+    o = p;
+  }
+  if (refractions < in_front) return false;
+  if (u_glass_shape == SHAPE_SLAB) {
+    // In through a face of the class's pair, out through the opposite face, no reflection.
+    int axis = cls == 1 ? 2 : (cls == 2 ? 0 : 1);
+    if (events[0] % 2 == 1 || events[0] / 4 != axis) return false;
+    return event_count == 1 || (event_count == 2 && events[1] == (events[0] ^ 2));
+  }
+  int expected[4];
+  int expected_count;
+  if (cls == 4) {
+    expected = int[4](0, 2, 2, 0);
+    expected_count = 4;
+  } else if (cls == 5) {
+    expected = int[4](0, 3, 0, 0);
+    expected_count = 3;
+  } else if (cls == 6) {
+    expected = int[4](0, 2, 0, 0);
+    expected_count = 2;
+  } else {
+    expected = int[4](2, 0, 0, 0);
+    expected_count = 2;
+  }
+  if (event_count > expected_count) return false;
+  for (int k = 0; k < event_count; k++) {
+    if (events[k] != expected[k]) return false;
+  }
+  return true;
+}
+
 // The nearest opaque analytic shape along o + t d, t in (epsilon, t_max): its index (-1: none),
 // and its t, normal and texture coordinates in `hit`.
 int nearest_opaque(vec3 o, vec3 d, float t_max, out ShapeHit hit) {
@@ -109,6 +198,72 @@ vec3 shade_opaque(int k, ShapeHit hit, vec3 o, vec3 d) {
   return glass_shade(albedo, p, n, n, d);
 }
 
+// The first surface of the undisplaced scene image (class 0: meshes included) along o + t d,
+// t in (0, t_max), by marching its depth in screen space (points the camera does not see are
+// not found): true with t and the colour there.
+bool screen_march(vec3 o, vec3 d, float t_max, out float t_hit, out vec3 color) {
+  t_hit = t_max;
+  color = vec3(0.0f);
+  int layer = u_layer_of_class[0];
+  float t_end = min(t_max, 2.0f * u_scene_extent);
+  float dt = t_end / float(GLASS_MARCH_STEPS);
+  float previous_t = 0.0f;
+  for (int k = 1; k <= GLASS_MARCH_STEPS; k++) {
+    float t = dt * float(k);
+    vec4 clip = u_view_projection * vec4(o + t * d, 1.0f);
+    if (clip.w <= 0.0f) return false;
+    vec3 ndc = clip.xyz / clip.w;
+    if (any(greaterThan(abs(ndc.xy), vec2(1.0f)))) return false;
+    ivec2 texel = ivec2((0.5f * ndc.xy + 0.5f) * u_image_size);
+    vec4 stored = texelFetch(u_class_images, ivec3(texel, layer), 0);
+    if (stored.a <= 1.0f) {
+      float behind = linear_depth(0.5f * ndc.z + 0.5f) - linear_depth(stored.a);
+      if (behind >= 0.0f && behind < 2.0f * dt + 0.01f * u_scene_extent) {
+        // Bisection between the last point in front and this one.
+        float lo = previous_t;
+        float hi = t;
+        for (int b = 0; b < 6; b++) {
+          float mid = 0.5f * (lo + hi);
+          vec4 c = u_view_projection * vec4(o + mid * d, 1.0f);
+          vec3 n = c.xyz / c.w;
+          vec4 s = texelFetch(u_class_images,
+                              ivec3(ivec2((0.5f * n.xy + 0.5f) * u_image_size), layer), 0);
+          if (s.a <= 1.0f && linear_depth(0.5f * n.z + 0.5f) >= linear_depth(s.a)) {
+            hi = mid;
+          } else {
+            lo = mid;
+          }
+        }
+        vec4 c = u_view_projection * vec4(o + hi * d, 1.0f);
+        vec3 n = c.xyz / c.w;
+        color = texelFetch(u_class_images,
+                           ivec3(ivec2((0.5f * n.xy + 0.5f) * u_image_size), layer), 0).rgb;
+        t_hit = hi;
+        return true;
+      }
+    }
+    previous_t = t;
+  }
+  return false;
+}
+
+// What a traced ray meets before t_max: the nearest opaque analytic shape (exact) or, outside
+// the glass, a point of the scene image found by screen_march (meshes). True with its radiance.
+bool scene_hit(vec3 o, vec3 d, float t_max, bool inside, out float t_hit, out vec3 radiance) {
+  ShapeHit opaque_hit;
+  int k = nearest_opaque(o, d, t_max, opaque_hit);
+  t_hit = k >= 0 ? opaque_hit.t : t_max;
+  radiance = k >= 0 ? shade_opaque(k, opaque_hit, o, d) : vec3(0.0f);
+  float t_screen;
+  vec3 screen_color;
+  if (!inside && screen_march(o, d, t_hit, t_screen, screen_color)) {
+    t_hit = t_screen;
+    radiance = screen_color;
+    return true;
+  }
+  return k >= 0;
+}
+
 // Radiance arriving along a ray that starts at a glass surface (`inside`: in the glass): the
 // ray followed through the glass (refracted, totally reflected, Fresnel-weighted) until it
 // leaves, then the opaque analytic shapes or the environment. Black after GLASS_MAX_EVENTS
@@ -121,11 +276,11 @@ vec3 glass_exit_radiance(vec3 o, vec3 d, bool inside) {
     vec3 ld = (u_glass_to_object * vec4(d, 0.0f)).xyz;
     ShapeHit h = intersect_shape(u_glass_shape, u_glass_params, u_glass_size, lo, ld, u_epsilon,
                                  3.0e38f);
-    ShapeHit opaque_hit;
-    int k = nearest_opaque(o, d, h.hit ? h.t : 3.0e38f, opaque_hit);
-    if (k >= 0) {
-      if (inside) weight *= exp(-u_absorption * opaque_hit.t);
-      return weight * shade_opaque(k, opaque_hit, o, d);
+    float t_hit;
+    vec3 hit_radiance;
+    if (scene_hit(o, d, h.hit ? h.t : 3.0e38f, inside, t_hit, hit_radiance)) {
+      if (inside) weight *= exp(-u_absorption * t_hit);
+      return weight * hit_radiance;
     }
     if (!h.hit) return inside ? vec3(0.0f) : weight * environment_radiance(d);
     vec3 p = o + h.t * d;
@@ -162,18 +317,20 @@ void main() {
     if (layers[k].x >= 0.0f && count == k) count++;
   }
   int cls = glass_class(codes, count);
-  // A pattern the displacement does not model (a slab's side faces, the cylinder's rims) is
-  // traced through the glass per pixel to the analytic shapes and the environment.
-  bool traced = cls < 0;
   int layer = u_layer_of_class[max(cls, 0)];
   if (layer < 0) layer = u_layer_of_class[0];
   vec4 seen = texelFetch(u_class_images, ivec3(pixel, layer), 0);
-  bool object = !traced && seen.a <= 1.0f;
   // Glass surfaces in front of what the class image shows.
   int in_front = 0;
   for (int k = 0; k < count; k++) {
-    if (!object || layers[k].y < seen.a) in_front++;
+    if (seen.a > 1.0f || layers[k].y < seen.a) in_front++;
   }
+  // A pattern the displacement does not model (a slab's side faces, the cylinder's rims), or a
+  // pixel whose light does not take its class's path, is traced through the glass per pixel to
+  // the analytic shapes and the environment.
+  bool traced = cls < 0 || !path_matches(cls, in_front, u_camera_position, camera_direction());
+  bool object = !traced && seen.a <= 1.0f;
+  if (traced) in_front = count;
 
   // The pixel's exact path through the glass for the Fresnel factors, absorption and the
   // direction the light leaves in; at every refraction the reflected light is added.
@@ -192,11 +349,11 @@ void main() {
                                  3.0e38f);
     if (traced) {
       // An opaque shape before the next glass surface ends the traced path.
-      ShapeHit opaque_hit;
-      int k = nearest_opaque(o, d, h.hit ? h.t : 3.0e38f, opaque_hit);
-      if (k >= 0) {
-        if (inside) transmittance *= exp(-u_absorption * opaque_hit.t);
-        ended = transmittance * shade_opaque(k, opaque_hit, o, d);
+      float t_hit;
+      vec3 hit_radiance;
+      if (scene_hit(o, d, h.hit ? h.t : 3.0e38f, inside, t_hit, hit_radiance)) {
+        if (inside) transmittance *= exp(-u_absorption * t_hit);
+        ended = transmittance * hit_radiance;
         inside = false;
         break;
       }

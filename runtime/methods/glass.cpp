@@ -828,6 +828,10 @@ void GlassRenderer::render(const Camera& camera, const GlassSettings& settings, 
   glUniform1i(v("u_fresnel"), settings.fresnel ? 1 : 0);
   glUniform1i(v("u_trace_verge"), settings.trace_verge ? 1 : 0);
   glUniform1f(v("u_epsilon"), 1e-5f * extent_);
+  glUniformMatrix4fv(v("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+  glUniform1f(v("u_near"), near_plane);
+  glUniform1f(v("u_far"), far_plane);
+  glUniform1f(v("u_scene_extent"), extent_);
   glUniform1i(v("u_opaque_count"), opaque_count_);
   glUniform1i(v("u_env_type"), int(scene_.environment.type));
   glUniform3fv(v("u_env_color"), 1, &scene_.environment.color.x);
