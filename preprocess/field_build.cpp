@@ -115,13 +115,26 @@ bool check_field_size(int samples_per_side, bool half_precision, std::string& er
   return true;
 }
 
-glm::vec2 snap_to_covered(const GeometryImage& image, glm::vec2 uv, glm::vec3 hit) {
+std::vector<uint8_t> covered_patches(const GeometryImage& image) {
+  const int n = image.size;
+  std::vector<uint8_t> covered(size_t(n - 1) * size_t(n - 1));
+  for (int j = 0; j + 1 < n; ++j) {
+    for (int i = 0; i + 1 < n; ++i) {
+      covered[size_t(j) * size_t(n - 1) + size_t(i)] =
+          image.coverage[texel_index(image, i, j)] > 0.0f &&
+          image.coverage[texel_index(image, i + 1, j)] > 0.0f &&
+          image.coverage[texel_index(image, i, j + 1)] > 0.0f &&
+          image.coverage[texel_index(image, i + 1, j + 1)] > 0.0f;
+    }
+  }
+  return covered;
+}
+
+glm::vec2 snap_to_covered(const GeometryImage& image, const std::vector<uint8_t>& patches,
+                          glm::vec2 uv, glm::vec3 hit) {
   const int n = image.size;
   const auto covered = [&](int i, int j) {
-    return image.coverage[texel_index(image, i, j)] > 0.0f &&
-           image.coverage[texel_index(image, i + 1, j)] > 0.0f &&
-           image.coverage[texel_index(image, i, j + 1)] > 0.0f &&
-           image.coverage[texel_index(image, i + 1, j + 1)] > 0.0f;
+    return patches[size_t(j) * size_t(n - 1) + size_t(i)] != 0;
   };
   const glm::vec2 x = glm::clamp(uv * float(n) - 0.5f, glm::vec2(0.0f), glm::vec2(float(n - 1)));
   const glm::ivec2 c = glm::min(glm::ivec2(glm::floor(x)), glm::ivec2(n - 2));
@@ -129,18 +142,22 @@ glm::vec2 snap_to_covered(const GeometryImage& image, glm::vec2 uv, glm::vec3 hi
     return uv;
   }
   glm::vec2 best = uv;
-  float best_distance = glm::distance(sample_position(image, uv), hit);
+  const glm::vec3 d0 = sample_position(image, uv) - hit;
+  float best_distance = glm::dot(d0, d0);  // squared
   for (int j = std::max(0, c.y - 2); j <= std::min(n - 2, c.y + 2); ++j) {
     for (int i = std::max(0, c.x - 2); i <= std::min(n - 2, c.x + 2); ++i) {
       if (!covered(i, j)) {
         continue;
       }
-      const glm::vec2 q = glm::clamp(x, glm::vec2(i, j), glm::vec2(i + 1, j + 1));
-      const glm::vec2 q_uv = (q + 0.5f) / float(n);
-      const float d = glm::distance(sample_position(image, q_uv), hit);
-      if (d < best_distance) {
-        best_distance = d;
-        best = q_uv;
+      const glm::vec2 f = glm::clamp(x - glm::vec2(i, j), 0.0f, 1.0f);
+      const glm::vec3 a = glm::mix(image.position[texel_index(image, i, j)],
+                                   image.position[texel_index(image, i + 1, j)], f.x);
+      const glm::vec3 b = glm::mix(image.position[texel_index(image, i, j + 1)],
+                                   image.position[texel_index(image, i + 1, j + 1)], f.x);
+      const glm::vec3 d = glm::mix(a, b, f.y) - hit;
+      if (glm::dot(d, d) < best_distance) {
+        best_distance = glm::dot(d, d);
+        best = (glm::vec2(i, j) + f + 0.5f) / float(n);
       }
     }
   }
@@ -175,6 +192,7 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
 
   const glm::vec2* corner_uv = pm.corner_uv.data();
   const std::vector<glm::vec3> points = sample_points(box, n);
+  const std::vector<uint8_t> patches = covered_patches(image);
   glm::vec2* table = field.uv.data();
   tbb::combinable<size_t> hits(size_t(0));
   cast_packets(
@@ -200,7 +218,7 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
               const glm::vec3 origin = points[size_t(entry)];
               const glm::vec3 hit =
                   origin + p.ray.tfar[lane] * (points[size_t(first + lane)] - origin);
-              value = snap_to_covered(image, value, hit);
+              value = snap_to_covered(image, patches, value, hit);
               ++local_hits;
             }
           }

@@ -9,7 +9,9 @@
 // 8 consecutive exit samples, rtcIntersect8) with TBB over the entry samples.
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "gfield/geometry_field.hpp"
 #include "gfield/geometry_image.hpp"
@@ -48,11 +50,16 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
                           const GeometryImage& image, int samples_per_side, GeometryField& field,
                           std::string& error, FieldBuildStats* stats = nullptr);
 
+/// Which bilinear patches of `image` have all 4 texels covered: (n-1)^2 flags, patch (i, j)
+/// (texels i..i+1, j..j+1) at j * (n-1) + i.
+std::vector<uint8_t> covered_patches(const GeometryImage& image);
+
 /// `uv` itself when the 2 x 2 texels of its bilinear patch are all covered; otherwise, of `uv`
 /// and the points of the fully covered patches within 2 texels, the one whose image position is
 /// closest to `hit` (padding texels are copies of other texels, so a lookup there can land far
-/// from the surface).
-glm::vec2 snap_to_covered(const GeometryImage& image, glm::vec2 uv, glm::vec3 hit);
+/// from the surface). `patches` = covered_patches(image).
+glm::vec2 snap_to_covered(const GeometryImage& image, const std::vector<uint8_t>& patches,
+                          glm::vec2 uv, glm::vec3 hit);
 
 /// Casts exactly the rays and packets of build_geometry_field and stores nothing (the reference
 /// of the build benchmark). Returns the number of hits.

@@ -218,13 +218,14 @@ TEST(GeometryField, HitsNextToPaddingSnapToTheCoveredPatches) {
       image.coverage.push_back(covered ? 1.0f : 0.0f);
     }
   }
+  const std::vector<uint8_t> patches = covered_patches(image);
   const auto uv_of = [](float i, float j) { return glm::vec2(i + 0.5f, j + 0.5f) / 8.0f; };
   // Inside the covered patches nothing moves.
-  EXPECT_EQ(snap_to_covered(image, uv_of(2.3f, 3.6f), glm::vec3(2.3f, 3.6f, 0.0f)),
+  EXPECT_EQ(snap_to_covered(image, patches, uv_of(2.3f, 3.6f), glm::vec3(2.3f, 3.6f, 0.0f)),
             uv_of(2.3f, 3.6f));
   // Between the last covered column (4) and the padding: the stored uv would blend in z = 1.
   const glm::vec3 hit(4.3f, 3.5f, 0.0f);
-  const glm::vec2 snapped = snap_to_covered(image, uv_of(4.3f, 3.5f), hit);
+  const glm::vec2 snapped = snap_to_covered(image, patches, uv_of(4.3f, 3.5f), hit);
   EXPECT_GT(glm::distance(sample_position(image, uv_of(4.3f, 3.5f)), hit), 0.25f);
   EXPECT_LT(glm::distance(sample_position(image, snapped), hit), 0.31f);
   EXPECT_NEAR(sample_position(image, snapped).z, 0.0f, 1e-6f);
