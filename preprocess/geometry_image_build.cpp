@@ -155,7 +155,7 @@ ErrorStats error_stats(std::vector<double> distances, double diagonal) {
 
 /// Parameterises one component into a chart; fills the route fields of `chart_report`.
 /// A protrusion (a disk cut from a chart) is slit from its tip (the vertex farthest from its
-/// border) to the border so that the square map unrolls it instead of shrinking the tip.
+/// border) to the border so that the disk map unrolls it instead of shrinking the tip.
 bool chart_component(const Component& c, size_t index, const GeometryImageOptions& options,
                      bool protrusion, Chart& chart, ChartReport& report, std::string& error) {
   const bool sphere = c.boundary_loops == 0 && c.genus == 0;
@@ -167,7 +167,7 @@ bool chart_component(const Component& c, size_t index, const GeometryImageOption
     error = what + ": not an orientable surface";
     return false;
   }
-  if (c.faces.size() == 1) {  // too small for a square border: a right triangle in the square
+  if (c.faces.size() == 1) {  // a right triangle in its square
     chart = {};
     chart.corner_uv = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
     chart.weights = "none";
@@ -188,13 +188,13 @@ bool chart_component(const Component& c, size_t index, const GeometryImageOption
       error = what + ": " + orbifold_error;
       return false;
     }
-    report.note = orbifold_error + "; fell back to a slit and a square border";
+    report.note = orbifold_error + "; fell back to a slit and a disk chart";
   }
   std::vector<Edge> cut;
   if (sphere) {
     const std::vector<int> ends = farthest_points(c.mesh, 2);
     cut = path_edges(shortest_path(c.mesh, ends[0], ends[1]));
-    report.route = "slit+square";
+    report.route = "slit+disk";
   } else if (c.genus == 0 && c.boundary_loops == 1 && protrusion) {
     std::vector<int> border;
     for (const Edge& e : boundary_edges(c.mesh))
@@ -210,14 +210,14 @@ bool chart_component(const Component& c, size_t index, const GeometryImageOption
       if (from_tip[v] < from_tip[foot])
         foot = v;
     cut = path_edges(shortest_path(c.mesh, tip, foot));
-    report.route = cut.empty() ? "square" : "slit+square";
+    report.route = cut.empty() ? "disk" : "slit+disk";
   } else if (c.genus == 0 && c.boundary_loops == 1) {
-    report.route = "square";
+    report.route = "disk";
   } else {
     cut = tree_cotree_cut(c.mesh);
-    report.route = "cut-graph+square";
+    report.route = "cut-graph+disk";
   }
-  if (!parameterize_square(c.mesh, cut, chart, error)) {
+  if (!parameterize_disk(c.mesh, cut, chart, error)) {
     error = what + ": " + error;
     return false;
   }
@@ -423,7 +423,7 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
   report.coverage = double(covered) / double(image.coverage.size());
   report.seconds.rasterize = seconds_since(stage);
 
-  // Route summary: "orbifold", or "square x3 + orbifold".
+  // Route summary: "orbifold", or "orbifold + slit+disk x3".
   std::vector<std::pair<std::string, int>> routes;
   for (const ChartReport& chart : report.charts) {
     auto it = std::find_if(routes.begin(), routes.end(),

@@ -1,6 +1,6 @@
 #pragma once
 // The geometry-image pipeline (docs/geometry-image.md): repair -> per-component route (orbifold
-// for closed genus 0, cut graph + square-border conformal map otherwise) -> chart packing ->
+// for closed genus 0, cut graph + conformal map of a disk otherwise) -> chart packing ->
 // rasterisation -> measurements (uv faults, coverage, distortion, reconstruction error).
 
 #include <string>
@@ -55,7 +55,7 @@ struct ChartReport {
   size_t vertices = 0;
   long genus = 0;
   size_t boundary_loops = 0;
-  std::string route;    ///< "orbifold", "square" (disk), "cut-graph+square", "slit+square", ...
+  std::string route;    ///< "orbifold", "disk", "cut-graph+disk", "slit+disk", "triangle"
   std::string weights;  ///< "cotangent" / "mean value"
   std::string note;     ///< why a fallback was taken, if one was
   size_t seam_edges = 0;
@@ -71,7 +71,7 @@ struct StageTimes {  ///< seconds
 
 struct GeometryImageReport {
   RepairReport repair;
-  std::string route;  ///< the routes of the charts, e.g. "orbifold" or "square x3"
+  std::string route;  ///< the routes of the charts, e.g. "orbifold" or "orbifold + slit+disk x3"
   std::vector<ChartReport> charts;
   size_t components = 0;          ///< after repair
   size_t dropped_components = 0;  ///< --components largest

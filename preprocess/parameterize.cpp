@@ -1,5 +1,5 @@
-// Orbifold Tutte and square-border conformal parameterisation with CGAL 5.5. One of the few CGAL
-// translation units (the rest of the pipeline sees plain arrays).
+// Orbifold Tutte and disk (circular border) conformal parameterisation with CGAL 5.5. One of the
+// few CGAL translation units (the rest of the pipeline sees plain arrays).
 
 #include "preprocess/parameterize.hpp"
 
@@ -13,11 +13,11 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Orbifold_Tutte_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/boost/graph/Seam_mesh.h>
 
@@ -285,8 +285,8 @@ bool parameterize_orbifold(const TriangleMesh& component, Chart& chart, std::str
   return !chart.corner_uv.empty() && all_finite(chart.corner_uv) && chart.flipped == 0;
 }
 
-bool parameterize_square(const TriangleMesh& component, const std::vector<Edge>& cut, Chart& chart,
-                         std::string& error) {
+bool parameterize_disk(const TriangleMesh& component, const std::vector<Edge>& cut, Chart& chart,
+                       std::string& error) {
   chart = {};
   chart.seam_edges = cut.size();
   const DiskMesh disk = cut_open(component, cut);
@@ -295,7 +295,7 @@ bool parameterize_square(const TriangleMesh& component, const std::vector<Edge>&
     positions[v] = component.positions[disk.vertex_origin[v]];
   SurfaceMesh sm;
   if (!build_surface_mesh(positions, disk.triangles, sm)) {
-    error = "square: the cut component is not an oriented manifold";
+    error = "disk: the cut component is not an oriented manifold";
     return false;
   }
   std::vector<SurfaceMesh::Halfedge_index> borders;
@@ -303,20 +303,20 @@ bool parameterize_square(const TriangleMesh& component, const std::vector<Edge>&
   const long euler =
       long(sm.number_of_vertices()) - long(sm.number_of_edges()) + long(sm.number_of_faces());
   if (borders.size() != 1 || euler != 1) {
-    error = "square: the cut does not leave a disk (" + std::to_string(borders.size()) +
+    error = "disk: the cut does not leave a disk (" + std::to_string(borders.size()) +
             " borders, Euler characteristic " + std::to_string(euler) + ")";
     return false;
   }
-  if (CGAL::halfedges_around_face(borders[0], sm).size() == 3) {  // too short for a square
+  if (CGAL::halfedges_around_face(borders[0], sm).size() == 3) {  // three border vertices
     chart.corner_uv = tutte_triangle_border(sm, borders[0], disk.triangles);
     chart.weights = "uniform";
     orient_and_count(chart);
     if (chart.flipped == 0 && all_finite(chart.corner_uv))
       return true;
-    error = "square: the triangle-border Tutte embedding failed";
+    error = "disk: the triangle-border Tutte embedding failed";
     return false;
   }
-  using Border = SMP::Square_border_arc_length_parameterizer_3<SurfaceMesh>;
+  using Border = SMP::Circular_border_arc_length_parameterizer_3<SurfaceMesh>;
   for (int attempt = 0; attempt < 2; ++attempt) {
     auto uvmap = sm.add_property_map<VertexIndex, Point2>("v:uv", Point2(0, 0)).first;
     SMP::Error_code code;
@@ -342,13 +342,13 @@ bool parameterize_square(const TriangleMesh& component, const std::vector<Edge>&
         orient_and_count(chart);
         if (chart.flipped == 0)
           return true;
-        error = "square: " + std::to_string(chart.flipped) + " flipped faces";
+        error = "disk: " + std::to_string(chart.flipped) + " flipped faces";
       } else {
-        error = "square: the solution is not finite (degenerate triangles)";
+        error = "disk: the solution is not finite (degenerate triangles)";
       }
     } else {
       sm.remove_property_map(uvmap);
-      error = "square: " + parameterization_error_message(code);
+      error = "disk: " + parameterization_error_message(code);
     }
   }
   return !chart.corner_uv.empty() && all_finite(chart.corner_uv) && chart.flipped == 0;

@@ -21,7 +21,7 @@ void add_image_command(CLI::App& app) {
       "image",
       "Build the geometry image of a mesh: repair, conformal parameterisation (orbifold for "
       "closed\n"
-      "genus 0, cut graph + square border otherwise, one chart per component), resampling at\n"
+      "genus 0, cut graph + conformal disk otherwise, one chart per component), resampling at\n"
       "texel centres. Writes OUT (.gimage.exr) and, beside it, the parameterised mesh\n"
       "(.gimage.obj: v, vt = image uv, f v/vt). Prints the report (route, times, uv faults,\n"
       "coverage, distortion, reconstruction error).");
@@ -40,7 +40,7 @@ void add_image_command(CLI::App& app) {
       ->check(CLI::Range(kMinImageSize, kMaxImageSize))
       ->capture_default_str();
   cmd->add_option("--method", args->method,
-                  "auto: orbifold for closed genus-0 components, square border otherwise;\n"
+                  "auto: orbifold for closed genus-0 components, a disk chart otherwise;\n"
                   "orbifold: only closed genus 0; square: every component cut to a disk")
       ->check(CLI::IsMember({"auto", "orbifold", "square"}))
       ->capture_default_str();
