@@ -83,6 +83,10 @@ struct Expectation {
   const char* route_start;  ///< the first chart's route
 };
 
+void PrintTo(const Expectation& e, std::ostream* os) {
+  *os << e.mesh;
+}
+
 class SharedMesh : public ::testing::TestWithParam<Expectation> {};
 
 TEST_P(SharedMesh, RouteFlipsCoverageAndReconstructionAt256) {
@@ -139,6 +143,25 @@ TEST(GeometryImage, SeveralComponentsAreAllCharted) {
       EXPECT_LE(c.rect.y + c.rect.size, 128);
     }
   }
+}
+
+TEST(GeometryImage, LargestComponentSaysWhatItDropped) {
+  TriangleMesh teapot;
+  std::string error;
+  ASSERT_TRUE(load_mesh(std::string(GFIELD_SHARED_MESHES) + "/teapot.obj", teapot, error));
+  GeometryImageOptions options;
+  options.size = 64;
+  options.measure = false;
+  options.components = ComponentSelection::kLargest;
+  GeometryImage image;
+  ParameterizedMesh pm;
+  GeometryImageReport report;
+  ASSERT_TRUE(build_geometry_image(teapot, options, image, pm, report, error)) << error;
+  EXPECT_EQ(report.dropped_components, report.components - 1);
+  EXPECT_GT(report.dropped_faces, 0u);
+  EXPECT_EQ(pm.mesh.triangles.size() + report.dropped_faces,
+            teapot.triangles.size() + report.repair.filled_faces);
+  EXPECT_NE(geometry_image_report_to_text(report).find("dropped:"), std::string::npos);
 }
 
 TEST(GeometryImage, OrbifoldTilingFillsTheSquareWithoutSeams) {
