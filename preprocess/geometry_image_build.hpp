@@ -20,7 +20,7 @@ enum class ParameterizationMethod { kAuto, kOrbifold, kSquare };
 enum class ComponentSelection { kAll, kLargest };
 
 /// Largest input accepted (faces). Above it the pipeline stops with an error instead of
-/// exhausting memory (about 1 KB per face at peak, CGAL's sparse solve included).
+/// exhausting memory (about 1.5 KB per face at peak: the bunny, 70K faces, peaks at 105 MB).
 inline constexpr size_t kMaxFaces = 4'000'000;
 /// Image sizes accepted (texels per side).
 inline constexpr int kMinImageSize = 8;
