@@ -43,7 +43,8 @@ CliRun run(const std::string& arguments) {
   return r;
 }
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / "field_cli";
+// One folder per process: CTest runs each test in a process of its own, in parallel.
+const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("field_cli_" + std::to_string(getpid()));
 const std::string kSpot = std::string(GFIELD_SHARED_MESHES) + "/spot.obj";
 
 class FieldCli : public ::testing::Test {
@@ -54,6 +55,10 @@ class FieldCli : public ::testing::Test {
     const CliRun r = run("build " + kSpot + " -o " + (kDir / "spot").string() +
                          " --size 256 --samples 8 --verify-rays 2000");
     ASSERT_EQ(r.status, 0) << r.output;
+  }
+  static void TearDownTestSuite() {
+    std::error_code ec;
+    fs::remove_all(kDir, ec);
   }
   static std::string name() { return (kDir / "spot").string(); }
 };
@@ -134,8 +139,10 @@ TEST_F(FieldCli, VerifyRefusesMismatchedAndDamagedFiles) {
   std::string error;
   ASSERT_TRUE(load_geometry_field(name() + ".gfield.exr", field, error)) << error;
   const std::string other = (kDir / "other").string();
-  fs::copy_file(name() + ".gimage.exr", other + ".gimage.exr");
-  fs::copy_file(name() + ".gimage.obj", other + ".gimage.obj");
+  fs::copy_file(name() + ".gimage.exr", other + ".gimage.exr",
+                fs::copy_options::overwrite_existing);
+  fs::copy_file(name() + ".gimage.obj", other + ".gimage.obj",
+                fs::copy_options::overwrite_existing);
   field.source = "cow.obj";
   ASSERT_TRUE(save_geometry_field(other + ".gfield.exr", field, ExrPrecision::kHalf, error));
   CliRun r = run("verify " + other + " --rays 100");
