@@ -40,6 +40,8 @@
 #define GF_NEWTON_ITERATIONS 16
 #define GF_NEWTON_MAX_STEP 8.0f
 #define GF_NEWTON_TOLERANCE 1.0e-5f
+// Least weight of the hitting pairs among the 16 for a chart border to count as a seam.
+#define GF_SEAM_WEIGHT 0.999f
 
 struct GfHit {
   bool hit;       // false: miss (or an invalid ray)
@@ -178,8 +180,9 @@ GfHit gf_hit_at(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
 // orthogonal to it) with the geometry image's surface of bilinear patches between texel centres.
 // Starts at uv, moves across patches (steps of at most GF_NEWTON_MAX_STEP texels) and succeeds
 // when the surface point p is within `tolerance` (mesh units) of the line; uv and p are then the
-// intersection.
-bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, GF_INOUT(vec2) uv, GF_OUT(vec3) p) {
+// intersection. `seams`: also accept chart-border points across seams (see below).
+bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, GF_INOUT(vec2) uv,
+               GF_OUT(vec3) p) {
   int n = gf_image_size();
   vec2 x = gf_image_grid(uv, n);
   p = vec3(0.0f);
@@ -207,11 +210,12 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, GF_INOUT(vec2) uv, GF_
     float det = j11 * j22 - j12 * j21;
     if (det == 0.0f) {
       // A collapsed patch: padding texels are copies of the nearest chart-border texel, so the
-      // walk has left the chart towards a neighbouring one (the line crosses the seam between
-      // two charts, where neither chart's patches reach). Accept the border point when the line
-      // passes within one texel of it, moved onto the line.
+      // walk has left the chart. Where the line crosses a seam between two charts (`seams`: the
+      // surface around the ray is closed, see gf_trace), neither chart's patches reach it:
+      // accept the border point when the line passes within one texel of it, moved onto the
+      // line. At an open boundary of the surface this would be a false hit.
       float texel = max(dot(pu, pu), dot(pv, pv));
-      if (dot(r, r) <= texel) {
+      if (seams && dot(r, r) <= texel) {
         p -= r.x * e1 + r.y * e2;
         uv = (x + 0.5f) / float(n);
         return true;
@@ -293,14 +297,27 @@ GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
   vec3 e1 = vec3(1.0f + s * dn.x * dn.x * ka, s * kb, -s * dn.x);
   vec3 e2 = vec3(kb, s + dn.y * dn.y * ka, -dn.y);
   float tolerance = GF_NEWTON_TOLERANCE * sqrt(dot(extent, extent));
+  // The candidates, and the weight of the pairs that hit: when nearly all of the neighbourhood
+  // hits, the surface around the ray is closed and a chart border there is a seam.
+  vec2 candidates[16];
+  float weight = 0.0f;
   for (int i = 0; i < 4; i++) {
     for (int j = 0; j < 4; j++) {
-      vec2 uv = gf_field_texel(k_entry[i], k_exit[j]);
+      candidates[4 * i + j] = gf_field_texel(k_entry[i], k_exit[j]);
+      if (candidates[4 * i + j].x >= 0.0f) {
+        weight += w_entry[i] * w_exit[j];
+      }
+    }
+  }
+  bool seams = weight >= GF_SEAM_WEIGHT;
+  for (int i = 0; i < 4; i++) {
+    for (int j = 0; j < 4; j++) {
+      vec2 uv = candidates[4 * i + j];
       if (uv.x < 0.0f) {
         continue;
       }
       vec3 p;
-      if (!gf_refine(o, e1, e2, tolerance, uv, p)) {
+      if (!gf_refine(o, e1, e2, tolerance, seams, uv, p)) {
         continue;
       }
       float t = dot(p - o, d) / dot(d, d);
