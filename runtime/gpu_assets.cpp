@@ -1,6 +1,7 @@
 #include "runtime/gpu_assets.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/gtx/norm.hpp>
 
@@ -32,6 +33,38 @@ std::vector<unsigned> geometry_image_triangles(const GeometryImage& image) {
   return indices;
 }
 
+std::vector<glm::vec3> angle_weighted_normals(const TriangleMesh& mesh) {
+  double volume = 0.0;
+  for (const glm::ivec3& f : mesh.triangles)
+    volume += glm::dot(mesh.positions[size_t(f.x)],
+                       glm::cross(mesh.positions[size_t(f.y)], mesh.positions[size_t(f.z)]));
+  const double orientation = volume < 0.0 ? -1.0 : 1.0;
+  std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0.0));
+  for (const glm::ivec3& f : mesh.triangles) {
+    const glm::dvec3 p[3] = {mesh.positions[size_t(f.x)], mesh.positions[size_t(f.y)],
+                             mesh.positions[size_t(f.z)]};
+    const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+    const double length = glm::length(n);
+    if (length <= 0.0)
+      continue;
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec3 a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
+      const double la = glm::length(a), lb = glm::length(b);
+      if (la <= 0.0 || lb <= 0.0)
+        continue;
+      const double angle = std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0));
+      sum[size_t(f[k])] += angle * n / length;
+    }
+  }
+  std::vector<glm::vec3> normals(sum.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+  for (size_t v = 0; v < sum.size(); ++v) {
+    const double length = glm::length(sum[v]);
+    if (length > 0.0)
+      normals[v] = glm::vec3(orientation * sum[v] / length);
+  }
+  return normals;
+}
+
 GpuAssets::~GpuAssets() {
   release();
 }
@@ -53,7 +86,8 @@ void GpuAssets::release() {
 }
 
 bool GpuAssets::upload(const std::vector<const GeometryImage*>& images,
-                       const std::vector<const GeometryField*>& fields, std::string& error) {
+                       const std::vector<const GeometryField*>& fields, std::string& error,
+                       const std::vector<const TriangleMesh*>& meshes) {
   release();
   GLint max_size = 0, max_layers = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
@@ -118,19 +152,31 @@ bool GpuAssets::upload(const std::vector<const GeometryImage*>& images,
       glTextureSubImage3D(fields_, 0, 0, 0, k, side, side, 1, GL_RG, GL_FLOAT, field->uv.data());
       asset.samples_per_side = field->samples_per_side;
     }
-    // Grid mesh for rasterisation.
+    // Mesh for rasterisation: position, normal, uv per vertex.
     std::vector<float> vertices;
-    vertices.reserve(position.size() * 8);
-    for (int j = 0; j < n; ++j) {
-      for (int i = 0; i < n; ++i) {
-        const size_t t = texel_index(image, i, j);
+    std::vector<unsigned> indices;
+    const TriangleMesh* mesh = size_t(k) < meshes.size() ? meshes[size_t(k)] : nullptr;
+    if (mesh != nullptr) {
+      const std::vector<glm::vec3> normals = angle_weighted_normals(*mesh);
+      for (size_t v = 0; v < mesh->positions.size(); ++v) {
+        const glm::vec3 p(mesh->positions[v]);
         vertices.insert(vertices.end(),
-                        {image.position[t].x, image.position[t].y, image.position[t].z,
-                         image.normal[t].x, image.normal[t].y, image.normal[t].z,
-                         (float(i) + 0.5f) / float(n), (float(j) + 0.5f) / float(n)});
+                        {p.x, p.y, p.z, normals[v].x, normals[v].y, normals[v].z, 0.0f, 0.0f});
       }
+      for (const glm::ivec3& f : mesh->triangles)
+        indices.insert(indices.end(), {unsigned(f.x), unsigned(f.y), unsigned(f.z)});
+    } else {
+      for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+          const size_t t = texel_index(image, i, j);
+          vertices.insert(vertices.end(),
+                          {image.position[t].x, image.position[t].y, image.position[t].z,
+                           image.normal[t].x, image.normal[t].y, image.normal[t].z,
+                           (float(i) + 0.5f) / float(n), (float(j) + 0.5f) / float(n)});
+        }
+      }
+      indices = geometry_image_triangles(image);
     }
-    const std::vector<unsigned> indices = geometry_image_triangles(image);
     GLuint buffers[2] = {0, 0};
     glCreateBuffers(2, buffers);
     buffers_.insert(buffers_.end(), buffers, buffers + 2);

@@ -9,7 +9,8 @@
 //     layer reaches 16384).
 // Shaders read them with texelFetch only (bilinear weights are computed in the shader, as the
 // CPU does, instead of the texture unit's fixed-point filtering). Each asset also has a triangle
-// mesh of its geometry image grid for rasterisation. Instances share one asset.
+// mesh for rasterisation: the mesh the geometry image was made from (NAME.gimage.obj) when it is
+// given, else the geometry image's grid. Instances share one asset.
 
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 
 #include "gfield/geometry_field.hpp"
 #include "gfield/geometry_image.hpp"
+#include "preprocess/mesh_io.hpp"
 
 namespace gfield {
 
@@ -38,11 +40,13 @@ class GpuAssets {
   GpuAssets(const GpuAssets&) = delete;
   GpuAssets& operator=(const GpuAssets&) = delete;
 
-  /// Uploads the image and field of every asset (fields[i] may be null: no field). False with an
-  /// error when an image and its field do not belong together (box) or a size exceeds the GL
-  /// limits.
+  /// Uploads the image and field of every asset (fields[i] may be null: no field) and its
+  /// rasterisation mesh (meshes[i] may be null or meshes empty: the geometry image grid). False
+  /// with an error when an image and its field do not belong together (box) or a size exceeds
+  /// the GL limits.
   bool upload(const std::vector<const GeometryImage*>& images,
-              const std::vector<const GeometryField*>& fields, std::string& error);
+              const std::vector<const GeometryField*>& fields, std::string& error,
+              const std::vector<const TriangleMesh*>& meshes = {});
 
   const std::vector<GpuAsset>& assets() const { return assets_; }
   GLuint positions() const { return positions_; }
@@ -60,6 +64,10 @@ class GpuAssets {
   GLuint fields_ = 0;
   size_t texture_bytes_ = 0;
 };
+
+/// Angle-weighted vertex normals of `mesh`, oriented outwards by the signed volume (as the
+/// reference tracer computes its shading normals).
+std::vector<glm::vec3> angle_weighted_normals(const TriangleMesh& mesh);
 
 /// Grid triangles of a geometry image: two per quad of texel centres whose 4 corners are covered
 /// (A > 0.5), as indices j * n + i. Quads are split along the shorter diagonal.

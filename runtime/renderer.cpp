@@ -1,0 +1,457 @@
+#include "runtime/renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gfield/environment.hpp"
+#include "gfield/exr_io.hpp"
+#include "preprocess/mesh_io.hpp"
+
+namespace gfield {
+namespace {
+
+/// std430 mirror of GpuObject in shaders/lib/scene.glsl.
+struct GpuObject {
+  glm::mat4 to_world;
+  glm::mat4 to_object;
+  glm::vec4 color;
+  glm::vec4 absorption;
+  glm::vec4 checker0;
+  glm::vec4 checker1;
+  glm::vec4 shape;
+  glm::vec4 size;
+  glm::vec4 box_min;
+  glm::vec4 box_max;
+  glm::ivec4 kind;
+  glm::ivec4 asset;
+};
+static_assert(sizeof(GpuObject) == 288);
+
+struct GpuLight {
+  glm::vec4 direction;
+  glm::vec4 position;
+  glm::vec4 color;
+};
+
+/// Object-space bounds of an analytic shape (as preprocess/analytic_primitives' shape_bounds).
+glm::vec3 shape_half_extent(const Shape& shape) {
+  switch (shape.type) {
+    case ShapeType::kSphere:
+      return glm::vec3(shape.radius);
+    case ShapeType::kQuad:
+      return glm::vec3(0.5f * shape.size.x, 0.5f * shape.size.y, 0.0f);
+    case ShapeType::kBox:
+      return 0.5f * shape.size;
+    case ShapeType::kSlab:
+      return 0.5f * glm::vec3(shape.size.x, shape.size.y, shape.thickness);
+    case ShapeType::kCylinder:
+    case ShapeType::kHollowCylinder:
+      return glm::vec3(shape.radius, 0.5f * shape.height, shape.radius);
+    case ShapeType::kMesh:
+      break;
+  }
+  return glm::vec3(0.0f);
+}
+
+/// The 36 vertices (position, normal, uv) of the cube [-1, 1]^3: the proxy of analytic shapes.
+std::vector<float> cube_vertices() {
+  std::vector<float> v;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (float side : {-1.0f, 1.0f}) {
+      const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+      const float corners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
+      for (const auto& c : corners) {
+        glm::vec3 p(0.0f);
+        p[axis] = side;
+        p[a1] = c[0];
+        p[a2] = c[1];
+        glm::vec3 n(0.0f);
+        n[axis] = side;
+        v.insert(v.end(), {p.x, p.y, p.z, n.x, n.y, n.z, 0.0f, 0.0f});
+      }
+    }
+  }
+  return v;
+}
+
+/// Strata grid nx x ny = spp, nx the largest divisor <= sqrt(spp) (as the reference tracer).
+glm::ivec2 strata(int spp) {
+  int nx = std::max(1, int(std::sqrt(double(spp))));
+  while (spp % nx != 0)
+    --nx;
+  return {nx, spp / nx};
+}
+
+double elapsed_ms(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+}  // namespace
+
+Renderer::Renderer() = default;
+
+Renderer::~Renderer() {
+  release_gbuffer();
+  for (GLuint* buffer : {&objects_buffer_, &lights_buffer_, &proxy_buffer_})
+    if (*buffer != 0)
+      glDeleteBuffers(1, buffer);
+  if (environment_ != 0)
+    glDeleteTextures(1, &environment_);
+  for (GLuint* array : {&proxy_vertex_array_, &empty_vertex_array_})
+    if (*array != 0)
+      glDeleteVertexArrays(1, array);
+}
+
+bool Renderer::load(const Scene& scene, const std::filesystem::path& shader_dir,
+                    std::string& error) {
+  scene_ = scene;
+  // Assets: every mesh needs its geometry image and its field, and they must belong together.
+  std::vector<GeometryImage> images(scene.meshes.size());
+  std::vector<GeometryField> fields(scene.meshes.size());
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const MeshAsset& mesh = scene.meshes[m];
+    const std::string stem = std::filesystem::path(mesh.file).stem().string();
+    if (mesh.geometry_image.empty() || mesh.geometry_field.empty()) {
+      error = mesh.file + ": no " +
+              std::string(mesh.geometry_image.empty() ? "geometry image" : "geometry field") +
+              " (expected " + stem + ".gimage.exr and " + stem +
+              ".gfield.exr beside the mesh or named by \"gimage\"/\"gfield\" in " + scene.filename +
+              "; make them with: gfield build " + mesh.file + " -o DIR/" + stem + ")";
+      return false;
+    }
+    if (!load_geometry_image(mesh.geometry_image, images[m], error))
+      return false;
+    if (!load_geometry_field(mesh.geometry_field, fields[m], error))
+      return false;
+    FieldLookup lookup;
+    if (!make_field_lookup(fields[m], images[m], lookup, error)) {
+      error = mesh.geometry_field + ": does not match " + mesh.geometry_image + " (" + error + ")";
+      return false;
+    }
+  }
+  // Rasterisation meshes: the scene's mesh files themselves (as the reference tracer sees them).
+  std::vector<TriangleMesh> raster(scene.meshes.size());
+  std::vector<const GeometryImage*> image_pointers;
+  std::vector<const GeometryField*> field_pointers;
+  std::vector<const TriangleMesh*> mesh_pointers;
+  for (size_t m = 0; m < images.size(); ++m) {
+    image_pointers.push_back(&images[m]);
+    field_pointers.push_back(&fields[m]);
+    if (!load_mesh(scene.meshes[m].file, raster[m], error))
+      return false;
+    mesh_pointers.push_back(&raster[m]);
+  }
+  if (!assets_.upload(image_pointers, field_pointers, error, mesh_pointers)) {
+    error = scene.filename + ": " + error;
+    return false;
+  }
+  if (!upload_environment(error))
+    return false;
+
+  const std::vector<float> cube = cube_vertices();
+  glCreateBuffers(1, &proxy_buffer_);
+  glNamedBufferStorage(proxy_buffer_, GLsizeiptr(cube.size() * sizeof(float)), cube.data(), 0);
+  glCreateVertexArrays(1, &proxy_vertex_array_);
+  glVertexArrayVertexBuffer(proxy_vertex_array_, 0, proxy_buffer_, 0, 8 * sizeof(float));
+  for (GLuint attribute = 0; attribute < 3; ++attribute) {
+    glEnableVertexArrayAttrib(proxy_vertex_array_, attribute);
+    glVertexArrayAttribFormat(proxy_vertex_array_, attribute, attribute == 2 ? 2 : 3, GL_FLOAT,
+                              GL_FALSE, attribute * 3 * sizeof(float));
+    glVertexArrayAttribBinding(proxy_vertex_array_, attribute, 0);
+  }
+  glCreateVertexArrays(1, &empty_vertex_array_);
+  glCreateBuffers(1, &objects_buffer_);
+  glCreateBuffers(1, &lights_buffer_);
+  update_scene();
+
+  if (!gbuffer_program_.build(shader_dir, {"gbuffer.vert", "gbuffer.frag"}, "", error))
+    return false;
+  if (!trace_program_.build(shader_dir, {"fullscreen.vert", "field_trace.frag"}, "", error))
+    return false;
+  return true;
+}
+
+bool Renderer::upload_environment(std::string& error) {
+  Environment environment;
+  if (!load_environment(scene_.environment, environment, error))
+    return false;
+  std::vector<const Image*> layers;
+  if (scene_.environment.type == EnvironmentType::kEquirect)
+    layers.push_back(&environment.equirect);
+  if (scene_.environment.type == EnvironmentType::kCube)
+    for (const Image& face : environment.faces)
+      layers.push_back(&face);
+  const int width = layers.empty() ? 1 : layers[0]->width;
+  const int height = layers.empty() ? 1 : layers[0]->height;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &environment_);
+  glTextureStorage3D(environment_, 1, GL_RGBA32F, width, height,
+                     GLsizei(std::max<size_t>(1, layers.size())));
+  for (size_t k = 0; k < layers.size(); ++k) {
+    std::vector<glm::vec4> pixels;
+    pixels.reserve(layers[k]->pixels.size());
+    for (const glm::vec3& p : layers[k]->pixels)
+      pixels.emplace_back(p, 1.0f);
+    glTextureSubImage3D(environment_, 0, 0, 0, GLint(k), width, height, 1, GL_RGBA, GL_FLOAT,
+                        pixels.data());
+  }
+  return true;
+}
+
+void Renderer::object_bounds(int object, glm::vec3& lo, glm::vec3& hi) const {
+  const SceneObject& o = scene_.objects[size_t(object)];
+  glm::vec3 olo, ohi;
+  if (o.shape.type == ShapeType::kMesh) {
+    const GpuAsset& asset = assets_.assets()[size_t(o.shape.mesh)];
+    olo = asset.box.min;
+    ohi = asset.box.max;
+  } else {
+    ohi = shape_half_extent(o.shape);
+    olo = -ohi;
+  }
+  const glm::mat4 to_world(object_to_world(o.transform));
+  lo = glm::vec3(3.0e38f);
+  hi = glm::vec3(-3.0e38f);
+  for (int c = 0; c < 8; ++c) {
+    const glm::vec3 corner((c & 1) ? ohi.x : olo.x, (c & 2) ? ohi.y : olo.y,
+                           (c & 4) ? ohi.z : olo.z);
+    const glm::vec3 w(to_world * glm::vec4(corner, 1.0f));
+    lo = glm::min(lo, w);
+    hi = glm::max(hi, w);
+  }
+}
+
+void Renderer::update_scene() {
+  std::vector<GpuObject> objects;
+  glm::vec3 lo(scene_.camera.position), hi(scene_.camera.position);
+  for (size_t k = 0; k < scene_.objects.size(); ++k) {
+    const SceneObject& o = scene_.objects[k];
+    GpuObject g{};
+    const glm::dmat4 to_world = object_to_world(o.transform);
+    g.to_world = glm::mat4(to_world);
+    g.to_object = glm::mat4(glm::inverse(to_world));
+    g.color = glm::vec4(o.material.color, o.material.ior);
+    glm::vec3 olo, ohi;
+    object_bounds(int(k), olo, ohi);
+    lo = glm::min(lo, olo);
+    hi = glm::max(hi, ohi);
+    g.absorption = glm::vec4(o.material.absorption, glm::length(ohi - olo));
+    g.checker0 = glm::vec4(o.material.checker_colors[0], o.material.checker_scale.x);
+    g.checker1 = glm::vec4(o.material.checker_colors[1], o.material.checker_scale.y);
+    g.shape = glm::vec4(o.shape.radius, o.shape.height, o.shape.thickness, 0.0f);
+    g.size = glm::vec4(o.shape.size, 0.0f);
+    g.kind = glm::ivec4(int(o.shape.type), int(o.material.type), int(o.material.texture), 0);
+    if (o.shape.type == ShapeType::kMesh) {
+      const GpuAsset& asset = assets_.assets()[size_t(o.shape.mesh)];
+      g.box_min = glm::vec4(asset.box.min, 0.0f);
+      g.box_max = glm::vec4(asset.box.max, 0.0f);
+      g.asset = glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, 0);
+    }
+    objects.push_back(g);
+  }
+  extent_ = std::max(1e-3f, glm::length(hi - lo));
+  std::vector<GpuLight> lights;
+  for (const Light& l : scene_.lights) {
+    lights.push_back({glm::vec4(l.direction, l.type == LightType::kPoint ? 1.0f : 0.0f),
+                      glm::vec4(l.position, 1.0f), glm::vec4(l.color * l.intensity, 0.0f)});
+  }
+  // Buffers are re-created: sizes change when objects are added in the viewer.
+  for (GLuint* buffer : {&objects_buffer_, &lights_buffer_}) {
+    glDeleteBuffers(1, buffer);
+    glCreateBuffers(1, buffer);
+  }
+  glNamedBufferData(objects_buffer_,
+                    GLsizeiptr(std::max<size_t>(1, objects.size()) * sizeof(GpuObject)),
+                    objects.empty() ? nullptr : objects.data(), GL_DYNAMIC_DRAW);
+  glNamedBufferData(lights_buffer_,
+                    GLsizeiptr(std::max<size_t>(1, lights.size()) * sizeof(GpuLight)),
+                    lights.empty() ? nullptr : lights.data(), GL_DYNAMIC_DRAW);
+}
+
+void Renderer::release_gbuffer() {
+  if (gbuffer_fbo_ != 0)
+    glDeleteFramebuffers(1, &gbuffer_fbo_);
+  if (gbuffer_textures_[0] != 0)
+    glDeleteTextures(3, gbuffer_textures_);
+  if (gbuffer_depth_ != 0)
+    glDeleteRenderbuffers(1, &gbuffer_depth_);
+  gbuffer_fbo_ = gbuffer_depth_ = 0;
+  gbuffer_textures_[0] = gbuffer_textures_[1] = gbuffer_textures_[2] = 0;
+  gbuffer_width_ = gbuffer_height_ = 0;
+}
+
+bool Renderer::ensure_gbuffer(int width, int height) {
+  if (width == gbuffer_width_ && height == gbuffer_height_ && gbuffer_fbo_ != 0)
+    return true;
+  release_gbuffer();
+  glCreateTextures(GL_TEXTURE_2D, 3, gbuffer_textures_);
+  glCreateFramebuffers(1, &gbuffer_fbo_);
+  for (int k = 0; k < 3; ++k) {
+    glTextureStorage2D(gbuffer_textures_[k], 1, GL_RGBA32F, width, height);
+    glNamedFramebufferTexture(gbuffer_fbo_, GLenum(GL_COLOR_ATTACHMENT0 + k), gbuffer_textures_[k],
+                              0);
+  }
+  glCreateRenderbuffers(1, &gbuffer_depth_);
+  glNamedRenderbufferStorage(gbuffer_depth_, GL_DEPTH_COMPONENT32F, width, height);
+  glNamedFramebufferRenderbuffer(gbuffer_fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                 gbuffer_depth_);
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(gbuffer_fbo_, 3, buffers);
+  gbuffer_width_ = width;
+  gbuffer_height_ = height;
+  return glCheckNamedFramebufferStatus(gbuffer_fbo_, GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+void Renderer::render(const Camera& camera, const RenderSettings& settings, Framebuffer& target,
+                      glm::vec2 jitter, FrameStats* stats) {
+  const int width = target.width(), height = target.height();
+  ensure_gbuffer(width, height);
+  const auto start = std::chrono::steady_clock::now();
+  const float aspect = float(width) / float(height);
+  const float distance_to_target = glm::length(camera.target - camera.position);
+  const float far_plane = 4.0f * extent_ + distance_to_target;
+  const float near_plane = 1e-4f * far_plane;
+  const glm::mat4 view = glm::lookAt(camera.position, camera.target, camera.up);
+  glm::mat4 projection =
+      glm::perspective(glm::radians(camera.fov_degrees), aspect, near_plane, far_plane);
+  // Sub-pixel offset: pixel x right, y down -> NDC.
+  projection = glm::translate(glm::mat4(1.0f), glm::vec3(2.0f * jitter.x / float(width),
+                                                         -2.0f * jitter.y / float(height), 0.0f)) *
+               projection;
+  const glm::mat4 view_projection = projection * view;
+
+  // Pass 1: G-buffer of first hits.
+  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_fbo_);
+  glViewport(0, 0, width, height);
+  const float clear_position[4] = {0.0f, 0.0f, 0.0f, -1.0f};
+  const float clear_zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearBufferfv(GL_COLOR, 0, clear_position);
+  glClearBufferfv(GL_COLOR, 1, clear_zero);
+  glClearBufferfv(GL_COLOR, 2, clear_zero);
+  glDepthMask(GL_TRUE);
+  glClearDepth(1.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  const GLuint gp = gbuffer_program_.id();
+  glUseProgram(gp);
+  glUniformMatrix4fv(gbuffer_program_.uniform("u_view_projection"), 1, GL_FALSE,
+                     glm::value_ptr(view_projection));
+  glUniform3fv(gbuffer_program_.uniform("u_camera_position"), 1, &camera.position.x);
+  for (size_t k = 0; k < scene_.objects.size(); ++k) {
+    const SceneObject& o = scene_.objects[k];
+    const glm::dmat4 to_world_d = object_to_world(o.transform);
+    const glm::mat4 to_world(to_world_d), to_object(glm::inverse(to_world_d));
+    glUniformMatrix4fv(gbuffer_program_.uniform("u_to_world"), 1, GL_FALSE,
+                       glm::value_ptr(to_world));
+    glUniformMatrix4fv(gbuffer_program_.uniform("u_to_object"), 1, GL_FALSE,
+                       glm::value_ptr(to_object));
+    glUniform1i(gbuffer_program_.uniform("u_object"), int(k));
+    glUniform1i(gbuffer_program_.uniform("u_shape"), int(o.shape.type));
+    glUniform4f(gbuffer_program_.uniform("u_shape_params"), o.shape.radius, o.shape.height,
+                o.shape.thickness, 0.0f);
+    glUniform3fv(gbuffer_program_.uniform("u_shape_size"), 1, &o.shape.size.x);
+    if (o.shape.type == ShapeType::kMesh) {
+      const GpuAsset& asset = assets_.assets()[size_t(o.shape.mesh)];
+      glUniform3f(gbuffer_program_.uniform("u_proxy_half"), 1.0f, 1.0f, 1.0f);
+      glBindVertexArray(asset.vertex_array);
+      glDrawElements(GL_TRIANGLES, asset.index_count, GL_UNSIGNED_INT, nullptr);
+    } else {
+      // A slightly grown box: the exact shape is found per fragment.
+      const glm::vec3 half = shape_half_extent(o.shape) * 1.001f + 1e-5f * extent_;
+      glUniform3fv(gbuffer_program_.uniform("u_proxy_half"), 1, &half.x);
+      glBindVertexArray(proxy_vertex_array_);
+      glDrawArrays(GL_TRIANGLES, 0, 36);
+    }
+  }
+  double gbuffer_ms = 0.0;
+  if (stats != nullptr) {
+    glFinish();
+    gbuffer_ms = elapsed_ms(start);
+  }
+
+  // Pass 2: shading and tracing.
+  target.bind();
+  glDisable(GL_DEPTH_TEST);
+  const GLuint tp = trace_program_.id();
+  glUseProgram(tp);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, objects_buffer_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, lights_buffer_);
+  glBindTextureUnit(0, assets_.positions());
+  glBindTextureUnit(1, assets_.normals());
+  glBindTextureUnit(2, assets_.fields());
+  glBindTextureUnit(5, environment_);
+  for (int k = 0; k < 3; ++k)
+    glBindTextureUnit(GLuint(6 + k), gbuffer_textures_[k]);
+  const auto& u = [&](const char* name) { return trace_program_.uniform(name); };
+  glUniform1i(u("u_object_count"), int(scene_.objects.size()));
+  glUniform1i(u("u_light_count"), int(scene_.lights.size()));
+  glUniform3fv(u("u_ambient"), 1, &scene_.ambient.x);
+  glUniform1i(u("u_mode"), int(settings.mode));
+  glUniform1i(u("u_self_reflection"), settings.self_reflection ? 1 : 0);
+  glUniform1f(u("u_scene_extent"), extent_);
+  glUniform1i(u("u_env_type"), int(scene_.environment.type));
+  glUniform3fv(u("u_env_color"), 1, &scene_.environment.color.x);
+  glUniform1f(u("u_env_intensity"), scene_.environment.intensity);
+  const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+  const glm::vec3 up = glm::cross(right, forward);
+  const float tan_half = std::tan(glm::radians(camera.fov_degrees) * 0.5f);
+  glUniform3fv(u("u_camera_position"), 1, &camera.position.x);
+  glUniform3fv(u("u_camera_forward"), 1, &forward.x);
+  glUniform3fv(u("u_camera_right"), 1, &right.x);
+  glUniform3fv(u("u_camera_up"), 1, &up.x);
+  glUniform2f(u("u_tan_half"), tan_half * aspect, tan_half);
+  glUniform2f(u("u_image_size"), float(width), float(height));
+  glUniform2f(u("u_jitter"), jitter.x, jitter.y);
+  glUniform1i(u("u_max_depth"), settings.max_depth);
+  glUniform1f(u("u_min_weight"), settings.min_weight);
+  glUniform1i(u("u_max_rays"), settings.max_rays);
+  glBindVertexArray(empty_vertex_array_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (stats != nullptr) {
+    glFinish();
+    stats->milliseconds += elapsed_ms(start);
+    stats->gbuffer_milliseconds += gbuffer_ms;
+    stats->trace_milliseconds += elapsed_ms(start) - gbuffer_ms;
+    for (const glm::vec4& h : target.read_hits()) {
+      if (h.x >= 0.0f && scene_.objects[size_t(h.x)].material.type != MaterialType::kDiffuse)
+        ++stats->traced_pixels;
+      stats->secondary_rays += (long long)(h.y);
+    }
+  }
+}
+
+Image Renderer::render_image(int width, int height, const RenderSettings& settings,
+                             FrameStats* stats) {
+  Framebuffer target;
+  target.resize(width, height);
+  const int spp = std::max(1, settings.samples_per_pixel);
+  const glm::ivec2 grid = strata(spp);
+  Image image(width, height);
+  for (int s = 0; s < spp; ++s) {
+    const glm::vec2 jitter((float(s % grid.x) + 0.5f) / float(grid.x) - 0.5f,
+                           (float(s / grid.x) + 0.5f) / float(grid.y) - 0.5f);
+    render(scene_.camera, settings, target, jitter, stats);
+    const RgbaImage frame = target.read();
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+      image.pixels[i] += glm::vec3(frame.pixels[i]) / float(spp);
+  }
+  return image;
+}
+
+bool Renderer::reload_shaders_if_changed(std::string& error) {
+  std::string gbuffer_error, trace_error;
+  const bool a = gbuffer_program_.reload_if_changed(gbuffer_error);
+  const bool b = trace_program_.reload_if_changed(trace_error);
+  error = gbuffer_error + trace_error;
+  return (a || b) && error.empty();
+}
+
+}  // namespace gfield

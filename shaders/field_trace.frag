@@ -1,0 +1,159 @@
+#version 450
+// The geometry-field renderer's shading pass (Li et al. 2006, section 3.2), one fragment per
+// pixel over the G-buffer of first hits:
+//   1. the eye ray of the pixel; 2. at a reflective hit the reflection ray; 3. local shading of
+//   diffuse hits; 4. TraceRay: for every object, the ray in its unit cube, clipped, entry/exit ->
+//   field lookup -> geometry-image position, the nearest hit, shaded and blended, recursively
+//   up to u_max_depth.
+// Recursion becomes a small stack of weighted rays. Dielectrics (the paper's "generalised to
+// refraction") split into the Fresnel-weighted reflection and the refraction; inside a mesh the
+// exit is the LAST hit along the line (the field read from the exit side); total internal
+// reflection keeps the ray inside. Shading follows the reference tracer (reference_tracer.cpp).
+#include "lib/scene.glsl"
+#include "lib/optics.glsl"
+
+layout(binding = 6) uniform sampler2D u_g_position;   // xyz world, w object (-1: none)
+layout(binding = 7) uniform sampler2D u_g_normal;     // xyz shading normal, w u
+layout(binding = 8) uniform sampler2D u_g_geometric;  // xyz geometric normal, w v
+
+uniform vec3 u_camera_position;
+uniform vec3 u_camera_forward;
+uniform vec3 u_camera_right;
+uniform vec3 u_camera_up;
+uniform vec2 u_tan_half;      // tan(fov/2) * aspect, tan(fov/2)
+uniform vec2 u_image_size;
+uniform vec2 u_jitter;        // sample offset from the pixel centre, pixels (x right, y down)
+uniform int u_max_depth;      // reflections/refractions after the camera ray (as gfield render)
+uniform float u_min_weight;   // branches below this path weight are not traced
+uniform int u_max_rays;       // secondary rays per pixel at most
+
+layout(location = 0) out vec4 o_color;  // linear radiance, alpha 1
+layout(location = 1) out vec4 o_hits;   // first hit object, secondary rays traced, 0, 0
+
+#define STACK_SIZE 8
+
+struct PathRay {
+  vec3 origin;
+  vec3 direction;
+  vec3 weight;
+  int depth;
+  int inside;  // the dielectric object the ray travels in, -1 for air
+  int from;    // the object it leaves
+};
+
+PathRay stack_rays[STACK_SIZE];
+int stack_count = 0;
+
+void push_ray(vec3 origin, vec3 direction, vec3 weight, int depth, int inside, int from) {
+  if (max(weight.r, max(weight.g, weight.b)) < u_min_weight) return;
+  if (stack_count >= STACK_SIZE) return;
+  PathRay r;
+  r.origin = origin;
+  r.direction = normalize(direction);
+  r.weight = weight;
+  r.depth = depth;
+  r.inside = inside;
+  r.from = from;
+  stack_rays[stack_count] = r;
+  stack_count++;
+}
+
+// The pixel's camera ray, as gfield::camera_ray.
+vec3 camera_direction() {
+  vec2 pixel = vec2(gl_FragCoord.x, u_image_size.y - gl_FragCoord.y) + u_jitter;
+  float sx = (2.0f * pixel.x / u_image_size.x - 1.0f) * u_tan_half.x;
+  float sy = (1.0f - 2.0f * pixel.y / u_image_size.y) * u_tan_half.y;
+  return normalize(u_camera_forward + sx * u_camera_right + sy * u_camera_up);
+}
+
+// What a ray sees at a hit: diffuse shading is added to `radiance`; mirrors and dielectrics
+// push their continuing rays.
+void shade_hit(SceneHit hit, vec3 geometric, PathRay ray, inout vec3 radiance) {
+  int k = hit.object;
+  int material = objects[k].kind.y;
+  vec3 d = ray.direction;
+  if (material == MATERIAL_DIFFUSE) {
+    radiance += ray.weight * shade_diffuse(hit, geometric, d);
+    return;
+  }
+  bool front = dot(d, geometric) < 0.0f;
+  vec3 n = front ? hit.normal : -hit.normal;
+  vec3 g = front ? geometric : -geometric;
+  float eps = object_epsilon(k);
+  if (material == MATERIAL_MIRROR) {
+    if (ray.depth >= u_max_depth) return;
+    vec3 r = reflect(d, n);
+    if (dot(r, g) <= 0.0f) r = reflect(d, g);
+    push_ray(hit.position + eps * g, r, ray.weight * objects[k].color.rgb, ray.depth + 1, -1, k);
+    return;
+  }
+  // Dielectric: the segment just travelled was inside when the surface is hit from the back.
+  vec3 weight = ray.weight;
+  if (!front) weight *= exp(-objects[k].absorption.rgb * hit.t);
+  if (ray.depth >= u_max_depth) return;
+  float ior = objects[k].color.w;
+  float n1 = front ? 1.0f : ior;
+  float n2 = front ? ior : 1.0f;
+  float r = fresnel_dielectric(-dot(d, n), n1, n2);
+  vec3 reflected = reflect(d, n);
+  vec3 transmitted = refract(d, n, n1 / n2);
+  bool tir = r >= 1.0f || dot(transmitted, transmitted) == 0.0f;
+  int outside_of = front ? -1 : k;  // where the reflected ray travels
+  if (tir) {
+    push_ray(hit.position + eps * g, reflected, weight, ray.depth + 1, outside_of, k);
+    return;
+  }
+  push_ray(hit.position + eps * g, reflected, weight * r, ray.depth + 1, outside_of, k);
+  push_ray(hit.position - eps * g, transmitted, weight * (1.0f - r), ray.depth + 1,
+           front ? k : -1, k);
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 g_position = texelFetch(u_g_position, pixel, 0);
+  vec4 g_normal = texelFetch(u_g_normal, pixel, 0);
+  vec4 g_geometric = texelFetch(u_g_geometric, pixel, 0);
+  vec3 d = camera_direction();
+  int first = int(g_position.w);
+  PathRay camera;
+  camera.origin = u_camera_position;
+  camera.direction = d;
+  camera.weight = vec3(1.0f);
+  camera.depth = 0;
+  camera.inside = -1;
+  camera.from = -1;
+  vec3 radiance = vec3(0.0f);
+  int traced = 0;
+  if (first < 0) {
+    radiance = environment_radiance(d);
+  } else {
+    SceneHit hit;
+    hit.hit = true;
+    hit.object = first;
+    hit.position = g_position.xyz;
+    hit.t = distance(u_camera_position, g_position.xyz);
+    hit.normal = g_normal.xyz;
+    hit.uv = vec2(g_normal.w, g_geometric.w);
+    shade_hit(hit, g_geometric.xyz, camera, radiance);
+    while (stack_count > 0 && traced < u_max_rays) {
+      stack_count--;
+      PathRay ray = stack_rays[stack_count];
+      traced++;
+      SceneHit next;
+      if (ray.inside >= 0) {
+        // Inside a dielectric: its own surface, from the exit side for meshes.
+        float t_min = objects[ray.inside].kind.x == SHAPE_MESH ? object_epsilon(ray.inside) : 0.0f;
+        next = intersect_object(ray.inside, ray.origin, ray.direction, t_min, 3.0e38f, true);
+      } else {
+        next = trace_scene(ray.origin, ray.direction, 3.0e38f, false, ray.from);
+      }
+      if (!next.hit) {
+        radiance += ray.weight * environment_radiance(ray.direction);
+        continue;
+      }
+      shade_hit(next, next.normal, ray, radiance);
+    }
+  }
+  o_color = vec4(radiance, 1.0f);
+  o_hits = vec4(float(first), float(traced), 0.0f, 0.0f);
+}

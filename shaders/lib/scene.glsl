@@ -1,0 +1,185 @@
+// The scene on the GPU: objects (analytic shapes and geometry-field meshes) and lights in
+// shader storage buffers (runtime/renderer.cpp fills them), the nearest hit of a world ray over
+// all objects (Li et al. 2006, TraceRay step 1-2), shadow rays and diffuse shading as the
+// reference tracer does them (preprocess/reference_tracer.cpp).
+
+#include "lib/gpu_assets.glsl"
+#include "lib/shapes.glsl"
+#include "lib/scene_environment.glsl"
+
+#define MATERIAL_DIFFUSE 0
+#define MATERIAL_MIRROR 1
+#define MATERIAL_DIELECTRIC 2
+#define TEXTURE_NONE 0
+#define TEXTURE_CHECKER 1
+#define TEXTURE_COLOR_CHART 2
+
+struct GpuObject {
+  mat4 to_world;   // object -> world
+  mat4 to_object;  // world -> object
+  vec4 color;      // rgb: albedo or mirror tint; w: index of refraction
+  vec4 absorption; // rgb: Beer-Lambert coefficient; w: world diagonal of the object's bounds
+  vec4 checker0;   // rgb: first checker colour; w: squares along u
+  vec4 checker1;   // rgb: second checker colour; w: squares along v
+  vec4 shape;      // radius, height, thickness, 0
+  vec4 size;       // xyz: box / quad / slab extents
+  vec4 box_min;    // mesh: the asset's box (mesh coordinates)
+  vec4 box_max;
+  ivec4 kind;      // shape type, material type, texture type, 0
+  ivec4 asset;     // mesh: layer, samples per side N, image size n, 0
+};
+
+struct GpuLight {
+  vec4 direction;  // xyz: the way a directional light travels; w: 0 directional, 1 point
+  vec4 position;   // xyz: point light position
+  vec4 color;      // rgb: colour * intensity
+};
+
+layout(std430, binding = 0) readonly buffer Objects { GpuObject objects[]; };
+layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
+
+uniform int u_object_count;
+uniform int u_light_count;
+uniform vec3 u_ambient;
+uniform int u_mode;             // GF_MODE_NEAREST, GF_MODE_LINEAR, GF_MODE_REFINED
+uniform bool u_self_reflection; // mesh objects look themselves up too
+uniform float u_scene_extent;   // diagonal of the scene bounds (ray offsets)
+
+struct SceneHit {
+  bool hit;
+  float t;         // along the (unit) world direction
+  int object;
+  vec3 position;   // world
+  vec3 normal;     // world, unit, out of the solid
+  vec2 uv;
+};
+
+SceneHit scene_miss() {
+  SceneHit h;
+  h.hit = false;
+  h.t = 3.0e38f;
+  h.object = -1;
+  h.position = vec3(0.0f);
+  h.normal = vec3(0.0f);
+  h.uv = vec2(0.0f);
+  return h;
+}
+
+// Offset of rays leaving a surface of object k (scene units).
+float object_epsilon(int k) {
+  return objects[k].kind.x == SHAPE_MESH ? 1.0e-3f * objects[k].absorption.w
+                                         : 1.0e-5f * u_scene_extent;
+}
+
+// The nearest (or, with `last`, the farthest: meshes only) hit of o + t d (world, d unit) on
+// object k with t in (t_min, t_max).
+SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, bool last) {
+  SceneHit h = scene_miss();
+  vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
+  vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
+  vec3 local_normal;
+  if (objects[k].kind.x == SHAPE_MESH) {
+    ivec4 a = objects[k].asset;
+    gs_select_asset(a.x, a.y, a.z, objects[k].box_min.xyz, objects[k].box_max.xyz);
+    GfHit g = gf_trace(lo, ld, t_min, t_max, u_mode, last);
+    if (!g.hit) return h;
+    h.t = g.t;
+    h.position = (objects[k].to_world * vec4(g.position, 1.0f)).xyz;
+    local_normal = g.normal;
+    h.uv = vec2(0.0f);  // meshes carry no texture coordinates (as in the reference tracer)
+  } else {
+    ShapeHit s = intersect_shape(objects[k].kind.x, objects[k].shape, objects[k].size.xyz, lo, ld,
+                                 t_min, t_max);
+    if (!s.hit) return h;
+    h.t = s.t;
+    h.position = o + s.t * d;
+    local_normal = s.normal;
+    h.uv = s.uv;
+  }
+  h.hit = true;
+  h.object = k;
+  h.normal = normalize(transpose(mat3(objects[k].to_object)) * local_normal);
+  return h;
+}
+
+// The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects; `opaque_only`
+// skips dielectrics (shadow rays). `from` is the object the ray leaves (-1: the camera): a mesh
+// object looks itself up only with u_self_reflection, and then beyond its own offset.
+SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, int from) {
+  SceneHit best = scene_miss();
+  best.t = t_max;
+  for (int k = 0; k < u_object_count; k++) {
+    if (opaque_only && objects[k].kind.y == MATERIAL_DIELECTRIC) continue;
+    float t_min = 0.0f;
+    if (k == from && objects[k].kind.x == SHAPE_MESH) {
+      if (!u_self_reflection) continue;
+      t_min = 2.0f * object_epsilon(k);
+    }
+    SceneHit h = intersect_object(k, o, d, t_min, best.t, false);
+    if (h.hit && h.t < best.t) best = h;
+  }
+  return best;
+}
+
+// Albedo of object k's diffuse material at texture coordinates uv (gfield::texture_albedo).
+vec3 object_albedo(int k, vec2 uv) {
+  int texture_type = objects[k].kind.z;
+  if (texture_type == TEXTURE_CHECKER) {
+    int cu = int(floor(uv.x * objects[k].checker0.w));
+    int cv = int(floor(uv.y * objects[k].checker1.w));
+    return ((cu + cv) & 1) == 0 ? objects[k].checker0.rgb : objects[k].checker1.rgb;
+  }
+  if (texture_type == TEXTURE_COLOR_CHART) {
+    const vec3 patches[24] = vec3[](
+        vec3(115, 82, 68), vec3(194, 150, 130), vec3(98, 122, 157), vec3(87, 108, 67),
+        vec3(133, 128, 177), vec3(103, 189, 170), vec3(214, 126, 44), vec3(80, 91, 166),
+        vec3(193, 90, 99), vec3(94, 60, 108), vec3(157, 188, 64), vec3(224, 163, 46),
+        vec3(56, 61, 150), vec3(70, 148, 73), vec3(175, 54, 60), vec3(231, 199, 31),
+        vec3(187, 86, 149), vec3(8, 133, 161), vec3(243, 243, 242), vec3(200, 200, 200),
+        vec3(160, 160, 160), vec3(122, 122, 121), vec3(85, 85, 85), vec3(52, 52, 52));
+    float u = clamp(uv.x, 0.0f, 1.0f) * 6.0f;
+    float v = clamp(1.0f - uv.y, 0.0f, 1.0f) * 4.0f;
+    int column = min(int(u), 5);
+    int row = min(int(v), 3);
+    float fu = u - float(column);
+    float fv = v - float(row);
+    const float gap = 0.08f;
+    if (fu < gap || fu > 1.0f - gap || fv < gap || fv > 1.0f - gap) return vec3(0.01f);
+    vec3 c = patches[row * 6 + column] / 255.0f;
+    // sRGB -> linear (IEC 61966-2-1)
+    return mix(c / 12.92f, pow((c + 0.055f) / 1.055f, vec3(2.4f)), greaterThan(c, vec3(0.04045f)));
+  }
+  return objects[k].color.rgb;
+}
+
+// Diffuse shading of a hit seen along `incoming`: albedo * (ambient + lights * cos / d^2), two
+// sided, with shadow rays blocked by diffuse and mirror objects.
+vec3 shade_diffuse(SceneHit hit, vec3 geometric_normal, vec3 incoming) {
+  vec3 albedo = object_albedo(hit.object, hit.uv);
+  float facing = dot(incoming, geometric_normal) < 0.0f ? 1.0f : -1.0f;
+  vec3 n = facing * hit.normal;
+  vec3 g = facing * geometric_normal;
+  vec3 light_sum = u_ambient;
+  for (int i = 0; i < u_light_count; i++) {
+    vec3 l;
+    float distance_to_light;
+    bool point = lights[i].direction.w > 0.5f;
+    if (!point) {
+      l = -lights[i].direction.xyz;
+      distance_to_light = 3.0e38f;
+    } else {
+      l = lights[i].position.xyz - hit.position;
+      distance_to_light = length(l);
+      if (distance_to_light <= 0.0f) continue;
+      l /= distance_to_light;
+    }
+    float cosine = dot(n, l);
+    if (cosine <= 0.0f || dot(l, g) <= 0.0f) continue;
+    vec3 origin = hit.position + object_epsilon(hit.object) * g;
+    SceneHit blocker = trace_scene(origin, l, distance_to_light, true, hit.object);
+    if (blocker.hit) continue;
+    float falloff = point ? 1.0f / (distance_to_light * distance_to_light) : 1.0f;
+    light_sum += lights[i].color.rgb * cosine * falloff;
+  }
+  return albedo * light_sum;
+}

@@ -1,0 +1,167 @@
+// Headless renders of the geometry-field renderer against the reference ray tracer (the library
+// behind `gfield render`), same scene, same depth, same sample positions (strata centres):
+// PSNR thresholds per scene, and refined > linear > nearest on every scene. Assets are built at
+// test time with `gfield build` on a shared mesh (small N to stay fast).
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "gfield/image_metrics.hpp"
+#include "gfield/scene.hpp"
+#include "preprocess/reference_tracer.hpp"
+#include "runtime/gl_context.hpp"
+#include "runtime/renderer.hpp"
+
+namespace gfield {
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path kDir = fs::path(GFIELD_TEST_TMP) / "runtime_render";
+constexpr int kSize = 128;
+constexpr int kSamples = 4;  // per pixel, both renderers, at the same positions
+
+/// The mesh object of the test scenes: spot, geometry image and field built by `gfield build`.
+std::string spot_object(const std::string& name, const std::string& transform,
+                        const std::string& material) {
+  const fs::path asset = kDir / "spot";
+  return R"({"name": ")" + name +
+         R"(", "shape": "mesh", "file": ")" GFIELD_SHARED_MESHES R"(/spot.obj", "gimage": ")" +
+         asset.string() + R"(.gimage.exr", "gfield": ")" + asset.string() +
+         R"(.gfield.exr", "transform": )" + transform + R"(, "material": )" + material + "}";
+}
+
+std::string scene_text(const std::string& objects, const std::string& camera) {
+  return R"({"camera": )" + camera + R"(, "image": {"width": 128, "height": 128},
+  "environment": {"type": "studio"}, "ambient": [0.1, 0.1, 0.1],
+  "lights": [{"type": "directional", "direction": [-0.3, -1, -0.4], "intensity": 1.5}],
+  "objects": [{"name": "floor", "shape": "quad", "size": [6, 6],
+               "transform": {"rotate": [-90, 0, 0], "translate": [0, -0.6, 0]},
+               "material": {"type": "diffuse", "texture": "checker", "scale": 12}}, )" +
+         objects + "]}";
+}
+
+const char* kCamera = R"({"position": [0, 1.2, 3.2], "target": [0, 0.3, 0], "fov": 40})";
+
+/// min_psnr: the refined mode's PSNR measured on llvmpipe minus a margin (docs/runtime.md);
+/// linear_beats_nearest: whether the paper's linear kernel measured better than nearest here.
+struct TestScene {
+  const char* name;
+  std::string text;
+  double min_psnr;
+  bool linear_beats_nearest;
+};
+
+std::vector<TestScene> test_scenes() {
+  return {
+      {"mirror",
+       scene_text(
+           spot_object("mirror spot", R"({"translate": [-0.45, 0, 0], "rotate": [0, 30, 0]})",
+                       R"({"type": "mirror", "tint": [0.9, 0.9, 0.9]})") +
+               ", " +
+               spot_object("red spot",
+                           R"({"translate": [0.6, 0, -0.4], "rotate": [0, -60, 0], "scale": 0.8})",
+                           R"({"type": "diffuse", "color": [0.8, 0.2, 0.15]})") +
+               R"(, {"name": "ball", "shape": "sphere", "radius": 0.3,
+                           "transform": {"translate": [0.5, -0.3, 0.6]},
+                           "material": {"type": "mirror", "tint": [0.8, 0.85, 1.0]}})",
+           kCamera),
+       26.5, false},
+      {"mirror-spheres",
+       scene_text(R"({"name": "left", "shape": "sphere", "radius": 0.5,
+                      "transform": {"translate": [-0.55, 0, 0]},
+                      "material": {"type": "mirror", "tint": [1.0, 0.6, 0.6]}},
+                     {"name": "right", "shape": "sphere", "radius": 0.5,
+                      "transform": {"translate": [0.55, 0, 0]},
+                      "material": {"type": "mirror", "tint": [0.6, 0.6, 1.0]}}, )" +
+                      spot_object("spot", R"({"translate": [0, 0.1, -1.2], "rotate": [0, 20, 0]})",
+                                  R"({"type": "diffuse", "color": [0.9, 0.8, 0.3]})"),
+                  kCamera),
+       31.5, false},
+      {"refraction",
+       scene_text(spot_object("glass spot", R"({"translate": [0, 0, 0.3], "rotate": [0, 40, 0]})",
+                              R"({"type": "dielectric", "ior": "crown-glass"})") +
+                      R"(, {"name": "chart", "shape": "quad", "size": [2.4, 1.6],
+                           "transform": {"translate": [0, 0.3, -1.0]},
+                           "material": {"type": "diffuse", "texture": "color-chart"}})",
+                  kCamera),
+       18.0, true},
+  };
+}
+
+Image clamped(Image image) {
+  for (glm::vec3& p : image.pixels)
+    p = glm::clamp(p, 0.0f, 1.0f);
+  return image;
+}
+
+class RenderTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    fs::create_directories(kDir);
+    const std::string command = std::string("\"") + GFIELD_CLI +
+                                "\" build \"" GFIELD_SHARED_MESHES "/spot.obj\" -o \"" +
+                                (kDir / "spot").string() +
+                                "\" --size 256 --samples 12 --method square --verify-rays 0 "
+                                "> \"" +
+                                (kDir / "build.log").string() + "\" 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    std::string error;
+    context_ = GlContext::create_headless(error).release();
+    ASSERT_NE(context_, nullptr) << error;
+  }
+  static void TearDownTestSuite() {
+    delete context_;
+    context_ = nullptr;
+  }
+  static GlContext* context_;
+};
+GlContext* RenderTest::context_ = nullptr;
+
+TEST_F(RenderTest, MatchesReferenceTracerAndRefinedBeatsLinearBeatsNearest) {
+  constexpr int kDepth = 6;
+  for (const TestScene& test : test_scenes()) {
+    SCOPED_TRACE(test.name);
+    const fs::path file = kDir / (std::string(test.name) + ".json");
+    std::ofstream(file) << test.text;
+    Scene scene;
+    std::string error;
+    ASSERT_TRUE(load_scene(file.string(), scene, error)) << error;
+
+    ReferenceTracer tracer;
+    ASSERT_TRUE(tracer.build(scene, error)) << error;
+    RenderOptions options;
+    options.width = options.height = kSize;
+    options.samples_per_pixel = kSamples;
+    options.max_depth = kDepth;
+    options.jitter = false;
+    const Image reference = clamped(tracer.render(options));
+
+    Renderer renderer;
+    ASSERT_TRUE(renderer.load(scene, default_shader_dir(), error)) << error;
+    double psnr[3] = {0.0, 0.0, 0.0};
+    for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
+      RenderSettings settings;
+      settings.mode = mode;
+      settings.max_depth = kDepth;
+      settings.samples_per_pixel = kSamples;
+      const Image image = clamped(renderer.render_image(kSize, kSize, settings));
+      psnr[int(mode)] = compare_images(image, reference).psnr;
+      std::printf("%s %s: PSNR %.2f dB\n", test.name, lookup_mode_name(mode), psnr[int(mode)]);
+      if (mode == LookupMode::kRefined)
+        save_image((kDir / (std::string(test.name) + "-refined.png")).string(), image, error);
+    }
+    save_image((kDir / (std::string(test.name) + "-reference.png")).string(), reference, error);
+    EXPECT_GE(psnr[2], test.min_psnr);
+    EXPECT_GT(psnr[2], psnr[1]);
+    EXPECT_GT(psnr[2], psnr[0]);
+    if (test.linear_beats_nearest)
+      EXPECT_GT(psnr[1], psnr[0]);
+  }
+}
+
+}  // namespace
+}  // namespace gfield
