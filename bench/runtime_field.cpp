@@ -1,0 +1,132 @@
+// gfield-view's geometry-field renderer on this machine's GL (llvmpipe here): ms per frame per
+// lookup mode at 512^2 and 1024^2, ns per traced pixel per bounce, the reference tracer's time
+// for the same image (1 spp, same depth) in the same run, and the PSNR of the refined render
+// against it. Example scenes of data/scenes, their mesh assets built with `gfield build` (N = 12,
+// 256^2 geometry images) into a temporary folder.
+//
+// Usage: bench_runtime_field [SIZE...]   (default 512 1024)
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "gfield/image_metrics.hpp"
+#include "preprocess/reference_tracer.hpp"
+#include "runtime/gl_context.hpp"
+#include "runtime/renderer.hpp"
+
+namespace fs = std::filesystem;
+using namespace gfield;
+
+namespace {
+
+/// The scene with every mesh object's assets built into `dir`; the rewritten scene's path.
+bool prepare_scene(const std::string& name, const fs::path& dir, std::string& out) {
+  const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes" / (name + ".json");
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
+  for (auto& object : scene["objects"]) {
+    if (object["shape"] != "mesh")
+      continue;
+    const fs::path mesh =
+        fs::weakly_canonical(source.parent_path() / object["file"].get<std::string>());
+    const fs::path asset = dir / mesh.stem();
+    if (!fs::exists(asset.string() + ".gfield.exr")) {
+      const std::string command =
+          std::string("\"") + GFIELD_CLI + "\" build \"" + mesh.string() + "\" -o \"" +
+          asset.string() + "\" --size 256 --samples 12 --method square --verify-rays 0 > /dev/null";
+      if (std::system(command.c_str()) != 0) {
+        std::fprintf(stderr, "%s failed\n", command.c_str());
+        return false;
+      }
+    }
+    object["file"] = mesh.string();
+    object["gimage"] = asset.string() + ".gimage.exr";
+    object["gfield"] = asset.string() + ".gfield.exr";
+  }
+  out = (dir / (name + ".json")).string();
+  std::ofstream(out) << scene.dump(2);
+  return true;
+}
+
+Image clamped(Image image) {
+  for (glm::vec3& p : image.pixels)
+    p = glm::clamp(p, 0.0f, 1.0f);
+  return image;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<int> sizes;
+  for (int i = 1; i < argc; ++i)
+    sizes.push_back(std::atoi(argv[i]));
+  if (sizes.empty())
+    sizes = {512, 1024};
+  const fs::path dir = fs::temp_directory_path() / "gfield_bench_runtime_field";
+  fs::create_directories(dir);
+  std::string error;
+  auto context = GlContext::create_headless(error);
+  if (!context) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitNoOpenGL;
+  }
+  std::printf("GL: %s, %s (%s)\n", context->renderer().c_str(), context->version().c_str(),
+              context->platform().c_str());
+  constexpr int kDepth = 4;
+  for (const char* name :
+       {"mirror-torus-instances", "two-mirror-spheres", "davis-wyman-color-chart"}) {
+    std::string file;
+    Scene scene;
+    if (!prepare_scene(name, dir, file) || !load_scene(file, scene, error)) {
+      std::fprintf(stderr, "%s: %s\n", name, error.c_str());
+      continue;
+    }
+    Renderer renderer;
+    if (!renderer.load(scene, default_shader_dir(), error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      continue;
+    }
+    ReferenceTracer tracer;
+    if (!tracer.build(scene, error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      continue;
+    }
+    for (int size : sizes) {
+      RenderOptions options;
+      options.width = options.height = size;
+      options.samples_per_pixel = 1;
+      options.max_depth = kDepth;
+      options.jitter = false;
+      RenderStats reference_stats;
+      const Image reference = clamped(tracer.render(options, &reference_stats));
+      std::printf("%s %dx%d depth %d: reference tracer %.1f ms (1 spp, 2 cores)\n", name, size,
+                  size, kDepth, reference_stats.seconds * 1e3);
+      for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
+        RenderSettings settings;
+        settings.mode = mode;
+        settings.max_depth = kDepth;
+        renderer.render_image(size, size, settings);  // warm-up (shader compilation)
+        FrameStats stats;
+        Image image;
+        constexpr int kFrames = 2;
+        for (int f = 0; f < kFrames; ++f)
+          image = renderer.render_image(size, size, settings, &stats);
+        const double ms = stats.milliseconds / kFrames;
+        const double rays = double(stats.secondary_rays) / kFrames;
+        const double psnr = compare_images(clamped(image), reference).psnr;
+        std::printf(
+            "  %-8s %8.1f ms/frame (%.2fx the reference tracer), %.1f ns per traced pixel "
+            "per bounce, %.0f traced pixels, PSNR %.2f dB\n",
+            lookup_mode_name(mode), ms, ms / (reference_stats.seconds * 1e3),
+            rays > 0 ? stats.trace_milliseconds / kFrames * 1e6 / rays : 0.0,
+            double(stats.traced_pixels) / kFrames, psnr);
+        std::fflush(stdout);
+      }
+    }
+  }
+  return 0;
+}
