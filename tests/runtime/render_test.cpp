@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "gfield/image_metrics.hpp"
 #include "gfield/scene.hpp"
@@ -160,6 +161,68 @@ TEST_F(RenderTest, MatchesReferenceTracerAndRefinedBeatsLinearBeatsNearest) {
     EXPECT_GT(psnr[2], psnr[0]);
     if (test.linear_beats_nearest)
       EXPECT_GT(psnr[1], psnr[0]);
+  }
+}
+
+/// An example scene of data/scenes with its mesh objects' assets built into the test folder.
+std::string example_scene(const std::string& name) {
+  const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes" / (name + ".json");
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
+  for (auto& object : scene["objects"]) {
+    if (object["shape"] != "mesh")
+      continue;
+    const fs::path mesh =
+        fs::weakly_canonical(source.parent_path() / object["file"].get<std::string>());
+    const fs::path asset = kDir / ("example-" + mesh.stem().string());
+    if (!fs::exists(asset.string() + ".gfield.exr")) {
+      const std::string command = std::string("\"") + GFIELD_CLI + "\" build \"" + mesh.string() +
+                                  "\" -o \"" + asset.string() +
+                                  "\" --size 256 --samples 12 --method square --verify-rays 0 "
+                                  "> /dev/null 2>&1";
+      EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    }
+    object["file"] = mesh.string();
+    object["gimage"] = asset.string() + ".gimage.exr";
+    object["gfield"] = asset.string() + ".gfield.exr";
+  }
+  return scene.dump();
+}
+
+TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
+  constexpr int kDepth = 4;
+  // Refined-mode PSNR measured on llvmpipe minus a margin (docs/runtime.md).
+  const std::pair<const char*, double> scenes[] = {{"mirror-torus-instances", 26.5},
+                                                   {"two-mirror-spheres", 44.0},
+                                                   {"davis-wyman-color-chart", 21.5}};
+  for (const auto& [name, min_psnr] : scenes) {
+    SCOPED_TRACE(name);
+    const fs::path file = kDir / (std::string(name) + ".json");
+    std::ofstream(file) << example_scene(name);
+    Scene scene;
+    std::string error;
+    ASSERT_TRUE(load_scene(file.string(), scene, error)) << error;
+    ReferenceTracer tracer;
+    ASSERT_TRUE(tracer.build(scene, error)) << error;
+    RenderOptions options;
+    options.width = options.height = kSize;
+    options.samples_per_pixel = 1;
+    options.max_depth = kDepth;
+    options.jitter = false;
+    const Image reference = clamped(tracer.render(options));
+    Renderer renderer;
+    ASSERT_TRUE(renderer.load(scene, default_shader_dir(), error)) << error;
+    double psnr[3] = {0.0, 0.0, 0.0};
+    for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
+      RenderSettings settings;
+      settings.mode = mode;
+      settings.max_depth = kDepth;
+      psnr[int(mode)] =
+          compare_images(clamped(renderer.render_image(kSize, kSize, settings)), reference).psnr;
+      std::printf("%s %s: PSNR %.2f dB\n", name, lookup_mode_name(mode), psnr[int(mode)]);
+    }
+    EXPECT_GE(psnr[2], min_psnr);
+    EXPECT_GE(psnr[2], psnr[1]);
+    EXPECT_GE(psnr[2], psnr[0]);
   }
 }
 
