@@ -75,8 +75,9 @@ TEST(FieldProbe, GpuLookupAgreesWithCpuLookup) {
       SCOPED_TRACE(std::string(lookup_mode_name(mode)) + (last ? " last" : " first"));
       EXPECT_GE(agreement, 0.999) << agree << " of " << rays.size();
       EXPECT_GT(hits, rays.size() / 4);  // the rays do exercise hits
-      if (!last && mode == LookupMode::kRefined)
+      if (!last && mode == LookupMode::kRefined) {
         EXPECT_GE(double(truth) / (96.0 * 96.0), 0.99);
+      }
       std::printf("%s %s: %.4f%% agree, %zu CPU hits of %zu rays\n", lookup_mode_name(mode),
                   last ? "last" : "first", 100.0 * agreement, hits, rays.size());
     }

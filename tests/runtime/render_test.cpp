@@ -159,8 +159,9 @@ TEST_F(RenderTest, MatchesReferenceTracerAndRefinedBeatsLinearBeatsNearest) {
     EXPECT_GE(psnr[2], test.min_psnr);
     EXPECT_GT(psnr[2], psnr[1]);
     EXPECT_GT(psnr[2], psnr[0]);
-    if (test.linear_beats_nearest)
+    if (test.linear_beats_nearest) {
       EXPECT_GT(psnr[1], psnr[0]);
+    }
   }
 }
 
