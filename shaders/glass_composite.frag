@@ -326,8 +326,8 @@ void main() {
     if (seen.a > 1.0f || layers[k].y < seen.a) in_front++;
   }
   // A pattern the displacement does not model (a slab's side faces, the cylinder's rims), or a
-  // pixel whose light does not take its class's path, is traced through the glass per pixel to
-  // the analytic shapes and the environment.
+  // pixel whose light does not take its class's path, is traced through the glass per pixel
+  // (scene_hit: the analytic shapes, the meshes in the scene image, then the environment).
   bool traced = cls < 0 || !path_matches(cls, in_front, u_camera_position, camera_direction());
   bool object = !traced && seen.a <= 1.0f;
   if (traced) in_front = count;

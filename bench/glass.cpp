@@ -1,0 +1,199 @@
+// The paper's Tables 1-3 (Mukai et al. 2013) on this machine: frame time of the glass method
+// (runtime/methods/glass.hpp, headless OpenGL) against the number of vertices behind the glass
+// (100K-800K) for a parallel plate (Table 1) and a hollow cylinder (Table 2: worst, best and
+// mean over camera positions), and against the resolution (640x480-1600x1200, 100K vertices,
+// Table 3); beside the reference tracer (`gfield render`, 1 sample per pixel) on the same frames.
+//
+//   bench_glass [--quick]   (--quick: 100K and 200K vertices, 2 azimuths, two resolutions)
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "gfield/scene.hpp"
+#include "preprocess/reference_tracer.hpp"
+#include "runtime/gl_context.hpp"
+#include "runtime/methods/glass.hpp"
+#include "runtime/shader_program.hpp"
+
+namespace {
+
+using namespace gfield;
+namespace fs = std::filesystem;
+
+/// A UV sphere of about `vertices` vertices written as OBJ (the object behind the glass).
+void write_sphere(const fs::path& file, int vertices) {
+  const int rings = std::max(4, int(std::sqrt(vertices / 2.0)));
+  const int segments = std::max(8, vertices / rings);
+  std::ofstream out(file);
+  const double pi = 3.14159265358979323846;
+  for (int j = 0; j < rings; ++j) {
+    const double e = pi * ((j + 0.5) / rings - 0.5);
+    for (int i = 0; i < segments; ++i) {
+      const double a = 2.0 * pi * i / segments;
+      out << "v " << std::cos(e) * std::sin(a) << ' ' << std::sin(e) << ' '
+          << std::cos(e) * std::cos(a) << '\n';
+    }
+  }
+  for (int j = 0; j + 1 < rings; ++j) {
+    for (int i = 0; i < segments; ++i) {
+      const int a = j * segments + i + 1, b = j * segments + (i + 1) % segments + 1;
+      const int c = a + segments, d = b + segments;
+      out << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
+    }
+  }
+}
+
+/// The plate scene of Figure 9 (30 degrees, W = 1) or the hollow cylinder of Figure 1, with the
+/// sphere mesh `mesh` behind the glass and no floor (every vertex is the object's).
+std::string scene_text(bool cylinder, const fs::path& mesh) {
+  const std::string glass =
+      cylinder ? R"({"name": "glass", "shape": "hollow-cylinder", "radius": 1.0, "thickness": 0.08,
+                     "height": 2.2, "transform": {"translate": [0, 1.1, 0]},
+                     "material": {"type": "dielectric", "ior": 1.5}})"
+               : R"({"name": "plate", "shape": "slab", "size": [2.0, 3.0], "thickness": 1.0,
+                     "transform": {"translate": [0.3, 1.1, 1.0], "rotate": [0, 30, 0]},
+                     "material": {"type": "dielectric", "ior": 1.5}})";
+  const std::string object_transform = cylinder ? R"({"translate": [0, 1.0, -1.6], "scale": 0.6})"
+                                                : R"({"translate": [0, 1.0, -1.5], "scale": 0.8})";
+  return R"({"camera": {"position": [0, 1.6, 8], "target": [0, 1.0, 0], "fov": 35},
+  "image": {"width": 640, "height": 480}, "environment": {"type": "studio"}, "ambient": 0.35,
+  "lights": [{"type": "directional", "direction": [-0.3, -1, -0.6], "intensity": 0.8}],
+  "objects": [)" +
+         glass + R"(, {"name": "ball", "shape": "mesh", "file": ")" + mesh.string() +
+         R"(", "transform": )" + object_transform +
+         R"(, "material": {"type": "diffuse", "color": [0.85, 0.55, 0.25]}}]})";
+}
+
+struct Timing {
+  double glass_ms = 0.0;      ///< mean frame of the glass method
+  double reference_ms = 0.0;  ///< one reference-tracer frame (1 spp, full Fresnel)
+  int class_images = 0;
+  long long vertices = 0;
+};
+
+Timing time_frames(const Scene& scene, int width, int height, int frames) {
+  Timing t;
+  std::string error;
+  GlassRenderer renderer;
+  GlassSettings settings;
+  if (!renderer.load(scene, default_shader_dir(), settings, error)) {
+    std::fprintf(stderr, "bench_glass: %s\n", error.c_str());
+    std::exit(2);
+  }
+  GlassStats warm;
+  renderer.render_image(width, height, settings, &warm);
+  GlassStats stats;
+  for (int f = 0; f < frames; ++f)
+    renderer.render_image(width, height, settings, &stats);
+  t.glass_ms = stats.milliseconds / frames;
+  t.class_images = stats.class_images;
+  t.vertices = stats.vertices;
+  ReferenceTracer tracer;
+  if (!tracer.build(scene, error)) {
+    std::fprintf(stderr, "bench_glass: %s\n", error.c_str());
+    std::exit(2);
+  }
+  RenderOptions options;
+  options.width = width;
+  options.height = height;
+  options.samples_per_pixel = 1;
+  options.jitter = false;
+  RenderStats reference;
+  tracer.render(options, &reference);
+  t.reference_ms = reference.seconds * 1e3;
+  return t;
+}
+
+Scene make_scene(bool cylinder, const fs::path& dir, int vertices) {
+  const fs::path mesh = dir / ("sphere-" + std::to_string(vertices) + ".obj");
+  if (!fs::exists(mesh))
+    write_sphere(mesh, vertices);
+  const fs::path file = dir / (cylinder ? "cylinder.json" : "plate.json");
+  std::ofstream(file) << scene_text(cylinder, mesh);
+  Scene scene;
+  std::string error;
+  if (!load_scene(file.string(), scene, error)) {
+    std::fprintf(stderr, "bench_glass: %s\n", error.c_str());
+    std::exit(2);
+  }
+  return scene;
+}
+
+double fps(double ms) {
+  return 1000.0 / std::max(ms, 1e-9);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they are measured
+  std::string error;
+  auto context = GlContext::create_headless(error);
+  if (!context) {
+    std::fprintf(stderr, "bench_glass: %s\n", error.c_str());
+    return 3;
+  }
+  const fs::path dir = fs::temp_directory_path() / "gfield_bench_glass";
+  fs::create_directories(dir);
+  std::printf("renderer: %s (%s, %s); reference tracer: Embree on the CPU, 1 spp\n",
+              context->renderer().c_str(), context->version().c_str(), context->platform().c_str());
+  const std::vector<int> counts =
+      quick ? std::vector<int>{100000, 200000, 400000}
+            : std::vector<int>{100000, 200000, 300000, 400000, 500000, 600000, 700000, 800000};
+  const int frames = quick ? 1 : 3;
+  const int azimuths = quick ? 2 : 4;
+
+  std::printf("\nTable 1: parallel plate (30 deg, W = 1.0), 640x480\n");
+  std::printf("%9s %10s %8s %12s %10s %9s\n", "vertices", "glass ms", "FPS", "reference ms",
+              "ref FPS", "speed-up");
+  for (const int n : counts) {
+    const Timing t = time_frames(make_scene(false, dir, n), 640, 480, frames);
+    std::printf("%9lld %10.1f %8.2f %12.1f %10.2f %8.2fx\n", t.vertices, t.glass_ms,
+                fps(t.glass_ms), t.reference_ms, fps(t.reference_ms), t.reference_ms / t.glass_ms);
+  }
+
+  std::printf("\nTable 2: hollow cylinder, 640x480, FPS over %d camera azimuths\n", azimuths);
+  std::printf("%9s %8s %8s %8s %8s %12s %9s\n", "vertices", "worst", "best", "mean", "images",
+              "ref FPS", "speed-up");
+  for (const int n : counts) {
+    Scene scene = make_scene(true, dir, n);
+    double worst = 1e30, best = 0.0, sum = 0.0, ref_sum = 0.0;
+    int images = 0;
+    long long vertices = 0;
+    for (int k = 0; k < azimuths; ++k) {
+      const double a = 0.35 * k;
+      scene.camera.position = glm::vec3(8.0f * std::sin(a), 1.6f, 8.0f * std::cos(a));
+      const Timing t = time_frames(scene, 640, 480, frames);
+      worst = std::min(worst, fps(t.glass_ms));
+      best = std::max(best, fps(t.glass_ms));
+      sum += t.glass_ms;
+      ref_sum += t.reference_ms;
+      images = std::max(images, t.class_images);
+      vertices = t.vertices;
+    }
+    std::printf("%9lld %8.2f %8.2f %8.2f %8d %12.2f %8.2fx\n", vertices, worst, best,
+                fps(sum / azimuths), images, fps(ref_sum / azimuths), ref_sum / sum);
+  }
+
+  std::printf("\nTable 3: hollow cylinder, 100K vertices, against the resolution\n");
+  std::printf("%11s %10s %8s %12s %10s %9s\n", "resolution", "glass ms", "FPS", "reference ms",
+              "ref FPS", "speed-up");
+  const std::vector<glm::ivec2> sizes =
+      quick ? std::vector<glm::ivec2>{{640, 480}, {1600, 1200}}
+            : std::vector<glm::ivec2>{{640, 480}, {800, 600}, {1024, 768}, {1600, 1200}};
+  const Scene scene = make_scene(true, dir, 100000);
+  for (const glm::ivec2 s : sizes) {
+    const Timing t = time_frames(scene, s.x, s.y, frames);
+    std::printf("%5dx%-5d %10.1f %8.2f %12.1f %10.2f %8.2fx\n", s.x, s.y, t.glass_ms,
+                fps(t.glass_ms), t.reference_ms, fps(t.reference_ms), t.reference_ms / t.glass_ms);
+  }
+  return 0;
+}
