@@ -16,7 +16,7 @@
 namespace gfield {
 
 struct ParameterizedMesh {
-  TriangleMesh mesh;                ///< V points, F triangles (mesh coordinates)
+  TriangleMesh mesh;                 ///< V points, F triangles (mesh coordinates)
   std::vector<glm::vec2> corner_uv;  ///< 3F geometry-image uvs, corner c of triangle f at 3f + c
 };
 
