@@ -10,6 +10,7 @@
 #include "gfield/scene.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/methods/glass_cli.hpp"
+#include "runtime/methods/image_space_cli.hpp"
 #include "runtime/renderer.hpp"
 #include "runtime/viewer.hpp"
 
@@ -96,12 +97,16 @@ int main(int argc, char** argv) {
   app.add_option("--out,-o", out, "Headless: write the picture to IMG.png or IMG.exr");
   app.add_option("--size", size_text, "Picture size WxH (default: the scene's)");
   std::vector<std::string> methods = {"field"};
+  methods.insert(methods.end(), image_space_method_names().begin(),
+                 image_space_method_names().end());
   methods.push_back("glass");
   app.add_option("--method", method, "Rendering method")->check(CLI::IsMember(methods));
   std::string glass_verge = "displaced";
   app.add_option("--glass-verge", glass_verge,
                  "glass: the hollow cylinder's verge displaced (the paper) or traced per pixel")
       ->check(CLI::IsMember({"displaced", "traced"}));
+  auto image_space = std::make_shared<ImageSpaceOptions>();
+  add_image_space_options(app, image_space);
   app.add_option("--mode", mode_text, "Geometry-field lookup: nearest, linear or refined")
       ->check(CLI::IsMember({"nearest", "linear", "refined"}));
   app.add_option("--depth", settings.max_depth,
@@ -145,6 +150,9 @@ int main(int argc, char** argv) {
       glass.trace_verge = glass_verge == "traced";
       return run_glass_headless(scene, shader_dir, glass, width, height, out, frames, bench);
     }
+    if (method != "field" || !image_space->side_by_side.empty() || !image_space->reference.empty())
+      return run_image_space_headless(scene, shader_dir, method, *image_space, settings, width,
+                                      height, out, frames, bench);
     return run_headless(scene, shader_dir, settings, width, height, out, frames, bench);
   }
   return run_viewer(scene, shader_dir, settings, width, height);

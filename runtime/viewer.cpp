@@ -15,6 +15,7 @@
 #include "gfield/optics.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/methods/glass_view.hpp"
+#include "runtime/methods/image_space_view.hpp"
 
 namespace gfield {
 
@@ -53,6 +54,7 @@ struct ViewerState {
   bool drag_moves_object = false;
   std::string shader_error;
   std::string message;
+  ImageSpaceView image_space;
   GlassView glass;
 };
 
@@ -182,6 +184,7 @@ void panel(ViewerState& s, const GlContext& context, const FrameStats& stats, do
   const char* methods[] = {"geometry field (Li et al. 2006)"};
   int method = 0;
   ImGui::Combo("method", &method, methods, 1);
+  image_space_panel(s.image_space);
   glass_panel(s.glass);
   int mode = int(s.settings.mode);
   const char* modes[] = {"nearest", "linear", "refined"};
@@ -282,6 +285,7 @@ int run_viewer(const Scene& scene, const std::filesystem::path& shader_dir,
   s.renderer = &renderer;
   s.settings = settings;
   s.camera = s.initial_camera = scene.camera;
+  s.image_space.shader_dir = shader_dir;
   s.glass.shader_dir = shader_dir;
   glfwSetWindowUserPointer(window, &s);
 
@@ -379,7 +383,8 @@ int run_viewer(const Scene& scene, const std::filesystem::path& shader_dir,
     // Counting traced pixels reads the hit buffer back: every 30 frames.
     const bool count = frame_number % 30 == 0;
     if (!glass_draw(s.glass, renderer.scene(), s.camera, frame))
-      renderer.render(s.camera, s.settings, frame, glm::vec2(0.0f), count ? &stats : nullptr);
+      image_space_draw(s.image_space, renderer, s.camera, s.settings, frame,
+                       count ? &stats : nullptr);
     if (count)
       shown = stats;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

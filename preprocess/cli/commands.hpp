@@ -24,5 +24,6 @@ void add_verify_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_image_command(CLI::App& app);
+void add_thickness_command(CLI::App& app);
 
 }  // namespace gfield

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   gfield::add_render_command(app);
   gfield::add_compare_command(app);
   gfield::add_image_command(app);
+  gfield::add_thickness_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,64 @@
+#version 450
+// Davis & Wyman 2007, "Interactive Refractions with Total Internal Reflection", pass 4: the view
+// ray refracts at the front face; each bounce clips the ray to the view frustum and intersects it
+// by binary search with the back-face depth map and (first bounce, or always unless
+// u_back_only_later) the front-face map, keeps the candidate more aligned with the ray, stops on
+// a miss (both candidates misaligned), and at the hit either refracts out (below the critical
+// angle) or reflects totally and bounces again, up to u_bounces intersections. The ray that
+// leaves (or the one left after the last bounce) meets the nearby geometry (its depth map, same
+// search) or an analytic background, then the environment.
+#include "lib/image_space.glsl"
+#include "lib/image_space_surface.glsl"
+
+layout(binding = 11) uniform sampler2D u_back;    // back faces: normal, eye depth
+layout(binding = 12) uniform sampler2D u_front;   // front faces: normal, eye depth
+layout(binding = 13) uniform sampler2D u_nearby;  // nearby geometry: colour, eye depth
+
+uniform int u_bounces;            // internal intersections, 0..4 (more are allowed)
+uniform int u_iterations_first;   // binary-search steps on the first transmitted ray (8)
+uniform int u_iterations_later;   // on later rays (5)
+uniform bool u_back_only_later;   // later bounces search the back-face map only
+uniform int u_background;         // BACKGROUND_DEPTH_MAP or BACKGROUND_ANALYTIC
+uniform int u_exit_iterations;    // steps in the nearby-geometry map
+uniform float u_min_alignment;    // cosine below which a candidate is a miss
+uniform float u_offset;           // start offset along rays (scene units)
+
+layout(location = 0) out vec4 o_color;
+
+void main() {
+  IsSurface s;
+  if (!is_resolve_surface(s)) discard;
+  float ior = objects[u_object].color.w;
+  vec3 v = is_camera_direction();
+  vec3 n1 = dot(v, s.normal) > 0.0f ? -s.normal : s.normal;
+  vec3 o = s.position;
+  vec3 d = refract(v, n1, 1.0f / ior);
+  if (dot(d, d) == 0.0f) d = reflect(v, n1);
+  for (int b = 0; b < u_bounces; b++) {
+    int iterations = b == 0 ? u_iterations_first : u_iterations_later;
+    MapHit best = is_search_depth_map(u_back, o, d, iterations, u_offset);
+    bool front = false;
+    if (b == 0 || !u_back_only_later) {
+      MapHit f = is_search_depth_map(u_front, o, d, iterations, u_offset);
+      if (f.found && (!best.found || f.alignment > best.alignment)) {
+        best = f;
+        front = true;
+      }
+    }
+    if (!best.found || best.alignment < u_min_alignment) break;
+    vec3 n = front ? texelFetch(u_front, best.texel, 0).xyz : texelFetch(u_back, best.texel, 0).xyz;
+    if (dot(d, n) > 0.0f) n = -n;
+    o = best.position;
+    vec3 t = refract(d, n, ior);
+    if (dot(t, t) == 0.0f) {
+      d = reflect(d, n);  // total internal reflection: one more bounce
+      continue;
+    }
+    d = t;
+    break;
+  }
+  vec3 c = u_background == BACKGROUND_ANALYTIC
+               ? is_exit_analytic(o, d)
+               : is_exit_depth_map(u_nearby, o, d, u_exit_iterations, u_offset, u_min_alignment);
+  o_color = vec4(c, 1.0f);
+}
