@@ -18,6 +18,7 @@
 #include "gfield/optics.hpp"
 #include "preprocess/analytic_primitives.hpp"
 #include "preprocess/embree_mesh.hpp"
+#include "preprocess/outward_normals.hpp"
 #include "preprocess/mesh_io.hpp"
 
 namespace gfield {
@@ -181,35 +182,8 @@ struct ReferenceTracer::Impl {
     if (!load_mesh(file, record.mesh, error))
       return false;
     const TriangleMesh& mesh = record.mesh;
-    // Outward orientation by the signed volume (meaningful for closed meshes).
-    double volume = 0.0;
-    for (const glm::ivec3& f : mesh.triangles) {
-      volume += glm::dot(mesh.positions[size_t(f.x)],
-                         glm::cross(mesh.positions[size_t(f.y)], mesh.positions[size_t(f.z)]));
-    }
-    record.orientation = volume < 0.0 ? -1.0 : 1.0;
-    // Angle-weighted vertex normals.
-    record.vertex_normals.assign(mesh.positions.size(), glm::dvec3(0.0));
-    for (const glm::ivec3& f : mesh.triangles) {
-      const glm::dvec3 p[3] = {mesh.positions[size_t(f.x)], mesh.positions[size_t(f.y)],
-                               mesh.positions[size_t(f.z)]};
-      const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
-      const double len = glm::length(n);
-      if (len <= 0.0)
-        continue;
-      for (int k = 0; k < 3; ++k) {
-        const glm::dvec3 a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
-        const double la = glm::length(a), lb = glm::length(b);
-        if (la <= 0.0 || lb <= 0.0)
-          continue;
-        const double angle = std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0));
-        record.vertex_normals[size_t(f[k])] += angle * n / len;
-      }
-    }
-    for (glm::dvec3& n : record.vertex_normals) {
-      const double len = glm::length(n);
-      n = len > 0.0 ? record.orientation * n / len : glm::dvec3(0.0);
-    }
+    record.orientation = outward_orientation(mesh);
+    record.vertex_normals = outward_vertex_normals(mesh);
     record.scene = rtcNewScene(device);
     rtcSetSceneBuildQuality(record.scene, RTC_BUILD_QUALITY_MEDIUM);
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);

@@ -1,4 +1,5 @@
 #include "runtime/gpu_assets.hpp"
+#include "preprocess/outward_normals.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -34,33 +35,12 @@ std::vector<unsigned> geometry_image_triangles(const GeometryImage& image) {
 }
 
 std::vector<glm::vec3> angle_weighted_normals(const TriangleMesh& mesh) {
-  double volume = 0.0;
-  for (const glm::ivec3& f : mesh.triangles)
-    volume += glm::dot(mesh.positions[size_t(f.x)],
-                       glm::cross(mesh.positions[size_t(f.y)], mesh.positions[size_t(f.z)]));
-  const double orientation = volume < 0.0 ? -1.0 : 1.0;
-  std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0.0));
-  for (const glm::ivec3& f : mesh.triangles) {
-    const glm::dvec3 p[3] = {mesh.positions[size_t(f.x)], mesh.positions[size_t(f.y)],
-                             mesh.positions[size_t(f.z)]};
-    const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
-    const double length = glm::length(n);
-    if (length <= 0.0)
-      continue;
-    for (int k = 0; k < 3; ++k) {
-      const glm::dvec3 a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
-      const double la = glm::length(a), lb = glm::length(b);
-      if (la <= 0.0 || lb <= 0.0)
-        continue;
-      const double angle = std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0));
-      sum[size_t(f[k])] += angle * n / length;
+  const std::vector<glm::dvec3> outward = outward_vertex_normals(mesh);
+  std::vector<glm::vec3> normals(outward.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+  for (size_t v = 0; v < outward.size(); ++v) {
+    if (outward[v] != glm::dvec3(0.0)) {
+      normals[v] = glm::vec3(outward[v]);
     }
-  }
-  std::vector<glm::vec3> normals(sum.size(), glm::vec3(0.0f, 0.0f, 1.0f));
-  for (size_t v = 0; v < sum.size(); ++v) {
-    const double length = glm::length(sum[v]);
-    if (length > 0.0)
-      normals[v] = glm::vec3(orientation * sum[v] / length);
   }
   return normals;
 }

@@ -12,6 +12,7 @@
 #include "gfield/glass_displacement.hpp"
 #include "preprocess/analytic_primitives.hpp"
 #include "preprocess/mesh_io.hpp"
+#include "preprocess/outward_normals.hpp"
 
 namespace gfield {
 namespace {
@@ -148,33 +149,10 @@ bool mesh_soup(const std::string& file, TriangleSoup& soup, std::string& error) 
   TriangleMesh mesh;
   if (!load_mesh(file, mesh, error))
     return false;
-  double volume = 0.0;
-  for (const glm::ivec3& f : mesh.triangles) {
-    volume += glm::dot(mesh.positions[size_t(f.x)],
-                       glm::cross(mesh.positions[size_t(f.y)], mesh.positions[size_t(f.z)]));
-  }
-  const double orientation = volume < 0.0 ? -1.0 : 1.0;
-  std::vector<glm::dvec3> normals(mesh.positions.size(), glm::dvec3(0.0));
-  for (const glm::ivec3& f : mesh.triangles) {
-    const glm::dvec3 p[3] = {mesh.positions[size_t(f.x)], mesh.positions[size_t(f.y)],
-                             mesh.positions[size_t(f.z)]};
-    const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
-    const double len = glm::length(n);
-    if (len <= 0.0)
-      continue;
-    for (int k = 0; k < 3; ++k) {
-      const glm::dvec3 a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
-      const double la = glm::length(a), lb = glm::length(b);
-      if (la <= 0.0 || lb <= 0.0)
-        continue;
-      const double angle = std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0));
-      normals[size_t(f[k])] += angle * n / len;
-    }
-  }
+  const std::vector<glm::dvec3> normals = outward_vertex_normals(mesh);
   for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    const double len = glm::length(normals[v]);
-    const glm::dvec3 n = len > 0.0 ? orientation * normals[v] / len : glm::dvec3(0.0);
-    soup.vertices.push_back({glm::vec3(mesh.positions[v]), glm::vec3(n), glm::vec2(0.0f)});
+    soup.vertices.push_back(
+        {glm::vec3(mesh.positions[v]), glm::vec3(normals[v]), glm::vec2(0.0f)});
   }
   for (const glm::ivec3& f : mesh.triangles)
     soup.indices.insert(soup.indices.end(), {unsigned(f.x), unsigned(f.y), unsigned(f.z)});
