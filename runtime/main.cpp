@@ -150,6 +150,7 @@ int main(int argc, char** argv) {
       glass.trace_verge = glass_verge == "traced";
       return run_glass_headless(scene, shader_dir, glass, width, height, out, frames, bench);
     }
+    image_space->settings.samples_per_pixel = settings.samples_per_pixel;
     if (method != "field" || !image_space->side_by_side.empty() || !image_space->reference.empty())
       return run_image_space_headless(scene, shader_dir, method, *image_space, settings, width,
                                       height, out, frames, bench);

@@ -10,6 +10,7 @@
 #include "gfield/environment.hpp"
 #include "gfield/exr_io.hpp"
 #include "preprocess/mesh_io.hpp"
+#include "runtime/supersample.hpp"
 
 namespace gfield {
 namespace {
@@ -76,14 +77,6 @@ std::vector<float> cube_vertices() {
     }
   }
   return v;
-}
-
-/// Strata grid nx x ny = spp, nx the largest divisor <= sqrt(spp) (as the reference tracer).
-glm::ivec2 strata(int spp) {
-  int nx = std::max(1, int(std::sqrt(double(spp))));
-  while (spp % nx != 0)
-    --nx;
-  return {nx, spp / nx};
 }
 
 double elapsed_ms(std::chrono::steady_clock::time_point start) {
@@ -318,10 +311,7 @@ void Renderer::render(const Camera& camera, const RenderSettings& settings, Fram
   const glm::mat4 view = glm::lookAt(camera.position, camera.target, camera.up);
   glm::mat4 projection =
       glm::perspective(glm::radians(camera.fov_degrees), aspect, near_plane, far_plane);
-  // Sub-pixel offset: pixel x right, y down -> NDC.
-  projection = glm::translate(glm::mat4(1.0f), glm::vec3(2.0f * jitter.x / float(width),
-                                                         -2.0f * jitter.y / float(height), 0.0f)) *
-               projection;
+  projection = jittered_projection(projection, jitter, width, height);
   const glm::mat4 view_projection = projection * view;
 
   // Pass 1: G-buffer of first hits.
@@ -430,20 +420,10 @@ void Renderer::render(const Camera& camera, const RenderSettings& settings, Fram
 
 Image Renderer::render_image(int width, int height, const RenderSettings& settings,
                              FrameStats* stats) {
-  Framebuffer target;
-  target.resize(width, height);
-  const int spp = std::max(1, settings.samples_per_pixel);
-  const glm::ivec2 grid = strata(spp);
-  Image image(width, height);
-  for (int s = 0; s < spp; ++s) {
-    const glm::vec2 jitter((float(s % grid.x) + 0.5f) / float(grid.x) - 0.5f,
-                           (float(s / grid.x) + 0.5f) / float(grid.y) - 0.5f);
-    render(scene_.camera, settings, target, jitter, stats);
-    const RgbaImage frame = target.read();
-    for (size_t i = 0; i < image.pixels.size(); ++i)
-      image.pixels[i] += glm::vec3(frame.pixels[i]) / float(spp);
-  }
-  return image;
+  return render_supersampled(width, height, settings.samples_per_pixel,
+                             [&](Framebuffer& target, glm::vec2 jitter) {
+                               render(scene_.camera, settings, target, jitter, stats);
+                             });
 }
 
 bool Renderer::reload_shaders_if_changed(std::string& error) {

@@ -18,9 +18,10 @@ uniform bool u_fresnel;       // blend in the Fresnel-weighted reflection
 
 layout(location = 0) out vec4 o_color;
 
+// What the cube map shows along the unit direction d.
 vec3 cube_radiance(vec3 d) {
   vec4 c = texture(u_cube, d);
-  return c.rgb + (1.0f - c.a) * environment_radiance(normalize(d));
+  return c.rgb + (1.0f - c.a) * environment_radiance(d);
 }
 
 void main() {
@@ -29,7 +30,7 @@ void main() {
   vec3 v = is_camera_direction();
   vec3 n = dot(v, s.normal) > 0.0f ? -s.normal : s.normal;
   int k = u_object;
-  vec3 reflected = cube_radiance(reflect(v, n));
+  vec3 reflected = cube_radiance(normalize(reflect(v, n)));
   if (u_reflect_only || objects[k].kind.y == MATERIAL_MIRROR) {
     vec3 tint = objects[k].kind.y == MATERIAL_MIRROR ? objects[k].color.rgb : vec3(1.0f);
     o_color = vec4(tint * reflected, 1.0f);
@@ -40,11 +41,13 @@ void main() {
   vec3 t;
   bool total_reflection;
   if (u_per_vertex) {
-    t = v_hurley;
+    t = normalize(v_hurley);
     total_reflection = ior < 1.0f && 1.0f - cos_i * cos_i > ior * ior;
   } else {
-    t = refract(v, n, 1.0f / ior);
-    total_reflection = dot(t, t) == 0.0f;
+    // Index 1 does not bend the ray: v itself, not refract()'s rounding of it.
+    vec3 r = refract(v, n, 1.0f / ior);
+    total_reflection = dot(r, r) == 0.0f;
+    t = ior == 1.0f ? v : total_reflection ? r : normalize(r);
   }
   vec3 c = total_reflection ? reflected : cube_radiance(t);
   if (u_fresnel && !total_reflection) c = mix(c, reflected, fresnel_dielectric(cos_i, 1.0f, ior));

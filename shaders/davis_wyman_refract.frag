@@ -36,10 +36,10 @@ void main() {
   if (dot(d, d) == 0.0f) d = reflect(v, n1);
   for (int b = 0; b < u_bounces; b++) {
     int iterations = b == 0 ? u_iterations_first : u_iterations_later;
-    MapHit best = is_search_depth_map(u_back, o, d, iterations, u_offset);
+    MapHit best = is_search_depth_map(u_back, o, d, iterations, u_offset, u_refractor_depths);
     bool front = false;
     if (b == 0 || !u_back_only_later) {
-      MapHit f = is_search_depth_map(u_front, o, d, iterations, u_offset);
+      MapHit f = is_search_depth_map(u_front, o, d, iterations, u_offset, u_refractor_depths);
       if (f.found && (!best.found || f.alignment > best.alignment)) {
         best = f;
         front = true;

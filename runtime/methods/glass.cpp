@@ -13,6 +13,7 @@
 #include "preprocess/analytic_primitives.hpp"
 #include "preprocess/mesh_io.hpp"
 #include "preprocess/outward_normals.hpp"
+#include "runtime/supersample.hpp"
 
 namespace gfield {
 namespace {
@@ -151,8 +152,7 @@ bool mesh_soup(const std::string& file, TriangleSoup& soup, std::string& error) 
     return false;
   const std::vector<glm::dvec3> normals = outward_vertex_normals(mesh);
   for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    soup.vertices.push_back(
-        {glm::vec3(mesh.positions[v]), glm::vec3(normals[v]), glm::vec2(0.0f)});
+    soup.vertices.push_back({glm::vec3(mesh.positions[v]), glm::vec3(normals[v]), glm::vec2(0.0f)});
   }
   for (const glm::ivec3& f : mesh.triangles)
     soup.indices.insert(soup.indices.end(), {unsigned(f.x), unsigned(f.y), unsigned(f.z)});
@@ -272,14 +272,6 @@ GlassPlate slab_plate(const SceneObject& object, int pair) {
   plate.thickness = float(std::abs(glm::dot(a - b, normal)));
   plate.ior = object.material.ior;
   return plate;
-}
-
-/// Strata grid nx x ny = spp, nx the largest divisor <= sqrt(spp) (as the reference tracer).
-glm::ivec2 strata(int spp) {
-  int nx = std::max(1, int(std::sqrt(double(spp))));
-  while (spp % nx != 0)
-    --nx;
-  return {nx, spp / nx};
 }
 
 }  // namespace
@@ -652,9 +644,7 @@ void GlassRenderer::render(const Camera& camera, const GlassSettings& settings, 
   const glm::mat4 view = glm::lookAt(camera.position, camera.target, camera.up);
   glm::mat4 projection =
       glm::perspective(glm::radians(camera.fov_degrees), aspect, near_plane, far_plane);
-  projection = glm::translate(glm::mat4(1.0f), glm::vec3(2.0f * jitter.x / float(width),
-                                                         -2.0f * jitter.y / float(height), 0.0f)) *
-               projection;
+  projection = jittered_projection(projection, jitter, width, height);
   const glm::mat4 view_projection = projection * view;
 
   // 2. Depth peeling of the glass in front of the scene: up to 4 layers.
@@ -839,20 +829,10 @@ void GlassRenderer::render(const Camera& camera, const GlassSettings& settings, 
 
 Image GlassRenderer::render_image(int width, int height, const GlassSettings& settings,
                                   GlassStats* stats) {
-  Framebuffer target;
-  target.resize(width, height);
-  const int spp = std::max(1, settings.samples_per_pixel);
-  const glm::ivec2 grid = strata(spp);
-  Image image(width, height);
-  for (int s = 0; s < spp; ++s) {
-    const glm::vec2 jitter((float(s % grid.x) + 0.5f) / float(grid.x) - 0.5f,
-                           (float(s / grid.x) + 0.5f) / float(grid.y) - 0.5f);
-    render(scene_.camera, settings, target, jitter, stats);
-    const RgbaImage frame = target.read();
-    for (size_t i = 0; i < image.pixels.size(); ++i)
-      image.pixels[i] += glm::vec3(frame.pixels[i]) / float(spp);
-  }
-  return image;
+  return render_supersampled(width, height, settings.samples_per_pixel,
+                             [&](Framebuffer& target, glm::vec2 jitter) {
+                               render(scene_.camera, settings, target, jitter, stats);
+                             });
 }
 
 bool GlassRenderer::reload_shaders_if_changed(std::string& error) {

@@ -10,6 +10,7 @@
 #include "gfield/environment.hpp"
 #include "gfield/exr_io.hpp"
 #include "gfield/thickness.hpp"
+#include "runtime/supersample.hpp"
 
 namespace gfield {
 namespace {
@@ -132,7 +133,10 @@ struct ImageSpaceRenderer::View {
   glm::vec3 position, forward, right, up;
   glm::vec2 tan_half;
   glm::vec2 near_far;
+  glm::vec2 refractor_depths;  ///< eye-depth range of the dielectrics' bounds, within near_far
+  glm::vec2 nearby_depths;     ///< of the other objects' bounds
   glm::mat4 view_projection;
+  glm::vec2 jitter = glm::vec2(0.0f);  ///< sample offset from the pixel centres (x right, y down)
   int width = 0, height = 0;
 };
 
@@ -302,6 +306,27 @@ void ImageSpaceRenderer::object_bounds(int object, glm::vec3& lo, glm::vec3& hi)
   }
 }
 
+glm::vec2 ImageSpaceRenderer::eye_depth_range(const View& view, bool dielectrics) const {
+  glm::vec2 range(3.0e38f, -3.0e38f);
+  for (int k = 0; k < int(scene_.objects.size()); ++k) {
+    if ((scene_.objects[size_t(k)].material.type == MaterialType::kDielectric) != dielectrics)
+      continue;
+    glm::vec3 lo, hi;
+    object_bounds(k, lo, hi);
+    for (int c = 0; c < 8; ++c) {
+      const glm::vec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+      const float z = glm::dot(corner - view.position, view.forward);
+      range = glm::vec2(std::min(range.x, z), std::max(range.y, z));
+    }
+  }
+  if (range.x > range.y)
+    return view.near_far;
+  // A margin of 1% of the scene against rounding at the bounds.
+  const float margin = 0.01f * extent_;
+  return glm::vec2(std::max(view.near_far.x, range.x - margin),
+                   std::min(view.near_far.y, range.y + margin));
+}
+
 void ImageSpaceRenderer::update_scene() {
   std::vector<GpuObject> objects;
   glm::vec3 lo(scene_.camera.position), hi(scene_.camera.position);
@@ -411,6 +436,9 @@ void ImageSpaceRenderer::set_common_uniforms(const ShaderProgram& program, const
   glUniform2fv(u("u_tan_half"), 1, &view.tan_half.x);
   glUniform2f(u("u_image_size"), float(view.width), float(view.height));
   glUniform2fv(u("u_near_far"), 1, &view.near_far.x);
+  glUniform2fv(u("u_jitter"), 1, &view.jitter.x);
+  glUniform2fv(u("u_refractor_depths"), 1, &view.refractor_depths.x);
+  glUniform2fv(u("u_nearby_depths"), 1, &view.nearby_depths.x);
   glUniformMatrix4fv(u("u_view_projection"), 1, GL_FALSE, glm::value_ptr(view.view_projection));
   glUniform3fv(u("u_eye"), 1, &view.position.x);
   glUniform3fv(u("u_forward"), 1, &view.forward.x);
@@ -508,7 +536,7 @@ void ImageSpaceRenderer::render_nearby_map(ScreenMap& map, const View& view) {
 }
 
 void ImageSpaceRenderer::render(const Camera& camera, const ImageSpaceSettings& settings,
-                                Framebuffer& target, ImageSpaceStats* stats) {
+                                Framebuffer& target, glm::vec2 jitter, ImageSpaceStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   const ImageSpaceMethod method = settings.method;
   View view;
@@ -526,6 +554,8 @@ void ImageSpaceRenderer::render(const Camera& camera, const ImageSpaceSettings& 
   view.view_projection =
       glm::perspective(glm::radians(camera.fov_degrees), aspect, view.near_far.x, view.near_far.y) *
       glm::lookAt(camera.position, camera.target, camera.up);
+  view.refractor_depths = eye_depth_range(view, true);
+  view.nearby_depths = eye_depth_range(view, false);
 
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, objects_buffer_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, lights_buffer_);
@@ -569,7 +599,14 @@ void ImageSpaceRenderer::render(const Camera& camera, const ImageSpaceSettings& 
     pass_ms = elapsed_ms(start);
   }
 
-  // The picture: the environment, opaque objects, then the method's objects.
+  // The picture: the environment, opaque objects, then the method's objects, at the sample
+  // offset.
+  view.jitter = jitter;
+  view.view_projection =
+      jittered_projection(glm::perspective(glm::radians(camera.fov_degrees), aspect,
+                                           view.near_far.x, view.near_far.y),
+                          jitter, view.width, view.height) *
+      glm::lookAt(camera.position, camera.target, camera.up);
   target.bind();
   glClear(GL_DEPTH_BUFFER_BIT);
   glDisable(GL_DEPTH_TEST);
@@ -620,14 +657,10 @@ void ImageSpaceRenderer::render(const Camera& camera, const ImageSpaceSettings& 
 
 Image ImageSpaceRenderer::render_image(int width, int height, const ImageSpaceSettings& settings,
                                        ImageSpaceStats* stats) {
-  Framebuffer target;
-  target.resize(width, height);
-  render(scene_.camera, settings, target, stats);
-  const RgbaImage frame = target.read();
-  Image image(width, height);
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    image.pixels[i] = glm::vec3(frame.pixels[i]);
-  return image;
+  return render_supersampled(width, height, settings.samples_per_pixel,
+                             [&](Framebuffer& target, glm::vec2 jitter) {
+                               render(scene_.camera, settings, target, jitter, stats);
+                             });
 }
 
 bool ImageSpaceRenderer::reload_shaders_if_changed(std::string& error) {

@@ -61,6 +61,9 @@ struct ImageSpaceSettings {
   float buffer_scale = 1.0f;
   ExitBackground background = ExitBackground::kDepthMap;
   float min_alignment = 0.98f;  ///< cosine below which a depth-map candidate is a miss
+  /// Stratified samples per pixel of render_image (the final pass is drawn once per sample with
+  /// a sub-pixel offset; the screen maps and cube maps are not offset).
+  int samples_per_pixel = 1;
 };
 
 struct ImageSpaceStats {
@@ -88,10 +91,12 @@ class ImageSpaceRenderer {
   Scene& scene() { return scene_; }
   void update_scene();
 
-  /// Renders one frame of `camera` into `target` (its size).
+  /// Renders one frame of `camera` into `target` (its size), its final pass with a sample offset
+  /// `jitter` in pixels (x right, y down) from the pixel centres.
   void render(const Camera& camera, const ImageSpaceSettings& settings, Framebuffer& target,
-              ImageSpaceStats* stats = nullptr);
-  /// Renders width x height of the scene's camera and reads it back.
+              glm::vec2 jitter = glm::vec2(0.0f), ImageSpaceStats* stats = nullptr);
+  /// Renders width x height of the scene's camera with settings.samples_per_pixel samples per
+  /// pixel and reads it back (linear radiance, rows top to bottom).
   Image render_image(int width, int height, const ImageSpaceSettings& settings,
                      ImageSpaceStats* stats = nullptr);
 
@@ -121,6 +126,9 @@ class ImageSpaceRenderer {
   void render_surface_map(ScreenMap& map, const View& view, int facing);
   void render_nearby_map(ScreenMap& map, const View& view);
   void object_bounds(int object, glm::vec3& lo, glm::vec3& hi) const;
+  /// Eye-depth range [near, far] of the bounds of the dielectric objects (or of all the others),
+  /// within the view's near and far planes: the depth range of the binary searches' frustums.
+  glm::vec2 eye_depth_range(const View& view, bool dielectrics) const;
 
   Scene scene_;
   GpuAssets assets_;

@@ -19,10 +19,17 @@ uniform vec3 u_camera_up;
 uniform vec2 u_tan_half;    // tan(fov/2) * aspect, tan(fov/2)
 uniform vec2 u_image_size;  // the picture, pixels
 uniform vec2 u_near_far;    // eye depths of the near and far planes
+// The search frustums' near and far planes (eye depths): the view frustum with its depth range
+// tightened to the bounds of what a map holds (the refractors, the nearby geometry), so that a
+// binary search of a few steps starts from an end point close to the surface it seeks.
+uniform vec2 u_refractor_depths;
+uniform vec2 u_nearby_depths;
 
-// The pixel's camera ray, as gfield::camera_ray through the pixel centre.
+uniform vec2 u_jitter;      // the final pass's sample offset, pixels (x right, y down)
+
+// The pixel's camera ray, as gfield::camera_ray through the pixel centre moved by u_jitter.
 vec3 is_camera_direction() {
-  vec2 pixel = vec2(gl_FragCoord.x, u_image_size.y - gl_FragCoord.y);
+  vec2 pixel = vec2(gl_FragCoord.x, u_image_size.y - gl_FragCoord.y) + u_jitter;
   float sx = (2.0f * pixel.x / u_image_size.x - 1.0f) * u_tan_half.x;
   float sy = (1.0f - 2.0f * pixel.y / u_image_size.y) * u_tan_half.y;
   return normalize(u_camera_forward + sx * u_camera_right + sy * u_camera_up);
@@ -45,9 +52,9 @@ vec3 is_unproject(vec2 uv, float z) {
   return u_camera_position + z * (u_camera_forward + s.x * u_camera_right + s.y * u_camera_up);
 }
 
-// Largest t such that o + t d stays inside the view frustum (o inside it), Davis & Wyman's
-// endpoint of the binary search (Figure 3a).
-float is_clip_to_frustum(vec3 o, vec3 d) {
+// Largest t such that o + t d stays inside the view frustum with near and far planes at the eye
+// depths `depths` (o inside it), Davis & Wyman's endpoint of the binary search (Figure 3a).
+float is_clip_to_frustum(vec3 o, vec3 d, vec2 depths) {
   vec3 r = o - u_camera_position;
   float z0 = dot(r, u_camera_forward), z1 = dot(d, u_camera_forward);
   float x0 = dot(r, u_camera_right), x1 = dot(d, u_camera_right);
@@ -55,7 +62,7 @@ float is_clip_to_frustum(vec3 o, vec3 d) {
   // Each plane as a(t) = A + B t >= 0.
   vec4 A[2] = vec4[](vec4(z0 * u_tan_half.x - x0, z0 * u_tan_half.x + x0,
                           z0 * u_tan_half.y - y0, z0 * u_tan_half.y + y0),
-                     vec4(z0 - u_near_far.x, u_near_far.y - z0, 0.0f, 0.0f));
+                     vec4(z0 - depths.x, depths.y - z0, 0.0f, 0.0f));
   vec4 B[2] = vec4[](vec4(z1 * u_tan_half.x - x1, z1 * u_tan_half.x + x1,
                           z1 * u_tan_half.y - y1, z1 * u_tan_half.y + y1),
                      vec4(z1, -z1, 0.0f, 0.0f));
@@ -76,13 +83,15 @@ struct MapHit {
 };
 
 // Davis & Wyman 2007, section 3: binary search for o + t d against the depth map `map` (eye
-// depth in alpha), `iterations` steps between o (offset against acne) and the frustum exit.
+// depth in alpha), `iterations` steps between o (offset against acne) and the exit of the frustum
+// whose depth range is `depths`.
 // Five cases: the map's far value moves the end point; otherwise the point moves towards the
 // surface from the side the ray comes from (rays going away from or towards the viewer).
-MapHit is_search_depth_map(sampler2D map, vec3 o, vec3 d, int iterations, float offset) {
+MapHit is_search_depth_map(sampler2D map, vec3 o, vec3 d, int iterations, float offset,
+                           vec2 depths) {
   ivec2 size = textureSize(map, 0);
   vec3 a = o + offset * d;
-  vec3 b = o + is_clip_to_frustum(o, d) * d;
+  vec3 b = o + is_clip_to_frustum(o, d, depths) * d;
   bool away = dot(d, u_camera_forward) > 0.0f;
   MapHit h;
   h.found = false;
@@ -199,7 +208,7 @@ vec3 is_exit_analytic(vec3 o, vec3 d) {
 // `min_alignment` counts as a hit), then the environment.
 vec3 is_exit_depth_map(sampler2D nearby, vec3 o, vec3 d, int iterations, float offset,
                        float min_alignment) {
-  MapHit h = is_search_depth_map(nearby, o, d, iterations, offset);
+  MapHit h = is_search_depth_map(nearby, o, d, iterations, offset, u_nearby_depths);
   if (h.found && h.alignment >= min_alignment) return texelFetch(nearby, h.texel, 0).rgb;
   return environment_radiance(d);
 }

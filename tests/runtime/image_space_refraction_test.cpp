@@ -50,7 +50,7 @@ class ImageSpaceTest : public ::testing::Test {
         std::string(GFIELD_DATA_DIR) + "/scenes/davis-wyman-color-chart.json";
     const std::string reference = (dir / "reference_tir_only.exr").string();
     run = test::run_cli("render " + scene_file + " -o " + reference +
-                        " --size 256x256 --spp 4 --dielectric tir-only -q");
+                        " --size 256x256 --spp 16 --dielectric tir-only -q");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     scene_ = new Scene;
     ASSERT_TRUE(load_scene(scene_file, *scene_, error)) << error;
@@ -130,9 +130,13 @@ TEST_F(ImageSpaceTest, CubemapWithIndexOneReproducesTheEnvironment) {
         ++different;
     std::printf("cubemap index 1 (%s): PSNR %.1f dB over the refractor, %zu of %d pixels differ\n",
                 per_vertex ? "per vertex" : "per fragment", c.psnr, different, kSize * kSize);
-    // Equal up to float rounding of the direction (a pixel may fall on the other side of an
-    // edge of the studio's pattern).
-    EXPECT_LE(different, size_t(kSize * kSize / 1000)) << (per_vertex ? "per vertex" : "");
+    // Per fragment exactly the environment; Hurley's per-vertex vector R = -E is interpolated
+    // and normalised, equal up to float rounding of the direction (a pixel may fall on the
+    // other side of an edge of the studio's pattern).
+    if (per_vertex)
+      EXPECT_LE(different, size_t(kSize * kSize / 1000));
+    else
+      EXPECT_EQ(different, 0u);
   }
 }
 
@@ -153,6 +157,7 @@ TEST_F(ImageSpaceTest, WymanNeedsThicknessMaps) {
 TEST_F(ImageSpaceTest, DavisWymanBeatsWyman2005AgainstTheTirOnlyReference) {
   const PixelMask mask = refractor_mask();
   ImageSpaceSettings settings;
+  settings.samples_per_pixel = 4;  // the paper's 4x supersampling (reference: 16 spp)
   settings.method = ImageSpaceMethod::kWyman2005;
   const ImageComparison wyman = compare_images(render(*scene_, settings), *reference_, mask);
   settings.method = ImageSpaceMethod::kCubeMap;
@@ -171,11 +176,12 @@ TEST_F(ImageSpaceTest, DavisWymanBeatsWyman2005AgainstTheTirOnlyReference) {
     psnr[bounces] = compare_images(image, *reference_, mask).psnr;
     std::printf("davis-wyman, %d bounces: %.2f dB\n", bounces, psnr[bounces]);
   }
-  // Measured on llvmpipe: wyman2005 11.19 dB, davis-wyman 1/2/3 bounces 11.36/11.61/11.60 dB.
-  // The target (+2 dB over wyman2005) is NOT reached; this asserts what holds.
-  EXPECT_GE(psnr[3], wyman.psnr + 0.3);
-  EXPECT_GE(psnr[2], psnr[1] - 0.05);
-  EXPECT_GE(psnr[3], psnr[2] - 0.05);
+  // Measured on llvmpipe: wyman2005 12.22 dB, davis-wyman 1/2/3/4 bounces
+  // 13.15/13.77/13.72/13.81 dB: +1.50 dB at 3 bounces, short of the issue's +2 dB. This asserts
+  // what holds, with a small margin.
+  EXPECT_GE(psnr[3], wyman.psnr + 1.3);
+  EXPECT_GE(psnr[2], psnr[1] + 0.3);
+  EXPECT_GE(psnr[3], psnr[2] - 0.15);
 }
 
 }  // namespace
