@@ -1,5 +1,5 @@
 // gfield render SCENE.json -o OUT.exr|png [--spp 8] [--depth 10] [--dielectric MODE] [--size WxH]
-// [--seed N]: the reference ray tracer.
+// [--seed N | --strata-centres]: the reference ray tracer.
 
 #include <unistd.h>
 
@@ -26,6 +26,7 @@ struct RenderArgs {
   std::string dielectric = "full";
   std::string size;
   std::uint64_t seed = 1;
+  bool strata_centres = false;
   bool quiet = false;
 };
 
@@ -50,6 +51,7 @@ void run_render(const RenderArgs& args) {
   options.samples_per_pixel = args.spp;
   options.max_depth = args.depth;
   options.seed = args.seed;
+  options.jitter = !args.strata_centres;
   if (!parse_dielectric_mode(args.dielectric, options.dielectric)) {
     throw CommandError("--dielectric " + args.dielectric +
                        ": expected full, refract-only or tir-only");
@@ -122,6 +124,9 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT, overrides the scene's image size");
   cmd->add_option("--seed", args->seed, "seed of the sample jitter")->capture_default_str();
+  cmd->add_flag("--strata-centres", args->strata_centres,
+                "no jitter: samples at the strata centres (1 spp: the pixel centre), the positions "
+                "gfield-view --spp samples");
   cmd->add_flag("-q,--quiet", args->quiet, "no progress bar, no summary line");
   cmd->callback([args] { run_render(*args); });
 }

@@ -116,6 +116,7 @@ SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, int from) {
       t_min = 2.0f * object_epsilon(k);
     }
     SceneHit h = intersect_object(k, o, d, t_min, best.t, false);
+    if (!h.hit && k == from && opaque_only) h = intersect_object(k, o, d, t_min, best.t, true);
     if (h.hit && h.t < best.t) best = h;
   }
   return best;

@@ -3,6 +3,7 @@
 // PSNR thresholds per scene, and refined > linear > nearest on every scene. Assets are built at
 // test time with `gfield build` on a shared mesh (small N to stay fast).
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -70,7 +71,7 @@ std::vector<TestScene> test_scenes() {
                            "transform": {"translate": [0.5, -0.3, 0.6]},
                            "material": {"type": "mirror", "tint": [0.8, 0.85, 1.0]}})",
            kCamera),
-       26.5, false},
+       27.5, true},
       {"mirror-spheres",
        scene_text(R"({"name": "left", "shape": "sphere", "radius": 0.5,
                       "transform": {"translate": [-0.55, 0, 0]},
@@ -81,7 +82,7 @@ std::vector<TestScene> test_scenes() {
                       spot_object("spot", R"({"translate": [0, 0.1, -1.2], "rotate": [0, 20, 0]})",
                                   R"({"type": "diffuse", "color": [0.9, 0.8, 0.3]})"),
                   kCamera),
-       31.5, false},
+       31.5, true},
       {"refraction",
        scene_text(spot_object("glass spot", R"({"translate": [0, 0, 0.3], "rotate": [0, 40, 0]})",
                               R"({"type": "dielectric", "ior": "crown-glass"})") +
@@ -165,7 +166,8 @@ TEST_F(RenderTest, MatchesReferenceTracerAndRefinedBeatsLinearBeatsNearest) {
   }
 }
 
-/// An example scene of data/scenes with its mesh objects' assets built into the test folder.
+/// An example scene of data/scenes with its mesh objects' assets built into the test folder by
+/// `gfield build` with its defaults (as scripts/demo.sh builds them).
 std::string example_scene(const std::string& name) {
   const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes" / (name + ".json");
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
@@ -178,8 +180,7 @@ std::string example_scene(const std::string& name) {
     if (!fs::exists(asset.string() + ".gfield.exr")) {
       const std::string command = std::string("\"") + GFIELD_CLI + "\" build \"" + mesh.string() +
                                   "\" -o \"" + asset.string() +
-                                  "\" --size 256 --samples 12 --method square --verify-rays 0 "
-                                  "> /dev/null 2>&1";
+                                  "\" --verify-rays 0 > /dev/null 2>&1";
       EXPECT_EQ(std::system(command.c_str()), 0) << command;
     }
     object["file"] = mesh.string();
@@ -190,11 +191,14 @@ std::string example_scene(const std::string& name) {
 }
 
 TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
-  constexpr int kDepth = 4;
-  // Refined-mode PSNR measured on llvmpipe minus a margin (docs/runtime.md).
-  const std::pair<const char*, double> scenes[] = {{"mirror-torus-instances", 26.5},
-                                                   {"two-mirror-spheres", 44.0},
-                                                   {"davis-wyman-color-chart", 21.5}};
+  // The issue's setting: 256^2, depth 4, default assets; 4 samples per pixel at the same strata
+  // centres in both renderers (at 1 spp the refraction's chaotic pixels dominate: 22.8 dB).
+  constexpr int kDepth = 4, kExampleSize = 256, kExampleSamples = 4;
+  // Refined-mode PSNR measured on llvmpipe minus a margin (docs/runtime.md). two-mirror-spheres
+  // has no mesh objects: no field lookups, the three modes are the same picture.
+  const std::pair<const char*, double> scenes[] = {{"mirror-torus-instances", 31.0},
+                                                   {"two-mirror-spheres", 37.5},
+                                                   {"davis-wyman-color-chart", 25.0}};
   for (const auto& [name, min_psnr] : scenes) {
     SCOPED_TRACE(name);
     const fs::path file = kDir / (std::string(name) + ".json");
@@ -205,8 +209,8 @@ TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
     ReferenceTracer tracer;
     ASSERT_TRUE(tracer.build(scene, error)) << error;
     RenderOptions options;
-    options.width = options.height = kSize;
-    options.samples_per_pixel = 1;
+    options.width = options.height = kExampleSize;
+    options.samples_per_pixel = kExampleSamples;
     options.max_depth = kDepth;
     options.jitter = false;
     const Image reference = clamped(tracer.render(options));
@@ -217,13 +221,24 @@ TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
       RenderSettings settings;
       settings.mode = mode;
       settings.max_depth = kDepth;
+      settings.samples_per_pixel = kExampleSamples;
       psnr[int(mode)] =
-          compare_images(clamped(renderer.render_image(kSize, kSize, settings)), reference).psnr;
+          compare_images(clamped(renderer.render_image(kExampleSize, kExampleSize, settings)),
+                         reference)
+              .psnr;
       std::printf("%s %s: PSNR %.2f dB\n", name, lookup_mode_name(mode), psnr[int(mode)]);
     }
     EXPECT_GE(psnr[2], min_psnr);
-    EXPECT_GE(psnr[2], psnr[1]);
-    EXPECT_GE(psnr[2], psnr[0]);
+    const bool has_fields =
+        std::any_of(scene.objects.begin(), scene.objects.end(),
+                    [](const SceneObject& o) { return o.shape.type == ShapeType::kMesh; });
+    if (has_fields) {
+      EXPECT_GT(psnr[2], psnr[1] + 1.0);
+      EXPECT_GT(psnr[1], psnr[0]);
+    } else {
+      EXPECT_EQ(psnr[2], psnr[1]);
+      EXPECT_EQ(psnr[1], psnr[0]);
+    }
   }
 }
 
