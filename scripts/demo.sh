@@ -18,8 +18,8 @@ done
 scene=data/scenes/mirror-torus-instances.json
 echo "== gfield-view $scene --headless --spp 8 --out out/mirror-torus.png"
 build/runtime/gfield-view "$scene" --headless --spp 8 --out out/mirror-torus.png
-echo "== gfield render $scene -o out/mirror-torus-reference.png"
-$gfield render "$scene" -o out/mirror-torus-reference.png
+echo "== gfield render $scene --spp 8 --strata-centres -o out/mirror-torus-reference.png"
+$gfield render "$scene" --spp 8 --strata-centres -o out/mirror-torus-reference.png
 echo "== gfield compare out/mirror-torus.png out/mirror-torus-reference.png"
 $gfield compare out/mirror-torus.png out/mirror-torus-reference.png --heatmap out/mirror-torus-error.png
 echo "Pictures in out/. Interactive viewer (needs a display): build/runtime/gfield-view $scene"
