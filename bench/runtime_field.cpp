@@ -1,8 +1,8 @@
 // gfield-view's geometry-field renderer on this machine's GL (llvmpipe here): ms per frame per
 // lookup mode at 512^2 and 1024^2, ns per traced pixel per bounce, the reference tracer's time
 // for the same image (1 spp, same depth) in the same run, and the PSNR of the refined render
-// against it. Example scenes of data/scenes, their mesh assets built with `gfield build` (N = 12,
-// 256^2 geometry images) into a temporary folder.
+// against it. Example scenes of data/scenes, their mesh assets built with `gfield build` (its
+// defaults, as scripts/demo.sh) into a temporary folder.
 //
 // Usage: bench_runtime_field [SIZE...]   (default 512 1024)
 
@@ -35,9 +35,8 @@ bool prepare_scene(const std::string& name, const fs::path& dir, std::string& ou
         fs::weakly_canonical(source.parent_path() / object["file"].get<std::string>());
     const fs::path asset = dir / mesh.stem();
     if (!fs::exists(asset.string() + ".gfield.exr")) {
-      const std::string command =
-          std::string("\"") + GFIELD_CLI + "\" build \"" + mesh.string() + "\" -o \"" +
-          asset.string() + "\" --size 256 --samples 12 --method square --verify-rays 0 > /dev/null";
+      const std::string command = std::string("\"") + GFIELD_CLI + "\" build \"" + mesh.string() +
+                                  "\" -o \"" + asset.string() + "\" --verify-rays 0 > /dev/null";
       if (std::system(command.c_str()) != 0) {
         std::fprintf(stderr, "%s failed\n", command.c_str());
         return false;
