@@ -1,0 +1,265 @@
+// The Davis–Wyman paper's Table 1 on this machine's GL (llvmpipe here): frame time of
+// `davis-wyman` with 1-4 internal bounces (and 3 with back faces only for later bounces) beside
+// `wyman2005`, `cubemap` and the geometry-field refraction (runtime Renderer, refined mode), on
+// the refractive-mesh scene data/scenes/davis-wyman-color-chart.json, at 512^2 and 1024^2; the
+// reference tracer's wall time for the same image in the same run (`gfield render --spp 1
+// --dielectric tir-only`, the paper's Figure 8 reference) and each method's ratio to it; the PSNR
+// of each method's whole picture (values clamped to [0, 1]) against that reference and against
+// the full-Fresnel one (`--dielectric full`, what the geometry-field renderer computes).
+// A second table: `envmap` (the classic environment-mapped reflection) against the geometry field
+// on the mirror scenes at 256^2, against `gfield render --spp 1`.
+// Mesh assets are built with `gfield build` (its defaults, as scripts/demo.sh) and `gfield
+// thickness` into a temporary folder. Frame times: the mean of several frames (3 up to 512^2,
+// 2 above) after a warm-up frame, each ended by glFinish.
+//
+// Usage: bench_image_space_refraction [SIZE...]   (default 512 1024)
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "gfield/image_metrics.hpp"
+#include "preprocess/reference_tracer.hpp"
+#include "runtime/gl_context.hpp"
+#include "runtime/methods/image_space.hpp"
+#include "runtime/renderer.hpp"
+#include "runtime/shader_program.hpp"
+
+namespace fs = std::filesystem;
+using namespace gfield;
+
+namespace {
+
+constexpr int kDepth = 10;  // `gfield render`'s default and RenderSettings' default
+
+bool run_cli(const std::string& arguments) {
+  const std::string command = std::string("\"") + GFIELD_CLI + "\" " + arguments + " > /dev/null";
+  if (std::system(command.c_str()) != 0) {
+    std::fprintf(stderr, "%s failed\n", command.c_str());
+    return false;
+  }
+  return true;
+}
+
+/// The scene with every mesh object's assets (geometry image, geometry field, thickness map)
+/// built into `dir`; the rewritten scene's path in `out`.
+bool prepare_scene(const std::string& name, const fs::path& dir, std::string& out) {
+  const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes" / (name + ".json");
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
+  for (auto& object : scene["objects"]) {
+    if (object["shape"] != "mesh")
+      continue;
+    const fs::path mesh =
+        fs::weakly_canonical(source.parent_path() / object["file"].get<std::string>());
+    const std::string asset = (dir / mesh.stem()).string();
+    if (!fs::exists(asset + ".gfield.exr") &&
+        !run_cli("build \"" + mesh.string() + "\" -o \"" + asset + "\" --verify-rays 0"))
+      return false;
+    if (!fs::exists(asset + ".thickness.exr") && !run_cli("thickness \"" + asset + "\""))
+      return false;
+    object["file"] = mesh.string();
+    object["gimage"] = asset + ".gimage.exr";
+    object["gfield"] = asset + ".gfield.exr";
+  }
+  out = (dir / (name + ".json")).string();
+  std::ofstream(out) << scene.dump(2);
+  return true;
+}
+
+Image clamped(Image image) {
+  for (glm::vec3& p : image.pixels)
+    p = glm::clamp(p, 0.0f, 1.0f);
+  return image;
+}
+
+/// The reference tracer's picture (1 spp at the pixel centres, clamped) and its time in ms.
+Image reference_image(const ReferenceTracer& tracer, int size, DielectricMode mode, double& ms) {
+  RenderOptions options;
+  options.width = options.height = size;
+  options.samples_per_pixel = 1;
+  options.max_depth = kDepth;
+  options.dielectric = mode;
+  options.jitter = false;
+  RenderStats stats;
+  Image image = clamped(tracer.render(options, &stats));
+  ms = stats.seconds * 1e3;
+  return image;
+}
+
+/// A frame of a GL method drawn by frame(ms): the picture; its milliseconds added to *ms when
+/// ms is not null.
+using FrameFunction = std::function<Image(double* ms)>;
+
+FrameFunction image_space_frame(ImageSpaceRenderer& renderer, int size,
+                                const ImageSpaceSettings& settings) {
+  return [&renderer, size, settings](double* ms) {
+    ImageSpaceStats stats;
+    Image image = renderer.render_image(size, size, settings, &stats);
+    if (ms != nullptr)
+      *ms += stats.milliseconds;
+    return image;
+  };
+}
+
+FrameFunction field_frame(Renderer& renderer, int size) {
+  return [&renderer, size](double* ms) {
+    FrameStats stats;
+    Image image = renderer.render_image(size, size, RenderSettings{}, &stats);
+    if (ms != nullptr)
+      *ms += stats.milliseconds;
+    return image;
+  };
+}
+
+struct Row {
+  std::string method;
+  double ms = 0.0;  ///< mean per frame
+  Image image;      ///< the last frame, clamped
+};
+
+/// A warm-up frame (shader compilation, buffer allocation), then the mean of `frames`.
+Row timed_row(const std::string& method, int frames, const FrameFunction& frame) {
+  Row row;
+  row.method = method;
+  frame(nullptr);
+  for (int f = 0; f < frames; ++f)
+    row.image = frame(&row.ms);
+  row.ms /= frames;
+  row.image = clamped(std::move(row.image));
+  return row;
+}
+
+bool load_scene_and_tracer(const std::string& name, const fs::path& dir, Scene& scene,
+                           ReferenceTracer& tracer) {
+  std::string file, error;
+  if (!prepare_scene(name, dir, file) || !load_scene(file, scene, error) ||
+      !tracer.build(scene, error)) {
+    std::fprintf(stderr, "%s: %s\n", name.c_str(), error.c_str());
+    return false;
+  }
+  return true;
+}
+
+/// Table 1: the refractive-mesh scene at each size.
+void refraction_table(const fs::path& dir, const std::vector<int>& sizes) {
+  Scene scene;
+  ReferenceTracer tracer;
+  if (!load_scene_and_tracer("davis-wyman-color-chart", dir, scene, tracer))
+    return;
+  std::string error;
+  ImageSpaceRenderer image_space;
+  Renderer field;
+  if (!image_space.load(scene, default_shader_dir(), error) ||
+      !image_space.supports(ImageSpaceMethod::kWyman2005, error) ||
+      !field.load(scene, default_shader_dir(), error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return;
+  }
+  for (int size : sizes) {
+    const int frames = size <= 512 ? 3 : 2;
+    double tir_ms = 0.0, full_ms = 0.0;
+    const Image tir_only = reference_image(tracer, size, DielectricMode::kTirOnly, tir_ms);
+    const Image full = reference_image(tracer, size, DielectricMode::kFull, full_ms);
+    std::vector<Row> rows;
+    for (int bounces = 1; bounces <= 4; ++bounces) {
+      ImageSpaceSettings settings;
+      settings.bounces = bounces;
+      rows.push_back(timed_row(
+          "davis-wyman, " + std::to_string(bounces) + " bounce" + (bounces > 1 ? "s" : ""), frames,
+          image_space_frame(image_space, size, settings)));
+    }
+    ImageSpaceSettings back_only;
+    back_only.back_only_later = true;
+    rows.push_back(timed_row("davis-wyman, 3 bounces, --back-only-later", frames,
+                             image_space_frame(image_space, size, back_only)));
+    ImageSpaceSettings wyman2005;
+    wyman2005.method = ImageSpaceMethod::kWyman2005;
+    rows.push_back(timed_row("wyman2005", frames, image_space_frame(image_space, size, wyman2005)));
+    ImageSpaceSettings cubemap;
+    cubemap.method = ImageSpaceMethod::kCubeMap;
+    rows.push_back(timed_row("cubemap (per fragment, 256^2 faces)", frames,
+                             image_space_frame(image_space, size, cubemap)));
+    rows.push_back(
+        timed_row("geometry field (refined, depth 10)", frames, field_frame(field, size)));
+
+    std::printf("\ndavis-wyman-color-chart %dx%d, %d frames after a warm-up:\n\n", size, size,
+                frames);
+    std::printf("| method | ms/frame | / reference | PSNR vs tir-only | PSNR vs full |\n");
+    std::printf("|---|---:|---:|---:|---:|\n");
+    for (const Row& row : rows)
+      std::printf("| %s | %.1f | %.3f | %.2f dB | %.2f dB |\n", row.method.c_str(), row.ms,
+                  row.ms / tir_ms, compare_images(row.image, tir_only).psnr,
+                  compare_images(row.image, full).psnr);
+    std::printf("| reference tracer, tir-only, 1 spp | %.1f | 1 | | %.2f dB |\n", tir_ms,
+                compare_images(tir_only, full).psnr);
+    std::printf("| reference tracer, full Fresnel, 1 spp | %.1f | %.3f | %.2f dB | |\n", full_ms,
+                full_ms / tir_ms, compare_images(full, tir_only).psnr);
+    std::fflush(stdout);
+  }
+}
+
+/// envmap against the geometry field on the mirror scenes.
+void envmap_table(const fs::path& dir, int size) {
+  constexpr int kFrames = 3;
+  std::printf(
+      "\nmirror scenes %dx%d, %d frames after a warm-up, reference `gfield render --spp 1 "
+      "--depth %d`:\n\n",
+      size, size, kFrames, kDepth);
+  std::printf("| scene | method | ms/frame | / reference | PSNR |\n");
+  std::printf("|---|---|---:|---:|---:|\n");
+  for (const char* name : {"mirror-torus-instances", "two-mirror-spheres"}) {
+    Scene scene;
+    ReferenceTracer tracer;
+    if (!load_scene_and_tracer(name, dir, scene, tracer))
+      continue;
+    std::string error;
+    ImageSpaceRenderer image_space;
+    Renderer field;
+    if (!image_space.load(scene, default_shader_dir(), error) ||
+        !field.load(scene, default_shader_dir(), error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      continue;
+    }
+    double reference_ms = 0.0;
+    const Image reference = reference_image(tracer, size, DielectricMode::kFull, reference_ms);
+    ImageSpaceSettings envmap;
+    envmap.method = ImageSpaceMethod::kEnvMap;
+    const Row rows[] = {
+        timed_row("envmap (256^2 faces)", kFrames, image_space_frame(image_space, size, envmap)),
+        timed_row("geometry field (refined)", kFrames, field_frame(field, size))};
+    for (const Row& row : rows)
+      std::printf("| %s | %s | %.1f | %.3f | %.2f dB |\n", name, row.method.c_str(), row.ms,
+                  row.ms / reference_ms, compare_images(row.image, reference).psnr);
+    std::printf("| %s | reference tracer, 1 spp | %.1f | 1 | |\n", name, reference_ms);
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<int> sizes;
+  for (int i = 1; i < argc; ++i)
+    sizes.push_back(std::atoi(argv[i]));
+  if (sizes.empty())
+    sizes = {512, 1024};
+  const fs::path dir = fs::temp_directory_path() / "gfield_bench_image_space_refraction";
+  fs::create_directories(dir);
+  std::string error;
+  auto context = GlContext::create_headless(error);
+  if (!context) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitNoOpenGL;
+  }
+  std::printf("GL: %s, %s (%s)\n", context->renderer().c_str(), context->version().c_str(),
+              context->platform().c_str());
+  refraction_table(dir, sizes);
+  envmap_table(dir, 256);
+  return 0;
+}
