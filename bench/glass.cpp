@@ -4,15 +4,19 @@
 // mean over camera positions), and against the resolution (640x480-1600x1200, 100K vertices,
 // Table 3); beside the reference tracer (`gfield render`, 1 sample per pixel) on the same frames.
 //
-//   bench_glass [--quick]   (--quick: 100K and 200K vertices, 2 azimuths, two resolutions)
+//   bench_glass [--quick] [--vertices N,N,...] [--frames F] [--azimuths A]
+//   (default: 100K-800K in steps of 100K, 3 timed frames after a warm-up, 4 azimuths, four
+//   resolutions; --quick: 100K-400K, 1 frame, 2 azimuths, two resolutions)
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -132,8 +136,61 @@ double fps(double ms) {
 
 }  // namespace
 
+/// Comma-separated positive integers, e.g. "100000,200000"; empty on a malformed list.
+std::vector<int> parse_counts(const char* text) {
+  std::vector<int> counts;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    char* end = nullptr;
+    const long n = std::strtol(item.c_str(), &end, 10);
+    if (end == item.c_str() || *end != 0 || n <= 0 || n > 100000000)
+      return {};
+    counts.push_back(int(n));
+  }
+  return counts;
+}
+
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  bool quick = false;
+  std::vector<int> counts = {100000, 200000, 300000, 400000, 500000, 600000, 700000, 800000};
+  int frames = 3, azimuths = 4;
+  bool set_frames = false, set_azimuths = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const char* value = i + 1 < argc ? argv[i + 1] : nullptr;
+    bool ok = true;
+    if (arg == "--quick") {
+      quick = true;
+    } else if (arg == "--vertices" && value != nullptr) {
+      counts = parse_counts(value);
+      ok = !counts.empty();
+      ++i;
+    } else if (arg == "--frames" && value != nullptr) {
+      frames = std::atoi(value);
+      ok = frames > 0;
+      set_frames = true;
+      ++i;
+    } else if (arg == "--azimuths" && value != nullptr) {
+      azimuths = std::atoi(value);
+      ok = azimuths > 0;
+      set_azimuths = true;
+      ++i;
+    } else {
+      ok = false;
+    }
+    if (!ok) {
+      std::fprintf(stderr,
+                   "usage: bench_glass [--quick] [--vertices N,N,...] [--frames F] "
+                   "[--azimuths A]\n");
+      return 2;
+    }
+  }
+  if (quick) {
+    counts = {100000, 200000, 400000};
+    frames = set_frames ? frames : 1;
+    azimuths = set_azimuths ? azimuths : 2;
+  }
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they are measured
   std::string error;
   auto context = GlContext::create_headless(error);
@@ -145,11 +202,7 @@ int main(int argc, char** argv) {
   fs::create_directories(dir);
   std::printf("renderer: %s (%s, %s); reference tracer: Embree on the CPU, 1 spp\n",
               context->renderer().c_str(), context->version().c_str(), context->platform().c_str());
-  const std::vector<int> counts =
-      quick ? std::vector<int>{100000, 200000, 400000}
-            : std::vector<int>{100000, 200000, 300000, 400000, 500000, 600000, 700000, 800000};
-  const int frames = quick ? 1 : 3;
-  const int azimuths = quick ? 2 : 4;
+  std::printf("%d timed frame(s) after a warm-up frame per row\n", frames);
 
   std::printf("\nTable 1: parallel plate (30 deg, W = 1.0), 640x480\n");
   std::printf("%9s %10s %8s %12s %10s %9s\n", "vertices", "glass ms", "FPS", "reference ms",
