@@ -17,13 +17,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "example_scenes.hpp"
 #include "gfield/image_metrics.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
@@ -38,46 +36,6 @@ namespace {
 
 constexpr int kDepth = 10;  // `gfield render`'s default and RenderSettings' default
 
-bool run_cli(const std::string& arguments) {
-  const std::string command = std::string("\"") + GFIELD_CLI + "\" " + arguments + " > /dev/null";
-  if (std::system(command.c_str()) != 0) {
-    std::fprintf(stderr, "%s failed\n", command.c_str());
-    return false;
-  }
-  return true;
-}
-
-/// The scene with every mesh object's assets (geometry image, geometry field, thickness map)
-/// built into `dir`; the rewritten scene's path in `out`.
-bool prepare_scene(const std::string& name, const fs::path& dir, std::string& out) {
-  const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes" / (name + ".json");
-  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
-  for (auto& object : scene["objects"]) {
-    if (object["shape"] != "mesh")
-      continue;
-    const fs::path mesh =
-        fs::weakly_canonical(source.parent_path() / object["file"].get<std::string>());
-    const std::string asset = (dir / mesh.stem()).string();
-    if (!fs::exists(asset + ".gfield.exr") &&
-        !run_cli("build \"" + mesh.string() + "\" -o \"" + asset + "\" --verify-rays 0"))
-      return false;
-    if (!fs::exists(asset + ".thickness.exr") && !run_cli("thickness \"" + asset + "\""))
-      return false;
-    object["file"] = mesh.string();
-    object["gimage"] = asset + ".gimage.exr";
-    object["gfield"] = asset + ".gfield.exr";
-  }
-  out = (dir / (name + ".json")).string();
-  std::ofstream(out) << scene.dump(2);
-  return true;
-}
-
-Image clamped(Image image) {
-  for (glm::vec3& p : image.pixels)
-    p = glm::clamp(p, 0.0f, 1.0f);
-  return image;
-}
-
 /// The reference tracer's picture (1 spp at the pixel centres, clamped) and its time in ms.
 Image reference_image(const ReferenceTracer& tracer, int size, DielectricMode mode, double& ms) {
   RenderOptions options;
@@ -87,7 +45,7 @@ Image reference_image(const ReferenceTracer& tracer, int size, DielectricMode mo
   options.dielectric = mode;
   options.jitter = false;
   RenderStats stats;
-  Image image = clamped(tracer.render(options, &stats));
+  Image image = clamped_to_display(tracer.render(options, &stats));
   ms = stats.seconds * 1e3;
   return image;
 }
@@ -131,14 +89,16 @@ Row timed_row(const std::string& method, int frames, const FrameFunction& frame)
   for (int f = 0; f < frames; ++f)
     row.image = frame(&row.ms);
   row.ms /= frames;
-  row.image = clamped(std::move(row.image));
+  row.image = clamped_to_display(std::move(row.image));
   return row;
 }
 
-bool load_scene_and_tracer(const std::string& name, const fs::path& dir, Scene& scene,
-                           ReferenceTracer& tracer) {
+/// The example scene `name` (with thickness maps when `thickness_maps`: wyman2005 needs them)
+/// and the reference tracer on it.
+bool load_scene_and_tracer(const std::string& name, const fs::path& dir, bool thickness_maps,
+                           Scene& scene, ReferenceTracer& tracer) {
   std::string file, error;
-  if (!prepare_scene(name, dir, file) || !load_scene(file, scene, error) ||
+  if (!prepare_example_scene(name, dir, thickness_maps, file) || !load_scene(file, scene, error) ||
       !tracer.build(scene, error)) {
     std::fprintf(stderr, "%s: %s\n", name.c_str(), error.c_str());
     return false;
@@ -150,7 +110,7 @@ bool load_scene_and_tracer(const std::string& name, const fs::path& dir, Scene& 
 void refraction_table(const fs::path& dir, const std::vector<int>& sizes) {
   Scene scene;
   ReferenceTracer tracer;
-  if (!load_scene_and_tracer("davis-wyman-color-chart", dir, scene, tracer))
+  if (!load_scene_and_tracer("davis-wyman-color-chart", dir, true, scene, tracer))
     return;
   std::string error;
   ImageSpaceRenderer image_space;
@@ -216,7 +176,7 @@ void envmap_table(const fs::path& dir, int size) {
   for (const char* name : {"mirror-torus-instances", "two-mirror-spheres"}) {
     Scene scene;
     ReferenceTracer tracer;
-    if (!load_scene_and_tracer(name, dir, scene, tracer))
+    if (!load_scene_and_tracer(name, dir, false, scene, tracer))
       continue;
     std::string error;
     ImageSpaceRenderer image_space;

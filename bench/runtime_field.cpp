@@ -10,10 +10,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
-#include <nlohmann/json.hpp>
-
+#include "example_scenes.hpp"
 #include "gfield/image_metrics.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
@@ -21,43 +19,6 @@
 
 namespace fs = std::filesystem;
 using namespace gfield;
-
-namespace {
-
-/// The scene with every mesh object's assets built into `dir`; the rewritten scene's path.
-bool prepare_scene(const std::string& name, const fs::path& dir, std::string& out) {
-  const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes" / (name + ".json");
-  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
-  for (auto& object : scene["objects"]) {
-    if (object["shape"] != "mesh")
-      continue;
-    const fs::path mesh =
-        fs::weakly_canonical(source.parent_path() / object["file"].get<std::string>());
-    const fs::path asset = dir / mesh.stem();
-    if (!fs::exists(asset.string() + ".gfield.exr")) {
-      const std::string command = std::string("\"") + GFIELD_CLI + "\" build \"" + mesh.string() +
-                                  "\" -o \"" + asset.string() + "\" --verify-rays 0 > /dev/null";
-      if (std::system(command.c_str()) != 0) {
-        std::fprintf(stderr, "%s failed\n", command.c_str());
-        return false;
-      }
-    }
-    object["file"] = mesh.string();
-    object["gimage"] = asset.string() + ".gimage.exr";
-    object["gfield"] = asset.string() + ".gfield.exr";
-  }
-  out = (dir / (name + ".json")).string();
-  std::ofstream(out) << scene.dump(2);
-  return true;
-}
-
-Image clamped(Image image) {
-  for (glm::vec3& p : image.pixels)
-    p = glm::clamp(p, 0.0f, 1.0f);
-  return image;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   std::vector<int> sizes;
@@ -80,7 +41,7 @@ int main(int argc, char** argv) {
        {"mirror-torus-instances", "two-mirror-spheres", "davis-wyman-color-chart"}) {
     std::string file;
     Scene scene;
-    if (!prepare_scene(name, dir, file) || !load_scene(file, scene, error)) {
+    if (!prepare_example_scene(name, dir, false, file) || !load_scene(file, scene, error)) {
       std::fprintf(stderr, "%s: %s\n", name, error.c_str());
       continue;
     }
@@ -101,7 +62,7 @@ int main(int argc, char** argv) {
       options.max_depth = kDepth;
       options.jitter = false;
       RenderStats reference_stats;
-      const Image reference = clamped(tracer.render(options, &reference_stats));
+      const Image reference = clamped_to_display(tracer.render(options, &reference_stats));
       std::printf("%s %dx%d depth %d: reference tracer %.1f ms (1 spp, 2 cores)\n", name, size,
                   size, kDepth, reference_stats.seconds * 1e3);
       for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
@@ -116,7 +77,7 @@ int main(int argc, char** argv) {
           image = renderer.render_image(size, size, settings, &stats);
         const double ms = stats.milliseconds / kFrames;
         const double rays = double(stats.secondary_rays) / kFrames;
-        const double psnr = compare_images(clamped(image), reference).psnr;
+        const double psnr = compare_images(clamped_to_display(image), reference).psnr;
         std::printf(
             "  %-8s %8.1f ms/frame (%.2fx the reference tracer), %.1f ns per traced pixel "
             "per bounce, %.0f traced pixels, PSNR %.2f dB\n",

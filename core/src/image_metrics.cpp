@@ -69,6 +69,12 @@ PixelMask mask_from_image(const Image& image, float threshold) {
   return mask;
 }
 
+Image clamped_to_display(Image image) {
+  for (glm::vec3& p : image.pixels)
+    p = glm::clamp(p, glm::vec3(0.0f), glm::vec3(1.0f));
+  return image;
+}
+
 double psnr_from_mse(double mse, double peak) {
   if (mse <= 0.0)
     return std::numeric_limits<double>::infinity();

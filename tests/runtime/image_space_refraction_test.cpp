@@ -21,14 +21,6 @@ namespace fs = std::filesystem;
 
 constexpr int kSize = 256;
 
-/// The picture as displayed: linear radiance clamped to [0, 1] (the studio's softboxes reach 6;
-/// unclamped, a few reflections of them dominate every PSNR).
-Image clamped(Image image) {
-  for (glm::vec3& p : image.pixels)
-    p = glm::clamp(p, glm::vec3(0.0f), glm::vec3(1.0f));
-  return image;
-}
-
 class ImageSpaceTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -58,7 +50,7 @@ class ImageSpaceTest : public ::testing::Test {
     scene_->meshes[0].geometry_image = name + ".gimage.exr";
     reference_ = new Image;
     ASSERT_TRUE(load_image(reference, *reference_, error)) << error;
-    *reference_ = clamped(*reference_);
+    *reference_ = clamped_to_display(*reference_);
   }
   static void TearDownTestSuite() {
     delete scene_;
@@ -74,7 +66,7 @@ class ImageSpaceTest : public ::testing::Test {
     std::string error;
     EXPECT_TRUE(renderer.load(scene, default_shader_dir(), error)) << error;
     EXPECT_TRUE(renderer.supports(settings.method, error)) << error;
-    return clamped(renderer.render_image(kSize, kSize, settings));
+    return clamped_to_display(renderer.render_image(kSize, kSize, settings));
   }
 
   /// The pixels where the refractor is seen: it drawn white on black.

@@ -94,12 +94,6 @@ std::vector<TestScene> test_scenes() {
   };
 }
 
-Image clamped(Image image) {
-  for (glm::vec3& p : image.pixels)
-    p = glm::clamp(p, 0.0f, 1.0f);
-  return image;
-}
-
 class RenderTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -140,7 +134,7 @@ TEST_F(RenderTest, MatchesReferenceTracerAndRefinedBeatsLinearBeatsNearest) {
     options.samples_per_pixel = kSamples;
     options.max_depth = kDepth;
     options.jitter = false;
-    const Image reference = clamped(tracer.render(options));
+    const Image reference = clamped_to_display(tracer.render(options));
 
     Renderer renderer;
     ASSERT_TRUE(renderer.load(scene, default_shader_dir(), error)) << error;
@@ -150,7 +144,7 @@ TEST_F(RenderTest, MatchesReferenceTracerAndRefinedBeatsLinearBeatsNearest) {
       settings.mode = mode;
       settings.max_depth = kDepth;
       settings.samples_per_pixel = kSamples;
-      const Image image = clamped(renderer.render_image(kSize, kSize, settings));
+      const Image image = clamped_to_display(renderer.render_image(kSize, kSize, settings));
       psnr[int(mode)] = compare_images(image, reference).psnr;
       std::printf("%s %s: PSNR %.2f dB\n", test.name, lookup_mode_name(mode), psnr[int(mode)]);
       if (mode == LookupMode::kRefined)
@@ -213,7 +207,7 @@ TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
     options.samples_per_pixel = kExampleSamples;
     options.max_depth = kDepth;
     options.jitter = false;
-    const Image reference = clamped(tracer.render(options));
+    const Image reference = clamped_to_display(tracer.render(options));
     Renderer renderer;
     ASSERT_TRUE(renderer.load(scene, default_shader_dir(), error)) << error;
     double psnr[3] = {0.0, 0.0, 0.0};
@@ -223,8 +217,9 @@ TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
       settings.max_depth = kDepth;
       settings.samples_per_pixel = kExampleSamples;
       psnr[int(mode)] =
-          compare_images(clamped(renderer.render_image(kExampleSize, kExampleSize, settings)),
-                         reference)
+          compare_images(
+              clamped_to_display(renderer.render_image(kExampleSize, kExampleSize, settings)),
+              reference)
               .psnr;
       std::printf("%s %s: PSNR %.2f dB\n", name, lookup_mode_name(mode), psnr[int(mode)]);
     }

@@ -14,6 +14,11 @@ using PixelMask = std::vector<bool>;
 /// A mask from an image: pixels whose largest channel exceeds `threshold` are in.
 PixelMask mask_from_image(const Image& image, float threshold = 0.5f);
 
+/// The picture as displayed: every channel clamped to [0, 1]. Comparisons of renders use it
+/// (the studio environment's softboxes reach 6; unclamped, a few reflections of them would
+/// dominate every PSNR).
+Image clamped_to_display(Image image);
+
 struct ImageComparison {
   double mse = 0.0;             ///< mean over counted pixels and the 3 channels of (a - b)^2
   double psnr = 0.0;            ///< 10 log10(peak^2 / mse) in dB; +infinity when mse == 0

@@ -1,0 +1,55 @@
+#pragma once
+// The example scenes of data/scenes for the GL benchmarks: every mesh object's assets built by
+// the `gfield` CLI with its defaults (as scripts/demo.sh builds them) into a folder, and the
+// scene rewritten to point at them. Needs GFIELD_CLI and GFIELD_DATA_DIR.
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace gfield {
+
+/// Runs `gfield ARGUMENTS` quietly; false (with the command on stderr) when it fails.
+inline bool run_gfield_cli(const std::string& arguments) {
+  const std::string command = std::string("\"") + GFIELD_CLI + "\" " + arguments + " > /dev/null";
+  if (std::system(command.c_str()) != 0) {
+    std::fprintf(stderr, "%s failed\n", command.c_str());
+    return false;
+  }
+  return true;
+}
+
+/// data/scenes/NAME.json with its meshes' geometry images and fields (and, with
+/// `thickness_maps`, their d_n maps for wyman2005) built into `dir` unless already there; the
+/// rewritten scene's path in `out`.
+inline bool prepare_example_scene(const std::string& name, const std::filesystem::path& dir,
+                                  bool thickness_maps, std::string& out) {
+  namespace fs = std::filesystem;
+  const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes" / (name + ".json");
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
+  for (auto& object : scene["objects"]) {
+    if (object["shape"] != "mesh")
+      continue;
+    const fs::path mesh =
+        fs::weakly_canonical(source.parent_path() / object["file"].get<std::string>());
+    const std::string asset = (dir / mesh.stem()).string();
+    if (!fs::exists(asset + ".gfield.exr") &&
+        !run_gfield_cli("build \"" + mesh.string() + "\" -o \"" + asset + "\" --verify-rays 0"))
+      return false;
+    if (thickness_maps && !fs::exists(asset + ".thickness.exr") &&
+        !run_gfield_cli("thickness \"" + asset + "\""))
+      return false;
+    object["file"] = mesh.string();
+    object["gimage"] = asset + ".gimage.exr";
+    object["gfield"] = asset + ".gfield.exr";
+  }
+  out = (dir / (name + ".json")).string();
+  std::ofstream(out) << scene.dump(2);
+  return true;
+}
+
+}  // namespace gfield
