@@ -10,74 +10,11 @@
 #include "gfield/environment.hpp"
 #include "gfield/exr_io.hpp"
 #include "preprocess/mesh_io.hpp"
+#include "runtime/gpu_scene.hpp"
 #include "runtime/supersample.hpp"
 
 namespace gfield {
 namespace {
-
-/// std430 mirror of GpuObject in shaders/lib/scene.glsl.
-struct GpuObject {
-  glm::mat4 to_world;
-  glm::mat4 to_object;
-  glm::vec4 color;
-  glm::vec4 absorption;
-  glm::vec4 checker0;
-  glm::vec4 checker1;
-  glm::vec4 shape;
-  glm::vec4 size;
-  glm::vec4 box_min;
-  glm::vec4 box_max;
-  glm::ivec4 kind;
-  glm::ivec4 asset;
-};
-static_assert(sizeof(GpuObject) == 288);
-
-struct GpuLight {
-  glm::vec4 direction;
-  glm::vec4 position;
-  glm::vec4 color;
-};
-
-/// Object-space bounds of an analytic shape (as preprocess/analytic_primitives' shape_bounds).
-glm::vec3 shape_half_extent(const Shape& shape) {
-  switch (shape.type) {
-    case ShapeType::kSphere:
-      return glm::vec3(shape.radius);
-    case ShapeType::kQuad:
-      return glm::vec3(0.5f * shape.size.x, 0.5f * shape.size.y, 0.0f);
-    case ShapeType::kBox:
-      return 0.5f * shape.size;
-    case ShapeType::kSlab:
-      return 0.5f * glm::vec3(shape.size.x, shape.size.y, shape.thickness);
-    case ShapeType::kCylinder:
-    case ShapeType::kHollowCylinder:
-      return glm::vec3(shape.radius, 0.5f * shape.height, shape.radius);
-    case ShapeType::kMesh:
-      break;
-  }
-  return glm::vec3(0.0f);
-}
-
-/// The 36 vertices (position, normal, uv) of the cube [-1, 1]^3: the proxy of analytic shapes.
-std::vector<float> cube_vertices() {
-  std::vector<float> v;
-  for (int axis = 0; axis < 3; ++axis) {
-    for (float side : {-1.0f, 1.0f}) {
-      const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-      const float corners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
-      for (const auto& c : corners) {
-        glm::vec3 p(0.0f);
-        p[axis] = side;
-        p[a1] = c[0];
-        p[a2] = c[1];
-        glm::vec3 n(0.0f);
-        n[axis] = side;
-        v.insert(v.end(), {p.x, p.y, p.z, n.x, n.y, n.z, 0.0f, 0.0f});
-      }
-    }
-  }
-  return v;
-}
 
 double elapsed_ms(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -146,7 +83,7 @@ bool Renderer::load(const Scene& scene, const std::filesystem::path& shader_dir,
   if (!upload_environment(error))
     return false;
 
-  const std::vector<float> cube = cube_vertices();
+  const std::vector<float> cube = proxy_cube_vertices();
   glCreateBuffers(1, &proxy_buffer_);
   glNamedBufferStorage(proxy_buffer_, GLsizeiptr(cube.size() * sizeof(float)), cube.data(), 0);
   glCreateVertexArrays(1, &proxy_vertex_array_);
@@ -195,74 +132,8 @@ bool Renderer::upload_environment(std::string& error) {
   return true;
 }
 
-void Renderer::object_bounds(int object, glm::vec3& lo, glm::vec3& hi) const {
-  const SceneObject& o = scene_.objects[size_t(object)];
-  glm::vec3 olo, ohi;
-  if (o.shape.type == ShapeType::kMesh) {
-    const GpuAsset& asset = assets_.assets()[size_t(o.shape.mesh)];
-    olo = asset.box.min;
-    ohi = asset.box.max;
-  } else {
-    ohi = shape_half_extent(o.shape);
-    olo = -ohi;
-  }
-  const glm::mat4 to_world(object_to_world(o.transform));
-  lo = glm::vec3(3.0e38f);
-  hi = glm::vec3(-3.0e38f);
-  for (int c = 0; c < 8; ++c) {
-    const glm::vec3 corner((c & 1) ? ohi.x : olo.x, (c & 2) ? ohi.y : olo.y,
-                           (c & 4) ? ohi.z : olo.z);
-    const glm::vec3 w(to_world * glm::vec4(corner, 1.0f));
-    lo = glm::min(lo, w);
-    hi = glm::max(hi, w);
-  }
-}
-
 void Renderer::update_scene() {
-  std::vector<GpuObject> objects;
-  glm::vec3 lo(scene_.camera.position), hi(scene_.camera.position);
-  for (size_t k = 0; k < scene_.objects.size(); ++k) {
-    const SceneObject& o = scene_.objects[k];
-    GpuObject g{};
-    const glm::dmat4 to_world = object_to_world(o.transform);
-    g.to_world = glm::mat4(to_world);
-    g.to_object = glm::mat4(glm::inverse(to_world));
-    g.color = glm::vec4(o.material.color, o.material.ior);
-    glm::vec3 olo, ohi;
-    object_bounds(int(k), olo, ohi);
-    lo = glm::min(lo, olo);
-    hi = glm::max(hi, ohi);
-    g.absorption = glm::vec4(o.material.absorption, glm::length(ohi - olo));
-    g.checker0 = glm::vec4(o.material.checker_colors[0], o.material.checker_scale.x);
-    g.checker1 = glm::vec4(o.material.checker_colors[1], o.material.checker_scale.y);
-    g.shape = glm::vec4(o.shape.radius, o.shape.height, o.shape.thickness, 0.0f);
-    g.size = glm::vec4(o.shape.size, 0.0f);
-    g.kind = glm::ivec4(int(o.shape.type), int(o.material.type), int(o.material.texture), 0);
-    if (o.shape.type == ShapeType::kMesh) {
-      const GpuAsset& asset = assets_.assets()[size_t(o.shape.mesh)];
-      g.box_min = glm::vec4(asset.box.min, 0.0f);
-      g.box_max = glm::vec4(asset.box.max, 0.0f);
-      g.asset = glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, 0);
-    }
-    objects.push_back(g);
-  }
-  extent_ = std::max(1e-3f, glm::length(hi - lo));
-  std::vector<GpuLight> lights;
-  for (const Light& l : scene_.lights) {
-    lights.push_back({glm::vec4(l.direction, l.type == LightType::kPoint ? 1.0f : 0.0f),
-                      glm::vec4(l.position, 1.0f), glm::vec4(l.color * l.intensity, 0.0f)});
-  }
-  // Buffers are re-created: sizes change when objects are added in the viewer.
-  for (GLuint* buffer : {&objects_buffer_, &lights_buffer_}) {
-    glDeleteBuffers(1, buffer);
-    glCreateBuffers(1, buffer);
-  }
-  glNamedBufferData(objects_buffer_,
-                    GLsizeiptr(std::max<size_t>(1, objects.size()) * sizeof(GpuObject)),
-                    objects.empty() ? nullptr : objects.data(), GL_DYNAMIC_DRAW);
-  glNamedBufferData(lights_buffer_,
-                    GLsizeiptr(std::max<size_t>(1, lights.size()) * sizeof(GpuLight)),
-                    lights.empty() ? nullptr : lights.data(), GL_DYNAMIC_DRAW);
+  extent_ = upload_scene_buffers(scene_, assets_, objects_buffer_, lights_buffer_);
 }
 
 void Renderer::release_gbuffer() {

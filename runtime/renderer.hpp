@@ -60,6 +60,7 @@ class Renderer {
 
   /// The scene being drawn; after changing objects, materials or lights call update_scene().
   Scene& scene() { return scene_; }
+  const Scene& scene() const { return scene_; }
   void update_scene();
 
   /// Renders one frame of `camera` into `target` (its size), with a sample offset `jitter` in
@@ -77,8 +78,6 @@ class Renderer {
   bool reload_shaders_if_changed(std::string& error);
 
   const GpuAssets& assets() const { return assets_; }
-  /// World bounds of the object (its transformed box).
-  void object_bounds(int object, glm::vec3& lo, glm::vec3& hi) const;
   /// Diagonal of all objects' bounds and the camera.
   float scene_extent() const { return extent_; }
 

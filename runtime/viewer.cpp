@@ -14,6 +14,7 @@
 
 #include "gfield/optics.hpp"
 #include "runtime/gl_context.hpp"
+#include "runtime/gpu_scene.hpp"
 #include "runtime/methods/glass_view.hpp"
 #include "runtime/methods/image_space_view.hpp"
 
@@ -70,9 +71,9 @@ void pixel_ray(const Camera& camera, int width, int height, double x, double y, 
 int pick(const Renderer& renderer, glm::vec3 origin, glm::vec3 direction) {
   int best = -1;
   float best_t = 3.0e38f;
-  for (int k = 0; k < int(const_cast<Renderer&>(renderer).scene().objects.size()); ++k) {
+  for (int k = 0; k < int(renderer.scene().objects.size()); ++k) {
     glm::vec3 lo, hi;
-    renderer.object_bounds(k, lo, hi);
+    object_world_bounds(renderer.scene(), renderer.assets(), k, lo, hi);
     float t0 = 0.0f, t1 = 3.0e38f;
     bool hit = true;
     for (int a = 0; a < 3 && hit; ++a) {

@@ -125,7 +125,6 @@ class ImageSpaceRenderer {
   void render_cube_map(int object, int size);
   void render_surface_map(ScreenMap& map, const View& view, int facing);
   void render_nearby_map(ScreenMap& map, const View& view);
-  void object_bounds(int object, glm::vec3& lo, glm::vec3& hi) const;
   /// Eye-depth range [near, far] of the bounds of the dielectric objects (or of all the others),
   /// within the view's near and far planes: the depth range of the binary searches' frustums.
   glm::vec2 eye_depth_range(const View& view, bool dielectrics) const;

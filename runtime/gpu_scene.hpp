@@ -1,0 +1,34 @@
+#pragma once
+// The scene as shaders/lib/scene.glsl sees it: objects and lights in std430 storage buffers
+// (bindings 0 and 1), the bounds of objects, and the proxy cube that rasterises analytic shapes.
+// Shared by the geometry-field renderer and the image-space renderer.
+
+#include <vector>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "gfield/scene.hpp"
+#include "runtime/gpu_assets.hpp"
+
+namespace gfield {
+
+/// Object-space half extents of an analytic shape's bounds (as preprocess/analytic_primitives'
+/// shape_bounds); zero for meshes.
+glm::vec3 shape_half_extent(const Shape& shape);
+
+/// World-space axis-aligned bounds [lo, hi] of scene.objects[object] (scene units): its shape's
+/// bounds, or its mesh asset's box, through its transform.
+void object_world_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,
+                         glm::vec3& hi);
+
+/// The 36 vertices of the cube [-1, 1]^3 as 36 x 8 floats (position, normal, uv = 0).
+std::vector<float> proxy_cube_vertices();
+
+/// (Re)creates and fills the objects and lights buffers of shaders/lib/scene.glsl for `scene`
+/// (meshes read their layer and box from `assets`). Returns the scene's extent: the diagonal of
+/// the bounds of all objects and the camera (scene units, at least 1e-3).
+float upload_scene_buffers(const Scene& scene, const GpuAssets& assets, GLuint& objects_buffer,
+                           GLuint& lights_buffer);
+
+}  // namespace gfield
