@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gfield/environment.hpp"
 #include "gfield/scene.hpp"
 
 namespace gfield {
@@ -141,6 +142,34 @@ float upload_scene_buffers(const Scene& scene, const GpuAssets& assets, GLuint& 
                     GLsizeiptr(std::max<size_t>(1, lights.size()) * sizeof(GpuLight)),
                     lights.empty() ? nullptr : lights.data(), GL_DYNAMIC_DRAW);
   return std::max(1e-3f, glm::length(hi - lo));
+}
+
+bool upload_environment_texture(const EnvironmentDesc& desc, GLuint& texture, std::string& error) {
+  Environment environment;
+  if (!load_environment(desc, environment, error))
+    return false;
+  std::vector<const Image*> layers;
+  if (desc.type == EnvironmentType::kEquirect)
+    layers.push_back(&environment.equirect);
+  if (desc.type == EnvironmentType::kCube)
+    for (const Image& face : environment.faces)
+      layers.push_back(&face);
+  const int width = layers.empty() ? 1 : layers[0]->width;
+  const int height = layers.empty() ? 1 : layers[0]->height;
+  if (texture != 0)
+    glDeleteTextures(1, &texture);
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture);
+  glTextureStorage3D(texture, 1, GL_RGBA32F, width, height,
+                     GLsizei(std::max<size_t>(1, layers.size())));
+  for (size_t k = 0; k < layers.size(); ++k) {
+    std::vector<glm::vec4> pixels;
+    pixels.reserve(layers[k]->pixels.size());
+    for (const glm::vec3& p : layers[k]->pixels)
+      pixels.emplace_back(p, 1.0f);
+    glTextureSubImage3D(texture, 0, 0, 0, GLint(k), width, height, 1, GL_RGBA, GL_FLOAT,
+                        pixels.data());
+  }
+  return true;
 }
 
 }  // namespace gfield

@@ -3,6 +3,7 @@
 // (bindings 0 and 1), the bounds of objects, and the proxy cube that rasterises analytic shapes.
 // Shared by the geometry-field renderer and the image-space renderer.
 
+#include <string>
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -30,5 +31,10 @@ std::vector<float> proxy_cube_vertices();
 /// the bounds of all objects and the camera (scene units, at least 1e-3).
 float upload_scene_buffers(const Scene& scene, const GpuAssets& assets, GLuint& objects_buffer,
                            GLuint& lights_buffer);
+
+/// Loads the scene's environment images and uploads them as the RGBA32F 2D array texture of
+/// shaders/lib/scene_environment.glsl (equirect: layer 0; cube: the 6 faces in layers 0-5;
+/// analytic environments: one 1 x 1 layer). False with "FILE: problem" when an image fails.
+bool upload_environment_texture(const EnvironmentDesc& desc, GLuint& texture, std::string& error);
 
 }  // namespace gfield

@@ -7,7 +7,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "gfield/environment.hpp"
 #include "gfield/exr_io.hpp"
 #include "preprocess/mesh_io.hpp"
 #include "runtime/gpu_scene.hpp"
@@ -80,7 +79,7 @@ bool Renderer::load(const Scene& scene, const std::filesystem::path& shader_dir,
     error = scene.filename + ": " + error;
     return false;
   }
-  if (!upload_environment(error))
+  if (!upload_environment_texture(scene_.environment, environment_, error))
     return false;
 
   const std::vector<float> cube = proxy_cube_vertices();
@@ -103,32 +102,6 @@ bool Renderer::load(const Scene& scene, const std::filesystem::path& shader_dir,
     return false;
   if (!trace_program_.build(shader_dir, {"fullscreen.vert", "field_trace.frag"}, "", error))
     return false;
-  return true;
-}
-
-bool Renderer::upload_environment(std::string& error) {
-  Environment environment;
-  if (!load_environment(scene_.environment, environment, error))
-    return false;
-  std::vector<const Image*> layers;
-  if (scene_.environment.type == EnvironmentType::kEquirect)
-    layers.push_back(&environment.equirect);
-  if (scene_.environment.type == EnvironmentType::kCube)
-    for (const Image& face : environment.faces)
-      layers.push_back(&face);
-  const int width = layers.empty() ? 1 : layers[0]->width;
-  const int height = layers.empty() ? 1 : layers[0]->height;
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &environment_);
-  glTextureStorage3D(environment_, 1, GL_RGBA32F, width, height,
-                     GLsizei(std::max<size_t>(1, layers.size())));
-  for (size_t k = 0; k < layers.size(); ++k) {
-    std::vector<glm::vec4> pixels;
-    pixels.reserve(layers[k]->pixels.size());
-    for (const glm::vec3& p : layers[k]->pixels)
-      pixels.emplace_back(p, 1.0f);
-    glTextureSubImage3D(environment_, 0, 0, 0, GLint(k), width, height, 1, GL_RGBA, GL_FLOAT,
-                        pixels.data());
-  }
   return true;
 }
 

@@ -82,8 +82,6 @@ class Renderer {
   float scene_extent() const { return extent_; }
 
  private:
-  bool upload_environment(std::string& error);
-
   Scene scene_;
   GpuAssets assets_;
   std::vector<int> mesh_asset_;  ///< Scene::meshes index -> asset

@@ -7,7 +7,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "gfield/environment.hpp"
 #include "gfield/exr_io.hpp"
 #include "gfield/thickness.hpp"
 #include "runtime/gpu_scene.hpp"
@@ -153,28 +152,8 @@ bool ImageSpaceRenderer::load(const Scene& scene, const std::filesystem::path& s
       glTextureSubImage3D(thickness_, 0, 0, 0, GLint(m), thickness[m].size, thickness[m].size, 1,
                           GL_RED, GL_FLOAT, thickness[m].distance.data());
 
-  // Environment images (as runtime/renderer.cpp: equirect in layer 0, cube faces in 6 layers).
-  Environment environment;
-  if (!load_environment(scene_.environment, environment, error))
+  if (!upload_environment_texture(scene_.environment, environment_, error))
     return false;
-  std::vector<const Image*> layers;
-  if (scene_.environment.type == EnvironmentType::kEquirect)
-    layers.push_back(&environment.equirect);
-  if (scene_.environment.type == EnvironmentType::kCube)
-    for (const Image& face : environment.faces)
-      layers.push_back(&face);
-  const int env_width = layers.empty() ? 1 : layers[0]->width;
-  const int env_height = layers.empty() ? 1 : layers[0]->height;
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &environment_);
-  glTextureStorage3D(environment_, 1, GL_RGBA32F, env_width, env_height,
-                     GLsizei(std::max<size_t>(1, layers.size())));
-  for (size_t k = 0; k < layers.size(); ++k) {
-    std::vector<glm::vec4> pixels;
-    for (const glm::vec3& p : layers[k]->pixels)
-      pixels.emplace_back(p, 1.0f);
-    glTextureSubImage3D(environment_, 0, 0, 0, GLint(k), env_width, env_height, 1, GL_RGBA,
-                        GL_FLOAT, pixels.data());
-  }
 
   const std::vector<float> cube = proxy_cube_vertices();
   glCreateBuffers(1, &proxy_buffer_);
