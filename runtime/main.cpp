@@ -112,9 +112,11 @@ int main(int argc, char** argv) {
   app.add_option("--depth", settings.max_depth,
                  "Reflections/refractions after the camera ray (as gfield render --depth)")
       ->check(CLI::Range(0, 64));
-  app.add_option("--spp", settings.samples_per_pixel, "Samples per pixel (stratified)")
+  app.add_option("--spp", settings.samples_per_pixel,
+                 "Samples per pixel, stratified, at the strata centres (every method)")
       ->check(CLI::Range(1, 256));
-  app.add_flag("--no-self-reflection", no_self, "Objects do not look up their own field");
+  app.add_flag("--no-self-reflection", no_self,
+               "Objects do not look up their own field (no self-reflection, no self-shadows)");
   app.add_option("--min-weight", settings.min_weight, "Branches below this weight are dropped")
       ->check(CLI::Range(0.0, 1.0));
   app.add_option("--max-rays", settings.max_rays, "Secondary rays per pixel at most")
