@@ -60,7 +60,12 @@ void main() {
     if (interior) path = (path == GD_PATH_BOTH_WALLS || path == GD_PATH_FRONT_WALL)
                              ? GD_PATH_FRONT_WALL : -1;
     if (in_wall) path = -1;
-    if (path >= 0 && (interior || glass_behind_cylinder(e, q))) {
+    // Outside the glass, every point a path through both walls or the verge reaches is moved
+    // there (near the inner silhouette such paths bend far, to points whose straight line misses
+    // the cylinder: leaving those in place would stretch triangles across the class's image);
+    // the walls' own paths take the points whose straight line crosses the cylinder.
+    bool bending = path == GD_PATH_BOTH_WALLS || path == GD_PATH_VERGE;
+    if (path >= 0 && (interior || bending || glass_behind_cylinder(e, q))) {
       bool ok = false;
       vec3 s = gd_cylinder_displace(path, u_outer_radius, u_inner_radius, u_ior, e, q, ok);
       if (ok) {
