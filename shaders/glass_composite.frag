@@ -36,6 +36,7 @@ uniform mat4 u_view_projection;   // of the class images (jitter included)
 uniform float u_near;             // their clip planes
 uniform float u_far;
 uniform float u_scene_extent;
+uniform bool u_has_meshes;        // meshes are drawn: traced rays look for them by screen_march
 
 #define GLASS_MARCH_STEPS 48
 
@@ -248,7 +249,9 @@ bool screen_march(vec3 o, vec3 d, float t_max, out float t_hit, out vec3 color) 
 }
 
 // What a traced ray meets before t_max: the nearest opaque analytic shape (exact) or, outside
-// the glass, a point of the scene image found by screen_march (meshes). True with its radiance.
+// the glass and when the scene has meshes, a point of the scene image found by screen_march
+// (without meshes the march could only find the analytic shapes again, less exactly). True with
+// its radiance.
 bool scene_hit(vec3 o, vec3 d, float t_max, bool inside, out float t_hit, out vec3 radiance) {
   ShapeHit opaque_hit;
   int k = nearest_opaque(o, d, t_max, opaque_hit);
@@ -256,7 +259,7 @@ bool scene_hit(vec3 o, vec3 d, float t_max, bool inside, out float t_hit, out ve
   radiance = k >= 0 ? shade_opaque(k, opaque_hit, o, d) : vec3(0.0f);
   float t_screen;
   vec3 screen_color;
-  if (!inside && screen_march(o, d, t_hit, t_screen, screen_color)) {
+  if (u_has_meshes && !inside && screen_march(o, d, t_hit, t_screen, screen_color)) {
     t_hit = t_screen;
     radiance = screen_color;
     return true;
@@ -264,14 +267,41 @@ bool scene_hit(vec3 o, vec3 d, float t_max, bool inside, out float t_hit, out ve
   return k >= 0;
 }
 
-// Radiance arriving along a ray that starts at a glass surface (`inside`: in the glass): the
-// ray followed through the glass (refracted, totally reflected, Fresnel-weighted) until it
-// leaves, then the opaque analytic shapes or the environment. Black after GLASS_MAX_EVENTS
-// events, as the reference tracer's depth limit.
+// Radiance arriving along a ray that starts at a glass surface (`inside`: in the glass) after
+// `depth` events of the eye path: as the reference tracer, every refraction splits the ray into
+// its Fresnel-weighted reflected and transmitted parts (total internal reflection keeps it
+// whole), each followed through the glass until it leaves and meets the opaque analytic shapes
+// (or the meshes in the scene image) or the environment; black beyond GLASS_MAX_EVENTS events,
+// branches of weight below GLASS_MIN_WEIGHT (relative to `weight`, the eye path's) are dropped.
+// Near grazing incidence the inner surfaces of a hollow cylinder reflect most of the light, so
+// the reflections of reflections carry much of a pixel's radiance there.
 #define GLASS_MAX_EVENTS 10
-vec3 glass_exit_radiance(vec3 o, vec3 d, bool inside) {
-  vec3 weight = vec3(1.0f);
-  for (int event = 0; event < GLASS_MAX_EVENTS; event++) {
+#define GLASS_MIN_WEIGHT 1.0e-4f
+#define GLASS_STACK 24
+vec3 glass_exit_radiance(vec3 origin, vec3 direction, bool inside_glass, int depth, float weight) {
+  vec3 stack_o[GLASS_STACK];
+  vec3 stack_d[GLASS_STACK];
+  vec3 stack_tint[GLASS_STACK];  // Fresnel weights and absorption so far (rgb)
+  float stack_w[GLASS_STACK];    // Fresnel weight so far, for pruning as the reference tracer
+  int stack_depth[GLASS_STACK];
+  bool stack_inside[GLASS_STACK];
+  int top = 0;
+  stack_o[0] = origin;
+  stack_d[0] = direction;
+  stack_tint[0] = vec3(1.0f);
+  stack_w[0] = weight;
+  stack_depth[0] = depth;
+  stack_inside[0] = inside_glass;
+  top = 1;
+  vec3 sum = vec3(0.0f);
+  while (top > 0) {
+    top--;
+    vec3 o = stack_o[top];
+    vec3 d = stack_d[top];
+    vec3 tint = stack_tint[top];
+    float w = stack_w[top];
+    int event = stack_depth[top];
+    bool inside = stack_inside[top];
     vec3 lo = (u_glass_to_object * vec4(o, 1.0f)).xyz;
     vec3 ld = (u_glass_to_object * vec4(d, 0.0f)).xyz;
     ShapeHit h = intersect_shape(u_glass_shape, u_glass_params, u_glass_size, lo, ld, u_epsilon,
@@ -279,28 +309,44 @@ vec3 glass_exit_radiance(vec3 o, vec3 d, bool inside) {
     float t_hit;
     vec3 hit_radiance;
     if (scene_hit(o, d, h.hit ? h.t : 3.0e38f, inside, t_hit, hit_radiance)) {
-      if (inside) weight *= exp(-u_absorption * t_hit);
-      return weight * hit_radiance;
+      if (inside) tint *= exp(-u_absorption * t_hit);
+      sum += tint * hit_radiance;
+      continue;
     }
-    if (!h.hit) return inside ? vec3(0.0f) : weight * environment_radiance(d);
+    if (!h.hit) {
+      if (!inside) sum += tint * environment_radiance(d);
+      continue;
+    }
+    if (event >= GLASS_MAX_EVENTS) continue;
     vec3 p = o + h.t * d;
-    if (inside) weight *= exp(-u_absorption * h.t);
+    if (inside) tint *= exp(-u_absorption * h.t);
     vec3 n = normalize(transpose(mat3(u_glass_to_object)) * h.normal);
     bool front = dot(d, n) < 0.0f;
     vec3 m = front ? n : -n;
     float n1 = front ? 1.0f : u_ior;
     float n2 = front ? u_ior : 1.0f;
     vec3 t = refract(d, m, n1 / n2);
-    if (dot(t, t) == 0.0f) {
-      d = reflect(d, m);
-    } else {
-      weight *= 1.0f - fresnel_dielectric(-dot(d, m), n1, n2);
-      d = normalize(t);
-      inside = !inside;
+    float r = dot(t, t) == 0.0f ? 1.0f : fresnel_dielectric(-dot(d, m), n1, n2);
+    if (r < 1.0f && w * (1.0f - r) >= GLASS_MIN_WEIGHT && top < GLASS_STACK) {
+      stack_o[top] = p;
+      stack_d[top] = normalize(t);
+      stack_tint[top] = tint * (1.0f - r);
+      stack_w[top] = w * (1.0f - r);
+      stack_depth[top] = event + 1;
+      stack_inside[top] = !inside;
+      top++;
     }
-    o = p;
+    if (w * r >= GLASS_MIN_WEIGHT && top < GLASS_STACK) {
+      stack_o[top] = p;
+      stack_d[top] = reflect(d, m);
+      stack_tint[top] = tint * r;
+      stack_w[top] = w * r;
+      stack_depth[top] = event + 1;
+      stack_inside[top] = inside;
+      top++;
+    }
   }
-  return vec3(0.0f);
+  return sum;
 }
 
 void main() {
@@ -337,6 +383,7 @@ void main() {
   vec3 o = u_camera_position;
   vec3 d = camera_direction();
   vec3 transmittance = vec3(1.0f);
+  float weight = 1.0f;  // Fresnel weight of the eye path (the reference tracer's pruning weight)
   vec3 reflections = vec3(0.0f);
   int refractions = 0;
   bool inside = false;
@@ -372,7 +419,9 @@ void main() {
     } else {
       if (u_fresnel) {
         float r = fresnel_dielectric(-dot(d, m), n1, n2);
-        reflections += transmittance * r * glass_exit_radiance(p, reflect(d, m), inside);
+        reflections += transmittance * r *
+                       glass_exit_radiance(p, reflect(d, m), inside, event + 1, weight * r);
+        weight *= 1.0f - r;
         transmittance *= 1.0f - r;
       }
       d = normalize(t);

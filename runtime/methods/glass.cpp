@@ -801,6 +801,7 @@ void GlassRenderer::render(const Camera& camera, const GlassSettings& settings, 
   glUniform1f(v("u_far"), far_plane);
   glUniform1f(v("u_scene_extent"), extent_);
   glUniform1i(v("u_opaque_count"), opaque_count_);
+  glUniform1i(v("u_has_meshes"), int(draws_.size()) > opaque_count_ ? 1 : 0);
   glUniform1i(v("u_env_type"), int(scene_.environment.type));
   glUniform3fv(v("u_env_color"), 1, &scene_.environment.color.x);
   glUniform1f(v("u_env_intensity"), scene_.environment.intensity);
