@@ -216,9 +216,9 @@ class GlassTest : public ::testing::Test {
 };
 GlContext* GlassTest::context_ = nullptr;
 
-// Thresholds: the target for the plates (30 dB; measured 31.0-32.5 dB at this size).
-// The cylinder measures 32.8 dB with its verge displaced (threshold 32.3) and 35.3 dB with the
-// verge traced per pixel (GlassSettings::trace_verge; threshold 34.7); the target is
+// Thresholds: the target for the plates (30 dB; measured 31.6-36.0 dB at this size).
+// The cylinder measures 34.0 dB with its verge displaced (threshold 33.5) and 38.6 dB with the
+// verge traced per pixel (GlassSettings::trace_verge; threshold 38.0); the target is
 // 25 dB. docs/glass.md has the 512^2 figures.
 TEST_F(GlassTest, PlateScenesMatchTheReferenceBehindTheGlass) {
   const struct {
@@ -252,11 +252,11 @@ TEST_F(GlassTest, HollowCylinderMatchesTheReferenceBehindTheGlass) {
       "%.4f over %zu pixels, %d class images\n",
       c.psnr, traced.psnr, c.ssim, c.pixels, stats.class_images);
   EXPECT_GT(c.pixels, size_t(kSize * kSize / 20));
-  EXPECT_GE(c.psnr, 32.3);
+  EXPECT_GE(c.psnr, 33.5);
   // None, both walls, verge, front wall and back wall (through the open top) all appear.
   EXPECT_EQ(stats.class_images, 5);
   // Tracing the verge per pixel follows its fold exactly.
-  EXPECT_GE(traced.psnr, 34.7);
+  EXPECT_GE(traced.psnr, 38.0);
 }
 
 TEST_F(GlassTest, RefusesScenesWithoutOneSlabOrHollowCylinder) {
