@@ -26,11 +26,14 @@ inline glm::vec2 stratified_pixel_offset(int sample, int spp) {
           (float(sample / nx) + 0.5f) / float(ny) - 0.5f};
 }
 
-/// `projection` moved by `jitter` pixels (x right, y down) on a width x height target.
+/// `projection` moved so that the fragment at pixel centre p of a width x height target shows what
+/// lies along the camera ray through p + jitter (pixels, x right, y down): the ray the shaders
+/// compute for their sample (`pixel + u_jitter`) and the reference tracer's sample position.
 inline glm::mat4 jittered_projection(const glm::mat4& projection, glm::vec2 jitter, int width,
                                      int height) {
-  return glm::translate(glm::mat4(1.0f), glm::vec3(2.0f * jitter.x / float(width),
-                                                   -2.0f * jitter.y / float(height), 0.0f)) *
+  // A point at p + jitter must land on p: shift the picture by -jitter (NDC y points up).
+  return glm::translate(glm::mat4(1.0f), glm::vec3(-2.0f * jitter.x / float(width),
+                                                   2.0f * jitter.y / float(height), 0.0f)) *
          projection;
 }
 

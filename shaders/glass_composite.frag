@@ -71,10 +71,10 @@ uniform int u_opaque_count;
 layout(location = 0) out vec4 o_color;
 
 // The eye ray through this fragment's sample: the class images and the peeled layers are drawn
-// with the projection moved by u_jitter (runtime/supersample.hpp), so a fragment at pixel p shows
-// what lies along the ray through p - u_jitter; the exact path must take the same ray.
+// with the jittered projection of runtime/supersample.hpp, so a fragment at pixel p shows what
+// lies along the ray through p + u_jitter; the exact path must take the same ray.
 vec3 camera_direction() {
-  vec2 pixel = vec2(gl_FragCoord.x, u_image_size.y - gl_FragCoord.y) - u_jitter;
+  vec2 pixel = vec2(gl_FragCoord.x, u_image_size.y - gl_FragCoord.y) + u_jitter;
   float sx = (2.0f * pixel.x / u_image_size.x - 1.0f) * u_tan_half.x;
   float sy = (1.0f - 2.0f * pixel.y / u_image_size.y) * u_tan_half.y;
   return normalize(u_camera_forward + sx * u_camera_right + sy * u_camera_up);
