@@ -18,8 +18,8 @@
 #include "gfield/optics.hpp"
 #include "preprocess/analytic_primitives.hpp"
 #include "preprocess/embree_mesh.hpp"
-#include "preprocess/outward_normals.hpp"
 #include "preprocess/mesh_io.hpp"
+#include "preprocess/outward_normals.hpp"
 
 namespace gfield {
 namespace {

@@ -1,6 +1,7 @@
 #include "runtime/gpu_scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "gfield/environment.hpp"
 #include "gfield/scene.hpp"
@@ -77,7 +78,7 @@ void object_world_bounds(const Scene& scene, const GpuAssets& assets, int object
   }
 }
 
-std::vector<float> proxy_cube_vertices() {
+void create_proxy_cube(GLuint& buffer, GLuint& vertex_array) {
   std::vector<float> v;
   for (int axis = 0; axis < 3; ++axis) {
     for (float side : {-1.0f, 1.0f}) {
@@ -93,7 +94,38 @@ std::vector<float> proxy_cube_vertices() {
       }
     }
   }
-  return v;
+  glCreateBuffers(1, &buffer);
+  glNamedBufferStorage(buffer, GLsizeiptr(v.size() * sizeof(float)), v.data(), 0);
+  glCreateVertexArrays(1, &vertex_array);
+  glVertexArrayVertexBuffer(vertex_array, 0, buffer, 0, 8 * sizeof(float));
+  for (GLuint attribute = 0; attribute < 3; ++attribute) {
+    glEnableVertexArrayAttrib(vertex_array, attribute);
+    glVertexArrayAttribFormat(vertex_array, attribute, attribute == 2 ? 2 : 3, GL_FLOAT, GL_FALSE,
+                              attribute * 3 * sizeof(float));
+    glVertexArrayAttribBinding(vertex_array, attribute, 0);
+  }
+}
+
+void set_camera_ray_uniforms(const ShaderProgram& program, const Camera& camera, int width,
+                             int height, glm::vec2 jitter) {
+  const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+  const glm::vec3 up = glm::cross(right, forward);
+  const float tan_half = std::tan(glm::radians(camera.fov_degrees) * 0.5f);
+  const float aspect = float(width) / float(height);
+  glUniform3fv(program.uniform("u_camera_position"), 1, &camera.position.x);
+  glUniform3fv(program.uniform("u_camera_forward"), 1, &forward.x);
+  glUniform3fv(program.uniform("u_camera_right"), 1, &right.x);
+  glUniform3fv(program.uniform("u_camera_up"), 1, &up.x);
+  glUniform2f(program.uniform("u_tan_half"), tan_half * aspect, tan_half);
+  glUniform2f(program.uniform("u_image_size"), float(width), float(height));
+  glUniform2f(program.uniform("u_jitter"), jitter.x, jitter.y);
+}
+
+void set_environment_uniforms(const ShaderProgram& program, const EnvironmentDesc& environment) {
+  glUniform1i(program.uniform("u_env_type"), int(environment.type));
+  glUniform3fv(program.uniform("u_env_color"), 1, &environment.color.x);
+  glUniform1f(program.uniform("u_env_intensity"), environment.intensity);
 }
 
 float upload_scene_buffers(const Scene& scene, const GpuAssets& assets, GLuint& objects_buffer,

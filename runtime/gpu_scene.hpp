@@ -11,6 +11,7 @@
 
 #include "gfield/scene.hpp"
 #include "runtime/gpu_assets.hpp"
+#include "runtime/shader_program.hpp"
 
 namespace gfield {
 
@@ -23,8 +24,19 @@ glm::vec3 shape_half_extent(const Shape& shape);
 void object_world_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,
                          glm::vec3& hi);
 
-/// The 36 vertices of the cube [-1, 1]^3 as 36 x 8 floats (position, normal, uv = 0).
-std::vector<float> proxy_cube_vertices();
+/// Creates the vertex buffer and vertex array of the cube [-1, 1]^3 that rasterises analytic
+/// shapes: 36 vertices, attributes 0 = position, 1 = normal, 2 = uv (zero).
+void create_proxy_cube(GLuint& buffer, GLuint& vertex_array);
+
+/// Sets the camera-ray uniforms of a program (u_camera_position/forward/right/up, u_tan_half,
+/// u_image_size, u_jitter): the ray through pixel p + jitter of a width x height picture, as
+/// gfield::camera_ray. The program must be in use.
+void set_camera_ray_uniforms(const ShaderProgram& program, const Camera& camera, int width,
+                             int height, glm::vec2 jitter);
+
+/// Sets u_env_type, u_env_color and u_env_intensity of shaders/lib/scene_environment.glsl. The
+/// program must be in use.
+void set_environment_uniforms(const ShaderProgram& program, const EnvironmentDesc& environment);
 
 /// (Re)creates and fills the objects and lights buffers of shaders/lib/scene.glsl for `scene`
 /// (meshes read their layer and box from `assets`). Returns the scene's extent: the diagonal of

@@ -82,17 +82,7 @@ bool Renderer::load(const Scene& scene, const std::filesystem::path& shader_dir,
   if (!upload_environment_texture(scene_.environment, environment_, error))
     return false;
 
-  const std::vector<float> cube = proxy_cube_vertices();
-  glCreateBuffers(1, &proxy_buffer_);
-  glNamedBufferStorage(proxy_buffer_, GLsizeiptr(cube.size() * sizeof(float)), cube.data(), 0);
-  glCreateVertexArrays(1, &proxy_vertex_array_);
-  glVertexArrayVertexBuffer(proxy_vertex_array_, 0, proxy_buffer_, 0, 8 * sizeof(float));
-  for (GLuint attribute = 0; attribute < 3; ++attribute) {
-    glEnableVertexArrayAttrib(proxy_vertex_array_, attribute);
-    glVertexArrayAttribFormat(proxy_vertex_array_, attribute, attribute == 2 ? 2 : 3, GL_FLOAT,
-                              GL_FALSE, attribute * 3 * sizeof(float));
-    glVertexArrayAttribBinding(proxy_vertex_array_, attribute, 0);
-  }
+  create_proxy_cube(proxy_buffer_, proxy_vertex_array_);
   glCreateVertexArrays(1, &empty_vertex_array_);
   glCreateBuffers(1, &objects_buffer_);
   glCreateBuffers(1, &lights_buffer_);
@@ -230,20 +220,8 @@ void Renderer::render(const Camera& camera, const RenderSettings& settings, Fram
   glUniform1i(u("u_mode"), int(settings.mode));
   glUniform1i(u("u_self_reflection"), settings.self_reflection ? 1 : 0);
   glUniform1f(u("u_scene_extent"), extent_);
-  glUniform1i(u("u_env_type"), int(scene_.environment.type));
-  glUniform3fv(u("u_env_color"), 1, &scene_.environment.color.x);
-  glUniform1f(u("u_env_intensity"), scene_.environment.intensity);
-  const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-  const glm::vec3 up = glm::cross(right, forward);
-  const float tan_half = std::tan(glm::radians(camera.fov_degrees) * 0.5f);
-  glUniform3fv(u("u_camera_position"), 1, &camera.position.x);
-  glUniform3fv(u("u_camera_forward"), 1, &forward.x);
-  glUniform3fv(u("u_camera_right"), 1, &right.x);
-  glUniform3fv(u("u_camera_up"), 1, &up.x);
-  glUniform2f(u("u_tan_half"), tan_half * aspect, tan_half);
-  glUniform2f(u("u_image_size"), float(width), float(height));
-  glUniform2f(u("u_jitter"), jitter.x, jitter.y);
+  set_environment_uniforms(trace_program_, scene_.environment);
+  set_camera_ray_uniforms(trace_program_, camera, width, height, jitter);
   glUniform1i(u("u_max_depth"), settings.max_depth);
   glUniform1f(u("u_min_weight"), settings.min_weight);
   glUniform1i(u("u_max_rays"), settings.max_rays);

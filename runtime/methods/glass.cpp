@@ -8,11 +8,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "gfield/environment.hpp"
 #include "gfield/glass_displacement.hpp"
 #include "preprocess/analytic_primitives.hpp"
 #include "preprocess/mesh_io.hpp"
 #include "preprocess/outward_normals.hpp"
+#include "runtime/gpu_scene.hpp"
 #include "runtime/supersample.hpp"
 
 namespace gfield {
@@ -450,28 +450,8 @@ bool GlassRenderer::load(const Scene& scene, const std::filesystem::path& shader
   glVertexArrayAttribBinding(glass_vertex_array_, 1, 0);
   glCreateVertexArrays(1, &empty_vertex_array_);
 
-  // Environment (as Renderer::upload_environment).
-  Environment environment;
-  if (!load_environment(scene.environment, environment, error))
+  if (!upload_environment_texture(scene.environment, environment_, error))
     return false;
-  std::vector<const Image*> env_layers;
-  if (scene.environment.type == EnvironmentType::kEquirect)
-    env_layers.push_back(&environment.equirect);
-  if (scene.environment.type == EnvironmentType::kCube)
-    for (const Image& face : environment.faces)
-      env_layers.push_back(&face);
-  const int env_width = env_layers.empty() ? 1 : env_layers[0]->width;
-  const int env_height = env_layers.empty() ? 1 : env_layers[0]->height;
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &environment_);
-  glTextureStorage3D(environment_, 1, GL_RGBA32F, env_width, env_height,
-                     GLsizei(std::max<size_t>(1, env_layers.size())));
-  for (size_t k = 0; k < env_layers.size(); ++k) {
-    std::vector<glm::vec4> pixels;
-    for (const glm::vec3& p : env_layers[k]->pixels)
-      pixels.emplace_back(p, 1.0f);
-    glTextureSubImage3D(environment_, 0, 0, 0, GLint(k), env_width, env_height, 1, GL_RGBA,
-                        GL_FLOAT, pixels.data());
-  }
 
   if (!peel_program_.build(shader_dir, {"glass_peel.vert", "glass_peel.frag"}, "", error) ||
       !scene_program_.build(shader_dir, {"glass_scene.vert", "glass_scene.frag"}, "", error) ||
@@ -802,20 +782,8 @@ void GlassRenderer::render(const Camera& camera, const GlassSettings& settings, 
   glUniform1f(v("u_scene_extent"), extent_);
   glUniform1i(v("u_opaque_count"), opaque_count_);
   glUniform1i(v("u_has_meshes"), int(draws_.size()) > opaque_count_ ? 1 : 0);
-  glUniform1i(v("u_env_type"), int(scene_.environment.type));
-  glUniform3fv(v("u_env_color"), 1, &scene_.environment.color.x);
-  glUniform1f(v("u_env_intensity"), scene_.environment.intensity);
-  const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-  const glm::vec3 up = glm::cross(right, forward);
-  const float tan_half = std::tan(glm::radians(camera.fov_degrees) * 0.5f);
-  glUniform3fv(v("u_camera_position"), 1, &camera.position.x);
-  glUniform3fv(v("u_camera_forward"), 1, &forward.x);
-  glUniform3fv(v("u_camera_right"), 1, &right.x);
-  glUniform3fv(v("u_camera_up"), 1, &up.x);
-  glUniform2f(v("u_tan_half"), tan_half * aspect, tan_half);
-  glUniform2f(v("u_image_size"), float(width), float(height));
-  glUniform2f(v("u_jitter"), jitter.x, jitter.y);
+  set_environment_uniforms(composite_program_, scene_.environment);
+  set_camera_ray_uniforms(composite_program_, camera, width, height, jitter);
   glBindVertexArray(empty_vertex_array_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   if (stats != nullptr) {

@@ -155,17 +155,7 @@ bool ImageSpaceRenderer::load(const Scene& scene, const std::filesystem::path& s
   if (!upload_environment_texture(scene_.environment, environment_, error))
     return false;
 
-  const std::vector<float> cube = proxy_cube_vertices();
-  glCreateBuffers(1, &proxy_buffer_);
-  glNamedBufferStorage(proxy_buffer_, GLsizeiptr(cube.size() * sizeof(float)), cube.data(), 0);
-  glCreateVertexArrays(1, &proxy_vertex_array_);
-  glVertexArrayVertexBuffer(proxy_vertex_array_, 0, proxy_buffer_, 0, 8 * sizeof(float));
-  for (GLuint attribute = 0; attribute < 3; ++attribute) {
-    glEnableVertexArrayAttrib(proxy_vertex_array_, attribute);
-    glVertexArrayAttribFormat(proxy_vertex_array_, attribute, attribute == 2 ? 2 : 3, GL_FLOAT,
-                              GL_FALSE, attribute * 3 * sizeof(float));
-    glVertexArrayAttribBinding(proxy_vertex_array_, attribute, 0);
-  }
+  create_proxy_cube(proxy_buffer_, proxy_vertex_array_);
   glCreateVertexArrays(1, &empty_vertex_array_);
   glCreateFramebuffers(1, &cube_framebuffer_);
   update_scene();
