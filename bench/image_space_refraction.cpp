@@ -9,10 +9,10 @@
 // A second table: `envmap` (the classic environment-mapped reflection) against the geometry field
 // on the mirror scenes at 256^2, against `gfield render --spp 1`.
 // Mesh assets are built with `gfield build` (its defaults, as scripts/demo.sh) and `gfield
-// thickness` into a temporary folder. Frame times: the mean of several frames (3 up to 512^2,
+// thickness` into a temporary folder. Frame times: the mean of F frames (default 3 up to 512^2,
 // 2 above) after a warm-up frame, each ended by glFinish.
 //
-// Usage: bench_image_space_refraction [SIZE...]   (default 512 1024)
+// Usage: bench_image_space_refraction [--frames F] [SIZE...]   (default 512 1024)
 
 #include <cstdio>
 #include <cstdlib>
@@ -23,6 +23,7 @@
 
 #include "example_scenes.hpp"
 #include "gfield/image_metrics.hpp"
+#include "gl_bench_setup.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/methods/image_space.hpp"
@@ -107,7 +108,7 @@ bool load_scene_and_tracer(const std::string& name, const fs::path& dir, bool th
 }
 
 /// Table 1: the refractive-mesh scene at each size.
-void refraction_table(const fs::path& dir, const std::vector<int>& sizes) {
+void refraction_table(const fs::path& dir, const std::vector<int>& sizes, int frames_per_row) {
   Scene scene;
   ReferenceTracer tracer;
   if (!load_scene_and_tracer("davis-wyman-color-chart", dir, true, scene, tracer))
@@ -122,7 +123,7 @@ void refraction_table(const fs::path& dir, const std::vector<int>& sizes) {
     return;
   }
   for (int size : sizes) {
-    const int frames = size <= 512 ? 3 : 2;
+    const int frames = frames_per_row > 0 ? frames_per_row : size <= 512 ? 3 : 2;
     double tir_ms = 0.0, full_ms = 0.0;
     const Image tir_only = reference_image(tracer, size, DielectricMode::kTirOnly, tir_ms);
     const Image full = reference_image(tracer, size, DielectricMode::kFull, full_ms);
@@ -165,12 +166,11 @@ void refraction_table(const fs::path& dir, const std::vector<int>& sizes) {
 }
 
 /// envmap against the geometry field on the mirror scenes.
-void envmap_table(const fs::path& dir, int size) {
-  constexpr int kFrames = 3;
+void envmap_table(const fs::path& dir, int size, int frames) {
   std::printf(
       "\nmirror scenes %dx%d, %d frames after a warm-up, reference `gfield render --spp 1 "
       "--depth %d`:\n\n",
-      size, size, kFrames, kDepth);
+      size, size, frames, kDepth);
   std::printf("| scene | method | ms/frame | / reference | PSNR |\n");
   std::printf("|---|---|---:|---:|---:|\n");
   for (const char* name : {"mirror-torus-instances", "two-mirror-spheres"}) {
@@ -191,8 +191,8 @@ void envmap_table(const fs::path& dir, int size) {
     ImageSpaceSettings envmap;
     envmap.method = ImageSpaceMethod::kEnvMap;
     const Row rows[] = {
-        timed_row("envmap (256^2 faces)", kFrames, image_space_frame(image_space, size, envmap)),
-        timed_row("geometry field (refined)", kFrames, field_frame(field, size))};
+        timed_row("envmap (256^2 faces)", frames, image_space_frame(image_space, size, envmap)),
+        timed_row("geometry field (refined)", frames, field_frame(field, size))};
     for (const Row& row : rows)
       std::printf("| %s | %s | %.1f | %.3f | %.2f dB |\n", name, row.method.c_str(), row.ms,
                   row.ms / reference_ms, compare_images(row.image, reference).psnr);
@@ -204,22 +204,15 @@ void envmap_table(const fs::path& dir, int size) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<int> sizes;
-  for (int i = 1; i < argc; ++i)
-    sizes.push_back(std::atoi(argv[i]));
-  if (sizes.empty())
-    sizes = {512, 1024};
+  GlBenchArguments arguments;
+  if (!parse_gl_bench_arguments(argc, argv, "bench_image_space_refraction", arguments))
+    return 2;
   const fs::path dir = fs::temp_directory_path() / "gfield_bench_image_space_refraction";
   fs::create_directories(dir);
-  std::string error;
-  auto context = GlContext::create_headless(error);
-  if (!context) {
-    std::fprintf(stderr, "%s\n", error.c_str());
+  auto context = create_bench_context();
+  if (!context)
     return kExitNoOpenGL;
-  }
-  std::printf("GL: %s, %s (%s)\n", context->renderer().c_str(), context->version().c_str(),
-              context->platform().c_str());
-  refraction_table(dir, sizes);
-  envmap_table(dir, 256);
+  refraction_table(dir, arguments.sizes, arguments.frames);
+  envmap_table(dir, 256, arguments.frames > 0 ? arguments.frames : 3);
   return 0;
 }

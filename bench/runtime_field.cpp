@@ -4,15 +4,17 @@
 // against it. Example scenes of data/scenes, their mesh assets built with `gfield build` (its
 // defaults, as scripts/demo.sh) into a temporary folder.
 //
-// Usage: bench_runtime_field [SIZE...]   (default 512 1024)
+// Usage: bench_runtime_field [--frames F] [SIZE...]   (default 512 1024, 2 frames)
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <thread>
 
 #include "example_scenes.hpp"
 #include "gfield/image_metrics.hpp"
+#include "gl_bench_setup.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/renderer.hpp"
@@ -21,21 +23,16 @@ namespace fs = std::filesystem;
 using namespace gfield;
 
 int main(int argc, char** argv) {
-  std::vector<int> sizes;
-  for (int i = 1; i < argc; ++i)
-    sizes.push_back(std::atoi(argv[i]));
-  if (sizes.empty())
-    sizes = {512, 1024};
+  GlBenchArguments arguments;
+  if (!parse_gl_bench_arguments(argc, argv, "bench_runtime_field", arguments))
+    return 2;
+  const int frames = arguments.frames > 0 ? arguments.frames : 2;
   const fs::path dir = fs::temp_directory_path() / "gfield_bench_runtime_field";
   fs::create_directories(dir);
-  std::string error;
-  auto context = GlContext::create_headless(error);
-  if (!context) {
-    std::fprintf(stderr, "%s\n", error.c_str());
+  auto context = create_bench_context();
+  if (!context)
     return kExitNoOpenGL;
-  }
-  std::printf("GL: %s, %s (%s)\n", context->renderer().c_str(), context->version().c_str(),
-              context->platform().c_str());
+  std::string error;
   constexpr int kDepth = 4;
   for (const char* name :
        {"mirror-torus-instances", "two-mirror-spheres", "davis-wyman-color-chart"}) {
@@ -55,7 +52,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s\n", error.c_str());
       continue;
     }
-    for (int size : sizes) {
+    for (int size : arguments.sizes) {
       RenderOptions options;
       options.width = options.height = size;
       options.samples_per_pixel = 1;
@@ -63,8 +60,8 @@ int main(int argc, char** argv) {
       options.jitter = false;
       RenderStats reference_stats;
       const Image reference = clamped_to_display(tracer.render(options, &reference_stats));
-      std::printf("%s %dx%d depth %d: reference tracer %.1f ms (1 spp, 2 cores)\n", name, size,
-                  size, kDepth, reference_stats.seconds * 1e3);
+      std::printf("%s %dx%d depth %d: reference tracer %.1f ms (1 spp, %u cores)\n", name, size,
+                  size, kDepth, reference_stats.seconds * 1e3, std::thread::hardware_concurrency());
       for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
         RenderSettings settings;
         settings.mode = mode;
@@ -72,18 +69,17 @@ int main(int argc, char** argv) {
         renderer.render_image(size, size, settings);  // warm-up (shader compilation)
         FrameStats stats;
         Image image;
-        constexpr int kFrames = 2;
-        for (int f = 0; f < kFrames; ++f)
+        for (int f = 0; f < frames; ++f)
           image = renderer.render_image(size, size, settings, &stats);
-        const double ms = stats.milliseconds / kFrames;
-        const double rays = double(stats.secondary_rays) / kFrames;
+        const double ms = stats.milliseconds / frames;
+        const double rays = double(stats.secondary_rays) / frames;
         const double psnr = compare_images(clamped_to_display(image), reference).psnr;
         std::printf(
             "  %-8s %8.1f ms/frame (%.2fx the reference tracer), %.1f ns per traced pixel "
             "per bounce, %.0f traced pixels, PSNR %.2f dB\n",
             lookup_mode_name(mode), ms, ms / (reference_stats.seconds * 1e3),
-            rays > 0 ? stats.trace_milliseconds / kFrames * 1e6 / rays : 0.0,
-            double(stats.traced_pixels) / kFrames, psnr);
+            rays > 0 ? stats.trace_milliseconds / frames * 1e6 / rays : 0.0,
+            double(stats.traced_pixels) / frames, psnr);
         std::fflush(stdout);
       }
     }
