@@ -67,7 +67,7 @@ void GpuAssets::release() {
 
 bool GpuAssets::upload(const std::vector<const GeometryImage*>& images,
                        const std::vector<const GeometryField*>& fields, std::string& error,
-                       const std::vector<const TriangleMesh*>& meshes) {
+                       const std::vector<const ParameterizedMesh*>& meshes) {
   release();
   GLint max_size = 0, max_layers = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
@@ -132,19 +132,33 @@ bool GpuAssets::upload(const std::vector<const GeometryImage*>& images,
       glTextureSubImage3D(fields_, 0, 0, 0, k, side, side, 1, GL_RG, GL_FLOAT, field->uv.data());
       asset.samples_per_side = field->samples_per_side;
     }
-    // Mesh for rasterisation: position, normal, uv per vertex.
+    // Mesh for rasterisation: position, normal, uv per vertex (per corner when the mesh has
+    // corner uvs: a vertex on a chart seam has one uv on each side).
     std::vector<float> vertices;
     std::vector<unsigned> indices;
-    const TriangleMesh* mesh = size_t(k) < meshes.size() ? meshes[size_t(k)] : nullptr;
-    if (mesh != nullptr) {
-      const std::vector<glm::vec3> normals = angle_weighted_normals(*mesh);
-      for (size_t v = 0; v < mesh->positions.size(); ++v) {
-        const glm::vec3 p(mesh->positions[v]);
-        vertices.insert(vertices.end(),
-                        {p.x, p.y, p.z, normals[v].x, normals[v].y, normals[v].z, 0.0f, 0.0f});
+    const ParameterizedMesh* pm = size_t(k) < meshes.size() ? meshes[size_t(k)] : nullptr;
+    if (pm != nullptr) {
+      const TriangleMesh& mesh = pm->mesh;
+      const std::vector<glm::vec3> normals = angle_weighted_normals(mesh);
+      const bool corners = pm->corner_uv.size() == 3 * mesh.triangles.size();
+      const auto add_vertex = [&](int v, glm::vec2 uv) {
+        const glm::vec3 p(mesh.positions[size_t(v)]);
+        const glm::vec3& n = normals[size_t(v)];
+        vertices.insert(vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y});
+      };
+      if (corners) {
+        for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+          for (int c = 0; c < 3; ++c) {
+            add_vertex(mesh.triangles[f][c], pm->corner_uv[3 * f + size_t(c)]);
+            indices.push_back(unsigned(3 * f + size_t(c)));
+          }
+        }
+      } else {
+        for (size_t v = 0; v < mesh.positions.size(); ++v)
+          add_vertex(int(v), glm::vec2(0.0f));
+        for (const glm::ivec3& f : mesh.triangles)
+          indices.insert(indices.end(), {unsigned(f.x), unsigned(f.y), unsigned(f.z)});
       }
-      for (const glm::ivec3& f : mesh->triangles)
-        indices.insert(indices.end(), {unsigned(f.x), unsigned(f.y), unsigned(f.z)});
     } else {
       for (int j = 0; j < n; ++j) {
         for (int i = 0; i < n; ++i) {

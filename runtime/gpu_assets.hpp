@@ -9,8 +9,9 @@
 //     layer reaches 16384).
 // Shaders read them with texelFetch only (bilinear weights are computed in the shader, as the
 // CPU does, instead of the texture unit's fixed-point filtering). Each asset also has a triangle
-// mesh for rasterisation: the mesh the geometry image was made from (NAME.gimage.obj) when it is
-// given, else the geometry image's grid. Instances share one asset.
+// mesh for rasterisation when one is given (the scene's mesh file, or the parameterised mesh
+// NAME.gimage.obj, whose corner uvs reach the asset's per-texel maps), else the geometry image's
+// grid. Instances share one asset.
 
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "gfield/geometry_field.hpp"
 #include "gfield/geometry_image.hpp"
 #include "preprocess/mesh_io.hpp"
+#include "preprocess/parameterized_mesh.hpp"
 
 namespace gfield {
 
@@ -29,7 +31,7 @@ struct GpuAsset {
   int image_size = 0;        ///< n of the geometry image
   int samples_per_side = 0;  ///< N of the field (0: no field)
   Box box;                   ///< mesh-coordinate box of the unit cube
-  GLuint vertex_array = 0;   ///< grid mesh: attributes 0 = position, 1 = normal, 2 = uv
+  GLuint vertex_array = 0;   ///< attributes 0 = position, 1 = normal, 2 = geometry-image uv
   GLsizei index_count = 0;   ///< triangles * 3
 };
 
@@ -41,12 +43,12 @@ class GpuAssets {
   GpuAssets& operator=(const GpuAssets&) = delete;
 
   /// Uploads the image and field of every asset (fields[i] may be null: no field) and its
-  /// rasterisation mesh (meshes[i] may be null or meshes empty: the geometry image grid). False
-  /// with an error when an image and its field do not belong together (box) or a size exceeds
-  /// the GL limits.
+  /// rasterisation mesh (meshes[i] may be null or meshes empty: the geometry image grid; a mesh
+  /// without corner uvs gets uv 0). False with an error when an image and its field do not
+  /// belong together (box) or a size exceeds the GL limits.
   bool upload(const std::vector<const GeometryImage*>& images,
               const std::vector<const GeometryField*>& fields, std::string& error,
-              const std::vector<const TriangleMesh*>& meshes = {});
+              const std::vector<const ParameterizedMesh*>& meshes = {});
 
   const std::vector<GpuAsset>& assets() const { return assets_; }
   GLuint positions() const { return positions_; }

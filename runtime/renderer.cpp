@@ -64,14 +64,14 @@ bool Renderer::load(const Scene& scene, const std::filesystem::path& shader_dir,
     }
   }
   // Rasterisation meshes: the scene's mesh files themselves (as the reference tracer sees them).
-  std::vector<TriangleMesh> raster(scene.meshes.size());
+  std::vector<ParameterizedMesh> raster(scene.meshes.size());
   std::vector<const GeometryImage*> image_pointers;
   std::vector<const GeometryField*> field_pointers;
-  std::vector<const TriangleMesh*> mesh_pointers;
+  std::vector<const ParameterizedMesh*> mesh_pointers;
   for (size_t m = 0; m < images.size(); ++m) {
     image_pointers.push_back(&images[m]);
     field_pointers.push_back(&fields[m]);
-    if (!load_mesh(scene.meshes[m].file, raster[m], error))
+    if (!load_mesh(scene.meshes[m].file, raster[m].mesh, error))
       return false;
     mesh_pointers.push_back(&raster[m]);
   }

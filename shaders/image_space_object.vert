@@ -24,6 +24,42 @@ layout(location = 2) out vec2 v_uv;
 layout(location = 3) out float v_thickness;  // world d_n
 layout(location = 4) out vec3 v_hurley;      // per-vertex refraction vector (unnormalised)
 
+// d_n at geometry-image uv `uv` (texel centres at (i + 0.5) / n): bilinear over the four nearest
+// texels that hold a surface (d > 0; padding holds 0), so that a corner on a chart's border reads
+// its own chart; the nearest of the 3x3 texels around it when none of the four does.
+float thickness_at(vec2 uv) {
+  vec2 f = uv * float(u_gi_size) - 0.5f;
+  ivec2 base = ivec2(floor(f));
+  vec2 w = f - vec2(base);
+  float sum = 0.0f, weight = 0.0f;
+  for (int j = 0; j < 2; j++) {
+    for (int i = 0; i < 2; i++) {
+      ivec2 t = clamp(base + ivec2(i, j), ivec2(0), ivec2(u_gi_size - 1));
+      float d = texelFetch(u_thickness, ivec3(t, u_thickness_layer), 0).r;
+      float k = (i == 0 ? 1.0f - w.x : w.x) * (j == 0 ? 1.0f - w.y : w.y);
+      if (d > 0.0f) {
+        sum += k * d;
+        weight += k;
+      }
+    }
+  }
+  if (weight > 0.0f) return sum / weight;
+  ivec2 centre = ivec2(uv * float(u_gi_size));
+  float best = 0.0f, best_distance = 1.0e30f;
+  for (int j = -1; j <= 1; j++) {
+    for (int i = -1; i <= 1; i++) {
+      ivec2 t = clamp(centre + ivec2(i, j), ivec2(0), ivec2(u_gi_size - 1));
+      float d = texelFetch(u_thickness, ivec3(t, u_thickness_layer), 0).r;
+      float distance = length(vec2(t) + 0.5f - uv * float(u_gi_size));
+      if (d > 0.0f && distance < best_distance) {
+        best = d;
+        best_distance = distance;
+      }
+    }
+  }
+  return best;
+}
+
 void main() {
   vec4 world = u_to_world * vec4(a_position * u_proxy_half, 1.0f);
   v_position = world.xyz;
@@ -31,9 +67,7 @@ void main() {
   v_uv = a_uv;
   v_thickness = 0.0f;
   if (u_thickness_layer >= 0) {
-    ivec2 texel = clamp(ivec2(a_uv * float(u_gi_size)), ivec2(0), ivec2(u_gi_size - 1));
-    float d = texelFetch(u_thickness, ivec3(texel, u_thickness_layer), 0).r;
-    v_thickness = length(mat3(u_to_world) * (a_normal * d));
+    v_thickness = length(mat3(u_to_world) * (a_normal * thickness_at(a_uv)));
   }
   vec3 e = u_eye - world.xyz;
   v_hurley = -(u_alpha - 1.0f) * dot(v_normal, e) * v_normal - e;

@@ -136,11 +136,21 @@ bool ImageSpaceRenderer::load(const Scene& scene, const std::filesystem::path& s
       thickness_missing_.push_back(path);
     }
   }
+  // Rasterised: the parameterised mesh the image was made from (NAME.gimage.obj, the surface
+  // itself with its smooth normals and corner uvs into the image's maps), else the image's grid.
+  std::vector<ParameterizedMesh> raster(scene.meshes.size());
   std::vector<const GeometryImage*> image_pointers;
-  for (const GeometryImage& image : images)
-    image_pointers.push_back(&image);
+  std::vector<const ParameterizedMesh*> mesh_pointers;
+  for (size_t m = 0; m < images.size(); ++m) {
+    image_pointers.push_back(&images[m]);
+    const std::string path = parameterized_mesh_path(scene.meshes[m].geometry_image);
+    const bool has_mesh = std::filesystem::exists(path);
+    if (has_mesh && !load_parameterized_mesh(path, raster[m], error))
+      return false;
+    mesh_pointers.push_back(has_mesh ? &raster[m] : nullptr);
+  }
   if (!assets_.upload(image_pointers, std::vector<const GeometryField*>(images.size(), nullptr),
-                      error)) {
+                      error, mesh_pointers)) {
     error = scene.filename + ": " + error;
     return false;
   }
