@@ -54,19 +54,24 @@ glm::vec3 shape_half_extent(const Shape& shape) {
   return glm::vec3(0.0f);
 }
 
-void object_world_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,
+void object_local_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,
                          glm::vec3& hi) {
   const SceneObject& o = scene.objects[size_t(object)];
-  glm::vec3 olo, ohi;
   if (o.shape.type == ShapeType::kMesh) {
     const GpuAsset& asset = assets.assets()[size_t(o.shape.mesh)];
-    olo = asset.box.min;
-    ohi = asset.box.max;
+    lo = asset.box.min;
+    hi = asset.box.max;
   } else {
-    ohi = shape_half_extent(o.shape);
-    olo = -ohi;
+    hi = shape_half_extent(o.shape);
+    lo = -hi;
   }
-  const glm::mat4 to_world(object_to_world(o.transform));
+}
+
+void object_world_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,
+                         glm::vec3& hi) {
+  glm::vec3 olo, ohi;
+  object_local_bounds(scene, assets, object, olo, ohi);
+  const glm::mat4 to_world(object_to_world(scene.objects[size_t(object)].transform));
   lo = glm::vec3(3.0e38f);
   hi = glm::vec3(-3.0e38f);
   for (int c = 0; c < 8; ++c) {

@@ -19,6 +19,11 @@ namespace gfield {
 /// shape_bounds); zero for meshes.
 glm::vec3 shape_half_extent(const Shape& shape);
 
+/// Object-space bounds [lo, hi] of scene.objects[object]: its shape's bounds, or its mesh asset's
+/// box (mesh coordinates).
+void object_local_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,
+                         glm::vec3& hi);
+
 /// World-space axis-aligned bounds [lo, hi] of scene.objects[object] (scene units): its shape's
 /// bounds, or its mesh asset's box, through its transform.
 void object_world_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,

@@ -83,15 +83,15 @@ struct MapHit {
 };
 
 // Davis & Wyman 2007, section 3: binary search for o + t d against the depth map `map` (eye
-// depth in alpha), `iterations` steps between o (offset against acne) and the exit of the frustum
-// whose depth range is `depths`.
+// depth in alpha), `iterations` steps between o (offset against acne) and the nearer of the exit
+// of the frustum whose depth range is `depths` and t_max.
 // Five cases: the map's far value moves the end point; otherwise the point moves towards the
 // surface from the side the ray comes from (rays going away from or towards the viewer).
 MapHit is_search_depth_map(sampler2D map, vec3 o, vec3 d, int iterations, float offset,
-                           vec2 depths) {
+                           vec2 depths, float t_max) {
   ivec2 size = textureSize(map, 0);
   vec3 a = o + offset * d;
-  vec3 b = o + is_clip_to_frustum(o, d, depths) * d;
+  vec3 b = o + min(is_clip_to_frustum(o, d, depths), t_max) * d;
   bool away = dot(d, u_camera_forward) > 0.0f;
   MapHit h;
   h.found = false;
@@ -208,7 +208,7 @@ vec3 is_exit_analytic(vec3 o, vec3 d) {
 // `min_alignment` counts as a hit), then the environment.
 vec3 is_exit_depth_map(sampler2D nearby, vec3 o, vec3 d, int iterations, float offset,
                        float min_alignment) {
-  MapHit h = is_search_depth_map(nearby, o, d, iterations, offset, u_nearby_depths);
+  MapHit h = is_search_depth_map(nearby, o, d, iterations, offset, u_nearby_depths, 1.0e30f);
   if (h.found && h.alignment >= min_alignment) return texelFetch(nearby, h.texel, 0).rgb;
   return environment_radiance(d);
 }
