@@ -197,8 +197,8 @@ int nearest_opaque(vec3 o, vec3 d, float t_max, out ShapeHit hit) {
 vec3 shade_opaque(int k, ShapeHit hit, vec3 o, vec3 d) {
   vec3 p = o + hit.t * d;
   vec3 n = normalize(transpose(mat3(opaque[k].to_object)) * hit.normal);
-  vec3 albedo = glass_albedo(opaque[k].kind.y, opaque[k].color.rgb, opaque[k].checker0,
-                             opaque[k].checker1, hit.uv);
+  vec3 albedo = texture_albedo(opaque[k].kind.y, opaque[k].color.rgb, opaque[k].checker0,
+                               opaque[k].checker1, hit.uv);
   return glass_shade(albedo, p, n, n, d);
 }
 

@@ -9,7 +9,7 @@ layout(location = 3) in float v_valid;
 
 uniform vec3 u_eye;
 uniform bool u_smooth;        // interpolated normals (else the face's)
-uniform int u_texture;        // GLASS_TEXTURE_*
+uniform int u_texture;        // TEXTURE_*
 uniform vec3 u_color;
 uniform vec4 u_checker0;      // rgb, squares along u
 uniform vec4 u_checker1;      // rgb, squares along v
@@ -22,6 +22,6 @@ void main() {
   vec3 g = normalize(cross(dFdx(v_world), dFdy(v_world)));
   vec3 n = u_smooth ? normalize(v_normal) : g;
   if (dot(g, n) < 0.0f) g = -g;
-  vec3 albedo = glass_albedo(u_texture, u_color, u_checker0, u_checker1, v_uv);
+  vec3 albedo = texture_albedo(u_texture, u_color, u_checker0, u_checker1, v_uv);
   o_color = vec4(glass_shade(albedo, v_world, n, g, v_world - u_eye), gl_FragCoord.z);
 }

@@ -6,13 +6,11 @@
 #include "lib/gpu_assets.glsl"
 #include "lib/shapes.glsl"
 #include "lib/scene_environment.glsl"
+#include "lib/textures.glsl"
 
 #define MATERIAL_DIFFUSE 0
 #define MATERIAL_MIRROR 1
 #define MATERIAL_DIELECTRIC 2
-#define TEXTURE_NONE 0
-#define TEXTURE_CHECKER 1
-#define TEXTURE_COLOR_CHART 2
 
 struct GpuObject {
   mat4 to_world;   // object -> world
@@ -124,33 +122,8 @@ SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, int from) {
 
 // Albedo of object k's diffuse material at texture coordinates uv (gfield::texture_albedo).
 vec3 object_albedo(int k, vec2 uv) {
-  int texture_type = objects[k].kind.z;
-  if (texture_type == TEXTURE_CHECKER) {
-    int cu = int(floor(uv.x * objects[k].checker0.w));
-    int cv = int(floor(uv.y * objects[k].checker1.w));
-    return ((cu + cv) & 1) == 0 ? objects[k].checker0.rgb : objects[k].checker1.rgb;
-  }
-  if (texture_type == TEXTURE_COLOR_CHART) {
-    const vec3 patches[24] = vec3[](
-        vec3(115, 82, 68), vec3(194, 150, 130), vec3(98, 122, 157), vec3(87, 108, 67),
-        vec3(133, 128, 177), vec3(103, 189, 170), vec3(214, 126, 44), vec3(80, 91, 166),
-        vec3(193, 90, 99), vec3(94, 60, 108), vec3(157, 188, 64), vec3(224, 163, 46),
-        vec3(56, 61, 150), vec3(70, 148, 73), vec3(175, 54, 60), vec3(231, 199, 31),
-        vec3(187, 86, 149), vec3(8, 133, 161), vec3(243, 243, 242), vec3(200, 200, 200),
-        vec3(160, 160, 160), vec3(122, 122, 121), vec3(85, 85, 85), vec3(52, 52, 52));
-    float u = clamp(uv.x, 0.0f, 1.0f) * 6.0f;
-    float v = clamp(1.0f - uv.y, 0.0f, 1.0f) * 4.0f;
-    int column = min(int(u), 5);
-    int row = min(int(v), 3);
-    float fu = u - float(column);
-    float fv = v - float(row);
-    const float gap = 0.08f;
-    if (fu < gap || fu > 1.0f - gap || fv < gap || fv > 1.0f - gap) return vec3(0.01f);
-    vec3 c = patches[row * 6 + column] / 255.0f;
-    // sRGB -> linear (IEC 61966-2-1)
-    return mix(c / 12.92f, pow((c + 0.055f) / 1.055f, vec3(2.4f)), greaterThan(c, vec3(0.04045f)));
-  }
-  return objects[k].color.rgb;
+  return texture_albedo(objects[k].kind.z, objects[k].color.rgb, objects[k].checker0,
+                        objects[k].checker1, uv);
 }
 
 // Diffuse shading of a hit seen along `incoming`: albedo * (ambient + lights * cos / d^2), two
