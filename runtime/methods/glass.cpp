@@ -664,17 +664,21 @@ void GlassRenderer::render(const Camera& camera, const GlassSettings& settings, 
   auto set_lights = [&](const ShaderProgram& program) {
     glUniform1i(program.uniform("u_light_count"), light_count);
     glUniform3fv(program.uniform("u_ambient"), 1, &scene_.ambient.x);
-    for (int i = 0; i < light_count; ++i) {
-      const Light& l = scene_.lights[size_t(i)];
-      const std::string index = "[" + std::to_string(i) + "]";
-      const glm::vec4 direction(glm::normalize(l.direction),
-                                l.type == LightType::kPoint ? 1.0f : 0.0f);
-      const glm::vec3 color = l.color * l.intensity;
-      glUniform4fv(program.uniform(("u_light_direction" + index).c_str()), 1, &direction.x);
-      glUniform3fv(program.uniform(("u_light_position" + index).c_str()), 1, &l.position.x);
-      glUniform3fv(program.uniform(("u_light_color" + index).c_str()), 1, &color.x);
-      glUniformMatrix4fv(program.uniform(("u_light_view_projection" + index).c_str()), 1, GL_FALSE,
-                         glm::value_ptr(light_view_projection_[size_t(i)]));
+    if (light_count > 0) {
+      std::vector<glm::vec4> direction;
+      std::vector<glm::vec3> position, color;
+      for (int i = 0; i < light_count; ++i) {
+        const Light& l = scene_.lights[size_t(i)];
+        direction.emplace_back(glm::normalize(l.direction),
+                               l.type == LightType::kPoint ? 1.0f : 0.0f);
+        position.push_back(l.position);
+        color.push_back(l.color * l.intensity);
+      }
+      glUniform4fv(program.uniform("u_light_direction"), light_count, &direction[0].x);
+      glUniform3fv(program.uniform("u_light_position"), light_count, &position[0].x);
+      glUniform3fv(program.uniform("u_light_color"), light_count, &color[0].x);
+      glUniformMatrix4fv(program.uniform("u_light_view_projection"), light_count, GL_FALSE,
+                         glm::value_ptr(light_view_projection_[0]));
     }
     glBindTextureUnit(6, shadow_maps_);
   };
