@@ -13,6 +13,7 @@
 
 #include "preprocess/chart_split.hpp"
 #include "preprocess/cut_graph.hpp"
+#include "preprocess/outward_normals.hpp"
 #include "preprocess/parameterize.hpp"
 #include "preprocess/rasterize.hpp"
 #include "preprocess/surface_distance.hpp"
@@ -410,7 +411,7 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
                                     parameterized.mesh.positions.end());
   image.box = padded_bounds(box_points.data(), box_points.size(), kBoxPadding);
 
-  const std::vector<glm::dvec3> normals = vertex_normals(repaired.mesh);
+  const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(repaired.mesh);
   std::vector<glm::vec2> face_uv;
   rasterize_charts(repaired.mesh, normals, raster, options.size, image.box, image, face_uv);
   for (const Component& c : components)

@@ -14,7 +14,7 @@ double outward_orientation(const TriangleMesh& mesh) {
   return volume < 0.0 ? -1.0 : 1.0;
 }
 
-std::vector<glm::dvec3> outward_vertex_normals(const TriangleMesh& mesh) {
+std::vector<glm::dvec3> angle_weighted_vertex_normals(const TriangleMesh& mesh) {
   std::vector<glm::dvec3> normals(mesh.positions.size(), glm::dvec3(0.0));
   for (const glm::ivec3& f : mesh.triangles) {
     const glm::dvec3 p[3] = {mesh.positions[size_t(f.x)], mesh.positions[size_t(f.y)],
@@ -34,11 +34,18 @@ std::vector<glm::dvec3> outward_vertex_normals(const TriangleMesh& mesh) {
       normals[size_t(f[k])] += angle * n / len;
     }
   }
-  const double orientation = outward_orientation(mesh);
   for (glm::dvec3& n : normals) {
     const double len = glm::length(n);
-    n = len > 0.0 ? orientation * n / len : glm::dvec3(0.0);
+    n = len > 0.0 ? n / len : glm::dvec3(0.0);
   }
+  return normals;
+}
+
+std::vector<glm::dvec3> outward_vertex_normals(const TriangleMesh& mesh) {
+  std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
+  const double orientation = outward_orientation(mesh);
+  for (glm::dvec3& n : normals)
+    n *= orientation;
   return normals;
 }
 

@@ -106,21 +106,6 @@ size_t orient_outward(TriangleMesh& mesh) {
 
 }  // namespace
 
-std::vector<glm::dvec3> vertex_normals(const TriangleMesh& mesh) {
-  std::vector<glm::dvec3> normals(mesh.positions.size(), glm::dvec3(0.0));
-  for (const glm::ivec3& t : mesh.triangles) {
-    const glm::dvec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                                    mesh.positions[t[2]] - mesh.positions[t[0]]);
-    for (int k = 0; k < 3; ++k)
-      normals[t[k]] += n;  // |n| = 2 area: area weighting
-  }
-  for (glm::dvec3& n : normals) {
-    const double length = glm::length(n);
-    n = length > 0.0 ? n / length : glm::dvec3(0.0, 0.0, 1.0);
-  }
-  return normals;
-}
-
 bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out,
                  std::string& error) {
   out = {};

@@ -44,8 +44,4 @@ struct RepairedMesh {
 bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out,
                  std::string& error);
 
-/// Unit vertex normals of `mesh`, each the area-weighted mean of its faces' normals (a vertex with
-/// no area gets (0, 0, 1)). V normals.
-std::vector<glm::dvec3> vertex_normals(const TriangleMesh& mesh);
-
 }  // namespace gfield

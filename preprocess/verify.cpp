@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "gfield/exr_io.hpp"
+#include "preprocess/outward_normals.hpp"
 #include "preprocess/parameterized_mesh.hpp"
-#include "preprocess/repair.hpp"
 
 namespace gfield {
 namespace {
@@ -45,7 +45,7 @@ struct Exact {
   std::vector<glm::dvec3> normals;
 
   Exact(const EmbreeMesh& e, const TriangleMesh& m)
-      : embree(e), mesh(m), normals(vertex_normals(m)) {}
+      : embree(e), mesh(m), normals(angle_weighted_vertex_normals(m)) {}
 };
 
 /// The exact first (or last) hit of `ray` in [t_min, t_max], cast with rtcIntersect1.
