@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numeric>
 #include <unordered_map>
 
 #include <nlohmann/json.hpp>
@@ -93,24 +92,12 @@ Component make_component(const TriangleMesh& mesh, std::vector<int> faces) {
 
 /// Connected components (faces sharing vertices), largest (by faces) first.
 std::vector<Component> split_components(const TriangleMesh& mesh) {
-  std::vector<int> parent(mesh.positions.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const glm::ivec3& t : mesh.triangles) {
-    parent[find(t[1])] = find(t[0]);
-    parent[find(t[2])] = find(t[0]);
-  }
-  std::unordered_map<int, size_t> index;
+  const std::vector<int> component = face_components(mesh);
   std::vector<std::vector<int>> faces;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    auto [it, inserted] = index.emplace(find(mesh.triangles[f][0]), faces.size());
-    if (inserted)
-      faces.emplace_back();
-    faces[it->second].push_back(int(f));
+  for (size_t f = 0; f < component.size(); ++f) {
+    if (size_t(component[f]) >= faces.size())
+      faces.resize(size_t(component[f]) + 1);
+    faces[size_t(component[f])].push_back(int(f));
   }
   std::stable_sort(faces.begin(), faces.end(),
                    [](const auto& a, const auto& b) { return a.size() > b.size(); });

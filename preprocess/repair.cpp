@@ -50,31 +50,6 @@ double triangle_area(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3&
   return 0.5 * glm::length(glm::cross(b - a, c - a));
 }
 
-/// Union-find over faces connected through shared vertices: component id per face, ids ordered
-/// by first face.
-std::vector<int> face_components(const TriangleMesh& mesh) {
-  std::vector<int> parent(mesh.positions.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const glm::ivec3& t : mesh.triangles) {
-    parent[find(t[1])] = find(t[0]);
-    parent[find(t[2])] = find(t[0]);
-  }
-  std::vector<int> id(mesh.positions.size(), -1), component(mesh.triangles.size());
-  int next = 0;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    int& c = id[find(mesh.triangles[f][0])];
-    if (c < 0)
-      c = next++;
-    component[f] = c;
-  }
-  return component;
-}
-
 /// Turns closed components with negative signed volume outward; returns how many it reversed.
 size_t orient_outward(TriangleMesh& mesh) {
   const std::vector<int> component = face_components(mesh);
@@ -105,6 +80,29 @@ size_t orient_outward(TriangleMesh& mesh) {
 }
 
 }  // namespace
+
+std::vector<int> face_components(const TriangleMesh& mesh) {
+  std::vector<int> parent(mesh.positions.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const glm::ivec3& t : mesh.triangles) {
+    parent[find(t[1])] = find(t[0]);
+    parent[find(t[2])] = find(t[0]);
+  }
+  std::vector<int> id(mesh.positions.size(), -1), component(mesh.triangles.size());
+  int next = 0;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    int& c = id[find(mesh.triangles[f][0])];
+    if (c < 0)
+      c = next++;
+    component[f] = c;
+  }
+  return component;
+}
 
 bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out,
                  std::string& error) {

@@ -39,6 +39,10 @@ struct RepairedMesh {
   RepairReport report;
 };
 
+/// Components of faces connected through shared vertices (union-find): F component ids, numbered
+/// in the order of their first face.
+std::vector<int> face_components(const TriangleMesh& mesh);
+
 /// Repairs `input`. False with an error (no file name; the caller prefixes it) when nothing is
 /// left (every face degenerate) or the soup cannot be made an oriented manifold.
 bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out,
