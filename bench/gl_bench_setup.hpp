@@ -21,18 +21,15 @@ struct GlBenchArguments {
 inline bool parse_gl_bench_arguments(int argc, char** argv, const char* name,
                                      GlBenchArguments& arguments) {
   for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
+    const bool frames = std::string(argv[i]) == "--frames" && i + 1 < argc;
+    const char* text = frames ? argv[++i] : argv[i];
     char* end = nullptr;
-    if (arg == "--frames" && i + 1 < argc) {
-      arguments.frames = int(std::strtol(argv[++i], &end, 10));
-      if (*end != 0 || arguments.frames <= 0)
-        arguments.frames = -1;
-    } else {
-      arguments.sizes.push_back(int(std::strtol(arg.c_str(), &end, 10)));
-      if (*end != 0 || arguments.sizes.back() <= 0)
-        arguments.frames = -1;
-    }
-    if (arguments.frames < 0) {
+    const long value = std::strtol(text, &end, 10);
+    if (frames)
+      arguments.frames = int(value);
+    else
+      arguments.sizes.push_back(int(value));
+    if (end == text || *end != 0 || value <= 0 || value > 100000) {
       std::fprintf(stderr, "usage: %s [--frames F] [SIZE...]   (default sizes 512 1024)\n", name);
       return false;
     }

@@ -19,7 +19,7 @@ struct GpuObject {
   glm::vec4 checker1;    ///< rgb, w = checker scale v
   glm::vec4 shape;       ///< radius, height, thickness
   glm::vec4 size;        ///< xyz size of quads, boxes, slabs
-  glm::vec4 box_min;     ///< meshes: mesh-coordinate box of the field's unit cube
+  glm::vec4 box_min;     ///< object_local_bounds (meshes: the box of the field's unit cube)
   glm::vec4 box_max;
   glm::ivec4 kind;   ///< shape type, material type, texture type
   glm::ivec4 asset;  ///< meshes: layer, samples per side N, geometry-image size n
@@ -154,10 +154,12 @@ float upload_scene_buffers(const Scene& scene, const GpuAssets& assets, GLuint& 
     g.shape = glm::vec4(o.shape.radius, o.shape.height, o.shape.thickness, 0.0f);
     g.size = glm::vec4(o.shape.size, 0.0f);
     g.kind = glm::ivec4(int(o.shape.type), int(o.material.type), int(o.material.texture), 0);
+    glm::vec3 local_lo, local_hi;
+    object_local_bounds(scene, assets, int(k), local_lo, local_hi);
+    g.box_min = glm::vec4(local_lo, 0.0f);
+    g.box_max = glm::vec4(local_hi, 0.0f);
     if (o.shape.type == ShapeType::kMesh) {
       const GpuAsset& asset = assets.assets()[size_t(o.shape.mesh)];
-      g.box_min = glm::vec4(asset.box.min, 0.0f);
-      g.box_max = glm::vec4(asset.box.max, 0.0f);
       g.asset = glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, 0);
     }
     objects.push_back(g);

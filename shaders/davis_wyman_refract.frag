@@ -5,9 +5,9 @@
 // point) and intersects it by binary search with the back-face depth map and (first bounce, or
 // always unless u_back_only_later) the front-face map, keeps the candidate more aligned with the
 // ray, stops on a miss (both candidates misaligned), and at the hit either refracts out (below
-// the critical angle) or reflects totally and bounces again, up to u_bounces intersections. The ray that
-// leaves (or the one left after the last bounce) meets the nearby geometry (its depth map, same
-// search) or an analytic background, then the environment.
+// the critical angle) or reflects totally and bounces again, up to u_bounces intersections. The
+// ray that leaves (or the one left after the last bounce) meets the nearby geometry (its depth
+// map, same search) or an analytic background, then the environment.
 #include "lib/image_space.glsl"
 #include "lib/image_space_surface.glsl"
 
@@ -23,15 +23,14 @@ uniform int u_background;         // BACKGROUND_DEPTH_MAP or BACKGROUND_ANALYTIC
 uniform int u_exit_iterations;    // steps in the nearby-geometry map
 uniform float u_min_alignment;    // cosine below which a candidate is a miss
 uniform float u_offset;           // start offset along rays (scene units)
-uniform vec3 u_bounds_lo;         // the refractor's box (object coordinates)
-uniform vec3 u_bounds_hi;
 
-// Where o + t d (world, o inside the box) leaves the refractor's box.
+// Where o + t d (world, o inside it) leaves the refractor's box, grown by 0.1%.
 float box_exit(vec3 o, vec3 d) {
-  vec3 lo = (objects[u_object].to_object * vec4(o, 1.0f)).xyz;
-  vec3 ld = (objects[u_object].to_object * vec4(d, 0.0f)).xyz;
-  vec3 inv = 1.0f / ld;
-  vec3 t = max((u_bounds_lo - lo) * inv, (u_bounds_hi - lo) * inv);
+  vec3 margin = 1.0e-3f * (objects[u_object].box_max.xyz - objects[u_object].box_min.xyz);
+  vec3 lo = objects[u_object].box_min.xyz - margin, hi = objects[u_object].box_max.xyz + margin;
+  vec3 po = (objects[u_object].to_object * vec4(o, 1.0f)).xyz;
+  vec3 inv = 1.0f / (objects[u_object].to_object * vec4(d, 0.0f)).xyz;
+  vec3 t = max((lo - po) * inv, (hi - po) * inv);
   return max(0.0f, min(t.x, min(t.y, t.z)));
 }
 
@@ -49,10 +48,12 @@ void main() {
   for (int b = 0; b < u_bounces; b++) {
     int iterations = b == 0 ? u_iterations_first : u_iterations_later;
     float t_max = box_exit(o, d);
-    MapHit best = is_search_depth_map(u_back, o, d, iterations, u_offset, u_refractor_depths, t_max);
+    MapHit best =
+        is_search_depth_map(u_back, o, d, iterations, u_offset, u_refractor_depths, t_max);
     bool front = false;
     if (b == 0 || !u_back_only_later) {
-      MapHit f = is_search_depth_map(u_front, o, d, iterations, u_offset, u_refractor_depths, t_max);
+      MapHit f =
+          is_search_depth_map(u_front, o, d, iterations, u_offset, u_refractor_depths, t_max);
       if (f.found && (!best.found || f.alignment > best.alignment)) {
         best = f;
         front = true;

@@ -304,13 +304,6 @@ void ImageSpaceRenderer::draw_object(const ShaderProgram& program, int object) c
   glUniformMatrix4fv(u("u_to_world"), 1, GL_FALSE, glm::value_ptr(to_world));
   glUniform1i(u("u_object"), object);
   glUniform1f(u("u_alpha"), o.material.ior);
-  glm::vec3 lo, hi;
-  object_local_bounds(scene_, assets_, object, lo, hi);
-  const glm::vec3 margin = 1e-3f * (hi - lo);
-  lo -= margin;
-  hi += margin;
-  glUniform3fv(u("u_bounds_lo"), 1, &lo.x);
-  glUniform3fv(u("u_bounds_hi"), 1, &hi.x);
   if (o.shape.type == ShapeType::kMesh) {
     const GpuAsset& asset = assets_.assets()[size_t(o.shape.mesh)];
     glUniform3f(u("u_proxy_half"), 1.0f, 1.0f, 1.0f);

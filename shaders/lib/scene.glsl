@@ -21,7 +21,7 @@ struct GpuObject {
   vec4 checker1;   // rgb: second checker colour; w: squares along v
   vec4 shape;      // radius, height, thickness, 0
   vec4 size;       // xyz: box / quad / slab extents
-  vec4 box_min;    // mesh: the asset's box (mesh coordinates)
+  vec4 box_min;    // object-space bounds (mesh: the asset's box, mesh coordinates)
   vec4 box_max;
   ivec4 kind;      // shape type, material type, texture type, 0
   ivec4 asset;     // mesh: layer, samples per side N, image size n, 0
