@@ -1,6 +1,6 @@
 #pragma once
-// The shared test meshes of the benchmarks through the real geometry-image pipeline (512^2,
-// measurements off): the parameterised mesh and the geometry image of each.
+// The bundled test meshes (data/meshes) of the benchmarks through the real geometry-image pipeline
+// (512^2, measurements off): the parameterised mesh and the geometry image of each.
 
 #include <cstdio>
 #include <filesystem>
@@ -16,10 +16,10 @@ struct BenchAsset {
   GeometryImage image;
 };
 
-/// Loads `file` from the shared meshes and builds its geometry image; false (with a message on
+/// Loads `file` from data/meshes and builds its geometry image; false (with a message on
 /// stderr) when the mesh is missing or the pipeline fails.
 inline bool load_bench_asset(const std::string& file, int image_size, BenchAsset& asset) {
-  const std::string path = std::string(GFIELD_SHARED_MESHES) + "/" + file;
+  const std::string path = std::string(GFIELD_MESH_DIR) + "/" + file;
   TriangleMesh mesh;
   std::string error;
   if (!load_mesh(path, mesh, error)) {

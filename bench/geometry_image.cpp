@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
       meshes.push_back(arg);
   }
   if (meshes.empty())
-    meshes.push_back(std::string(GFIELD_SHARED_MESHES) + "/stanford-bunny.obj");
+    meshes.push_back(std::string(GFIELD_MESH_DIR) + "/stanford-bunny.obj");
 
   std::printf("%-22s %7s %8s %8s %8s %8s %8s %8s %8s %9s %8s\n", "mesh", "faces", "load_s",
               "repair_s", "param_s", "pack_s", "raster_s", "file2img", "ratio", "measure_s",

@@ -13,15 +13,14 @@ using gfield::test::CliRun;
 using gfield::test::run_cli;
 
 TEST(CliInfo, PrintsTheTopologyOfSpot) {
-  const CliRun run = run_cli(std::string("info ") + GFIELD_SHARED_MESHES + "/spot.obj");
+  const CliRun run = run_cli(std::string("info ") + GFIELD_MESH_DIR + "/spot.obj");
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("closed, genus 0 (sphere)"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("5856 triangles"), std::string::npos) << run.out;
 }
 
 TEST(CliInfo, JsonOutputParses) {
-  const CliRun run =
-      run_cli(std::string("info --json ") + GFIELD_SHARED_MESHES + "/rocker-arm.obj");
+  const CliRun run = run_cli(std::string("info --json ") + GFIELD_MESH_DIR + "/rocker-arm.obj");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json j = nlohmann::json::parse(run.out);
   EXPECT_EQ(j["components"][0]["genus"], 1);

@@ -45,7 +45,7 @@ CliRun run(const std::string& arguments) {
 
 // One folder per process: CTest runs each test in a process of its own, in parallel.
 const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("field_cli_" + std::to_string(getpid()));
-const std::string kSpot = std::string(GFIELD_SHARED_MESHES) + "/spot.obj";
+const std::string kSpot = std::string(GFIELD_MESH_DIR) + "/spot.obj";
 
 class FieldCli : public ::testing::Test {
  protected:
@@ -55,11 +55,15 @@ class FieldCli : public ::testing::Test {
     const CliRun r = run("build " + kSpot + " -o " + (kDir / "spot").string() +
                          " --size 256 --samples 8 --verify-rays 2000");
     ASSERT_EQ(r.status, 0) << r.output;
+    ready_ = true;
   }
+  /// A failed suite set-up fails every test instead of letting it use what is missing.
+  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
   static void TearDownTestSuite() {
     std::error_code ec;
     fs::remove_all(kDir, ec);
   }
+  static inline bool ready_ = false;
   static std::string name() { return (kDir / "spot").string(); }
 };
 
@@ -115,8 +119,7 @@ TEST_F(FieldCli, FieldRefusesBadInput) {
   r = run("field " + kSpot + image + " -o " + out + " --samples 49");
   EXPECT_EQ(r.status, 2);
   // The image was built from spot.obj, not from the bunny.
-  r = run("field " + std::string(GFIELD_SHARED_MESHES) + "/stanford-bunny.obj" + image + " -o " +
-          out);
+  r = run("field " + std::string(GFIELD_MESH_DIR) + "/stanford-bunny.obj" + image + " -o " + out);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.output.find("built from"), std::string::npos) << r.output;
   // A field is not a geometry image.

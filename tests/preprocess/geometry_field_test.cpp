@@ -110,8 +110,12 @@ class GeometryFieldTorus : public ::testing::Test {
                                      error, &asset_->stats))
         << error;
     asset_->field.source = asset_->image.source;
+    ready_ = true;
   }
+  /// A failed suite set-up fails every test instead of letting it use what is missing.
+  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
   static void TearDownTestSuite() { delete asset_; }
+  static inline bool ready_ = false;
   static TorusAsset* asset_;
 };
 TorusAsset* GeometryFieldTorus::asset_ = nullptr;

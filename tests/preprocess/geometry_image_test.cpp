@@ -33,18 +33,18 @@ struct Built {
   GeometryImageReport report;
 };
 
-Built build(const std::string& name, int size, bool measure = true, bool split = true) {
-  Built b;
+/// Loads data/meshes/NAME and builds its geometry image into `b`; fatal failure when either
+/// fails (callers wrap it in ASSERT_NO_FATAL_FAILURE).
+void build(const std::string& name, int size, Built& b, bool measure = true, bool split = true) {
   std::string error;
-  EXPECT_TRUE(load_mesh(std::string(GFIELD_SHARED_MESHES) + "/" + name, b.input, error)) << error;
+  ASSERT_TRUE(load_mesh(std::string(GFIELD_MESH_DIR) + "/" + name, b.input, error)) << error;
   GeometryImageOptions options;
   options.size = size;
   options.measure = measure;
   options.split_protrusions = split;
   options.error_samples = 20000;
-  EXPECT_TRUE(build_geometry_image(b.input, options, b.image, b.pm, b.report, error))
+  ASSERT_TRUE(build_geometry_image(b.input, options, b.image, b.pm, b.report, error))
       << name << ": " << error;
-  return b;
 }
 
 double diagonal_of(const std::vector<glm::dvec3>& points) {
@@ -91,7 +91,8 @@ class SharedMesh : public ::testing::TestWithParam<Expectation> {};
 
 TEST_P(SharedMesh, RouteFlipsCoverageAndReconstructionAt256) {
   const Expectation e = GetParam();
-  const Built b = build(e.mesh, 256);
+  Built b;
+  ASSERT_NO_FATAL_FAILURE(build(e.mesh, 256, b));
   const GeometryImageReport& r = b.report;
   ASSERT_FALSE(r.charts.empty());
   EXPECT_EQ(r.charts[0].route, e.route_start) << r.route;
@@ -132,7 +133,8 @@ INSTANTIATE_TEST_SUITE_P(GeometryImage, SharedMesh,
 
 TEST(GeometryImage, SeveralComponentsAreAllCharted) {
   for (const char* mesh : {"teapot.obj", "suzanne.obj"}) {
-    const Built b = build(mesh, 128, false);
+    Built b;
+    ASSERT_NO_FATAL_FAILURE(build(mesh, 128, b, false));
     const TopologyReport input = analyze_topology(b.input);
     EXPECT_GT(input.components.size(), 1u) << mesh;
     EXPECT_GT(b.report.components, 1u) << mesh;  // after welding and repair
@@ -148,7 +150,7 @@ TEST(GeometryImage, SeveralComponentsAreAllCharted) {
 TEST(GeometryImage, LargestComponentSaysWhatItDropped) {
   TriangleMesh teapot;
   std::string error;
-  ASSERT_TRUE(load_mesh(std::string(GFIELD_SHARED_MESHES) + "/teapot.obj", teapot, error));
+  ASSERT_TRUE(load_mesh(std::string(GFIELD_MESH_DIR) + "/teapot.obj", teapot, error));
   GeometryImageOptions options;
   options.size = 64;
   options.measure = false;
@@ -165,7 +167,8 @@ TEST(GeometryImage, LargestComponentSaysWhatItDropped) {
 }
 
 TEST(GeometryImage, OrbifoldTilingFillsTheSquareWithoutSeams) {
-  const Built b = build("spot.obj", 128, false, /*split=*/false);
+  Built b;
+  ASSERT_NO_FATAL_FAILURE(build("spot.obj", 128, b, false, /*split=*/false));
   ASSERT_EQ(b.report.route, "orbifold");
   EXPECT_EQ(b.report.coverage, 1.0);
   // No seam inside the square: neighbouring texels are close on the surface (a seam would join
@@ -186,7 +189,8 @@ TEST(GeometryImage, OrbifoldTilingFillsTheSquareWithoutSeams) {
 }
 
 TEST(GeometryImage, BoxIsThePaddedBoundsOfTheRepairedMesh) {
-  const Built b = build("suzanne.obj", 64, false);
+  Built b;
+  ASSERT_NO_FATAL_FAILURE(build("suzanne.obj", 64, b, false));
   std::vector<glm::vec3> points(b.pm.mesh.positions.begin(), b.pm.mesh.positions.end());
   const Box box = padded_bounds(points.data(), points.size(), kBoxPadding);
   EXPECT_EQ(b.image.box.min, box.min);
@@ -198,7 +202,9 @@ TEST(GeometryImage, BoxIsThePaddedBoundsOfTheRepairedMesh) {
 }
 
 TEST(GeometryImage, DeterministicOutput) {
-  const Built a = build("spot.obj", 64, false), b = build("spot.obj", 64, false);
+  Built a, b;
+  ASSERT_NO_FATAL_FAILURE(build("spot.obj", 64, a, false));
+  ASSERT_NO_FATAL_FAILURE(build("spot.obj", 64, b, false));
   EXPECT_EQ(a.image.position, b.image.position);
   EXPECT_EQ(a.image.normal, b.image.normal);
   EXPECT_EQ(a.pm.corner_uv, b.pm.corner_uv);
@@ -297,7 +303,7 @@ TEST(CutGraph, TreeCotreeCutsATorusIntoADisk) {
   // A genus-0 closed mesh needs no cut.
   TriangleMesh spot;
   std::string error;
-  ASSERT_TRUE(load_mesh(std::string(GFIELD_SHARED_MESHES) + "/spot.obj", spot, error));
+  ASSERT_TRUE(load_mesh(std::string(GFIELD_MESH_DIR) + "/spot.obj", spot, error));
   EXPECT_TRUE(tree_cotree_cut(spot).empty());
 }
 
@@ -373,7 +379,7 @@ TEST(CliImage, WritesTheImageAndTheUvMeshOrNothing) {
   const std::string out = tmp + "/suzanne.gimage.exr", json = tmp + "/suzanne.gimage.json";
   fs::remove(out);
   fs::remove(tmp + "/suzanne.gimage.obj");
-  const test::CliRun run = test::run_cli("image " + std::string(GFIELD_SHARED_MESHES) +
+  const test::CliRun run = test::run_cli("image " + std::string(GFIELD_MESH_DIR) +
                                          "/suzanne.obj -o " + out + " --size 64 --json " + json);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("route: "), std::string::npos) << run.out;
@@ -395,7 +401,7 @@ TEST(CliImage, WritesTheImageAndTheUvMeshOrNothing) {
   fs::remove(bad);
   for (const std::string& args :
        {"image " + tmp + "/missing.obj -o " + bad,
-        "image " + std::string(GFIELD_SHARED_MESHES) + "/teapot.obj --method orbifold -o " + bad}) {
+        "image " + std::string(GFIELD_MESH_DIR) + "/teapot.obj --method orbifold -o " + bad}) {
     const test::CliRun failed = test::run_cli(args);
     EXPECT_EQ(failed.exit_code, 2) << args;
     EXPECT_EQ(std::count(failed.err.begin(), failed.err.end(), '\n'), 1) << failed.err;

@@ -43,7 +43,10 @@ SceneObject dielectric(ShapeType type, float ior) {
 Image render(const Scene& scene, const RenderOptions& options) {
   ReferenceTracer tracer;
   std::string error;
-  EXPECT_TRUE(tracer.build(scene, error)) << error;
+  if (!tracer.build(scene, error)) {
+    ADD_FAILURE() << error;  // the empty picture compares as no match
+    return Image{};
+  }
   return tracer.render(options);
 }
 
@@ -93,6 +96,7 @@ TEST(ReferenceTracer, MirrorQuadShowsTheExactMirrorImage) {
   options.samples_per_pixel = 1;
   options.jitter = false;  // pixel centres
   const Image image = render(scene, options);
+  ASSERT_EQ(image.pixels.size(), size_t(64 * 64));
   int exact = 0, red = 0;
   for (int y = 0; y < 64; ++y) {
     for (int x = 0; x < 64; ++x) {

@@ -8,11 +8,17 @@
 namespace gfield {
 namespace {
 
-TopologyReport shared_mesh(const std::string& name) {
+/// The topology of data/meshes/NAME into `report`; false (with a failure recorded) when the mesh
+/// does not load.
+bool bundled_topology(const std::string& name, TopologyReport& report) {
   TriangleMesh mesh;
   std::string error;
-  EXPECT_TRUE(load_mesh(std::string(GFIELD_SHARED_MESHES) + "/" + name, mesh, error)) << error;
-  return analyze_topology(mesh);
+  if (!load_mesh(std::string(GFIELD_MESH_DIR) + "/" + name, mesh, error)) {
+    ADD_FAILURE() << error;
+    return false;
+  }
+  report = analyze_topology(mesh);
+  return true;
 }
 
 // An m x n grid torus: V = mn, E = 3mn, F = 2mn, so chi = 0 and genus 1.
@@ -82,27 +88,31 @@ TEST(Topology, FlippedFaceBreaksOrientation) {
 // has E = 3F/2, so chi = V - F/2; genus = (2 - chi - loops) / 2.
 TEST(Topology, SharedMeshes) {
   {
-    const TopologyReport r = shared_mesh("spot.obj");  // 2930 - 5856/2 = 2: a sphere
+    TopologyReport r;
+    ASSERT_TRUE(bundled_topology("spot.obj", r));  // 2930 - 5856/2 = 2: a sphere
     ASSERT_EQ(r.components.size(), 1u);
     EXPECT_TRUE(r.closed());
     EXPECT_EQ(r.euler_characteristic, 2);
     EXPECT_EQ(r.components[0].genus, 0);
   }
   {
-    const TopologyReport r = shared_mesh("rocker-arm.obj");  // 10044 - 20088/2 = 0: a torus
+    TopologyReport r;
+    ASSERT_TRUE(bundled_topology("rocker-arm.obj", r));  // 10044 - 20088/2 = 0: a torus
     ASSERT_EQ(r.components.size(), 1u);
     EXPECT_TRUE(r.closed());
     EXPECT_EQ(r.euler_characteristic, 0);
     EXPECT_EQ(r.components[0].genus, 1);
   }
   {
-    const TopologyReport r = shared_mesh("homer.obj");  // 6002 - 12000/2 = 2
+    TopologyReport r;
+    ASSERT_TRUE(bundled_topology("homer.obj", r));  // 6002 - 12000/2 = 2
     EXPECT_EQ(r.components[0].genus, 0);
     EXPECT_TRUE(r.closed());
   }
   {
     // The scan: open at the base, 5 holes (DESIGN.md), 1113 vertices never referenced.
-    const TopologyReport r = shared_mesh("stanford-bunny.obj");
+    TopologyReport r;
+    ASSERT_TRUE(bundled_topology("stanford-bunny.obj", r));
     ASSERT_EQ(r.components.size(), 1u);
     EXPECT_EQ(r.boundary_loops, 5u);
     EXPECT_EQ(r.unreferenced_vertices, 35947u - 34834u);
@@ -112,20 +122,23 @@ TEST(Topology, SharedMeshes) {
   {
     // 5804 faces, 2903 vertices: closed with chi 1 unless one vertex is split: the cow has one
     // pinched vertex where two sheets touch; split, it is a sphere.
-    const TopologyReport r = shared_mesh("cow.obj");
+    TopologyReport r;
+    ASSERT_TRUE(bundled_topology("cow.obj", r));
     EXPECT_TRUE(r.closed());
     EXPECT_EQ(r.non_manifold_vertices, 1u);
     EXPECT_EQ(r.components[0].genus, 0);
   }
   {
     // Quads, triangulated; a head with one non-manifold edge and two separate eyes.
-    const TopologyReport r = shared_mesh("suzanne.obj");
+    TopologyReport r;
+    ASSERT_TRUE(bundled_topology("suzanne.obj", r));
     EXPECT_EQ(r.components.size(), 3u);
     EXPECT_EQ(r.non_manifold_edges, 1u);
   }
   {
     // Newell's patches with unwelded seams: many open pieces.
-    const TopologyReport r = shared_mesh("teapot.obj");
+    TopologyReport r;
+    ASSERT_TRUE(bundled_topology("teapot.obj", r));
     EXPECT_GT(r.components.size(), 1u);
     EXPECT_GT(r.boundary_loops, 0u);
     EXPECT_GT(r.duplicate_positions, 0u);

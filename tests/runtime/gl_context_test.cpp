@@ -25,11 +25,15 @@ class GlTest : public ::testing::Test {
     std::string error;
     context_ = GlContext::create_headless(error).release();
     ASSERT_NE(context_, nullptr) << error;
+    ready_ = true;
   }
+  /// A failed suite set-up fails every test instead of letting it use what is missing.
+  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
   static void TearDownTestSuite() {
     delete context_;
     context_ = nullptr;
   }
+  static inline bool ready_ = false;
   static GlContext* context_;
   fs::path dir_ = fs::path(GFIELD_TEST_TMP) / "gl_context_test";
 };

@@ -151,15 +151,16 @@ Image signed_difference(const Image& image, const Image& reference, const PixelM
   return out;
 }
 
-/// Both renders of a scene file of data/scenes, compared behind the glass.
-ImageComparison compare_scene(const std::string& name, GlassStats* stats = nullptr,
-                              ImageComparison* no_fresnel = nullptr,
-                              ImageComparison* traced_verge = nullptr) {
+/// Both renders of a scene file of data/scenes, compared behind the glass, into `out`; fatal
+/// failure when the scene, the tracer or the renderer fails to load (callers wrap it in
+/// ASSERT_NO_FATAL_FAILURE).
+void compare_scene(const std::string& name, ImageComparison& out, GlassStats* stats = nullptr,
+                   ImageComparison* no_fresnel = nullptr, ImageComparison* traced_verge = nullptr) {
   std::string error;
   Scene scene;
-  EXPECT_TRUE(load_scene(std::string(GFIELD_DATA_DIR) + "/scenes/" + name, scene, error)) << error;
+  ASSERT_TRUE(load_scene(std::string(GFIELD_DATA_DIR) + "/scenes/" + name, scene, error)) << error;
   ReferenceTracer tracer;
-  EXPECT_TRUE(tracer.build(scene, error)) << error;
+  ASSERT_TRUE(tracer.build(scene, error)) << error;
   RenderOptions options;
   options.width = options.height = kSize;
   options.samples_per_pixel = kSamples;
@@ -169,7 +170,7 @@ ImageComparison compare_scene(const std::string& name, GlassStats* stats = nullp
   GlassRenderer renderer;
   GlassSettings settings;
   settings.samples_per_pixel = kSamples;
-  EXPECT_TRUE(renderer.load(scene, default_shader_dir(), settings, error)) << error;
+  ASSERT_TRUE(renderer.load(scene, default_shader_dir(), settings, error)) << error;
   const Image image = renderer.render_image(kSize, kSize, settings, stats);
   const PixelMask mask = glass_mask(scene, kSize, kSize);
   if (no_fresnel != nullptr) {
@@ -198,7 +199,7 @@ ImageComparison compare_scene(const std::string& name, GlassStats* stats = nullp
                signed_difference(image, reference, mask), error);
     print_cylinder_breakdown(scene, image, reference, mask);
   }
-  return compare_images(image, reference, mask);
+  out = compare_images(image, reference, mask);
 }
 
 class GlassTest : public ::testing::Test {
@@ -207,11 +208,15 @@ class GlassTest : public ::testing::Test {
     std::string error;
     context_ = GlContext::create_headless(error).release();
     ASSERT_NE(context_, nullptr) << error;
+    ready_ = true;
   }
+  /// A failed suite set-up fails every test instead of letting it use what is missing.
+  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
   static void TearDownTestSuite() {
     delete context_;
     context_ = nullptr;
   }
+  static inline bool ready_ = false;
   static GlContext* context_;
 };
 GlContext* GlassTest::context_ = nullptr;
@@ -231,7 +236,8 @@ TEST_F(GlassTest, PlateScenesMatchTheReferenceBehindTheGlass) {
   for (const auto& scene : scenes) {
     GlassStats stats;
     ImageComparison plain;
-    const ImageComparison c = compare_scene(scene.name, &stats, &plain);
+    ImageComparison c;
+    ASSERT_NO_FATAL_FAILURE(compare_scene(scene.name, c, &stats, &plain));
     std::printf(
         "%s: PSNR %.2f dB (without Fresnel %.2f dB), SSIM %.4f over %zu pixels, %d class "
         "images\n",
@@ -246,7 +252,8 @@ TEST_F(GlassTest, PlateScenesMatchTheReferenceBehindTheGlass) {
 TEST_F(GlassTest, HollowCylinderMatchesTheReferenceBehindTheGlass) {
   GlassStats stats;
   ImageComparison traced;
-  const ImageComparison c = compare_scene("mukai-hollow-cylinder.json", &stats, nullptr, &traced);
+  ImageComparison c;
+  ASSERT_NO_FATAL_FAILURE(compare_scene("mukai-hollow-cylinder.json", c, &stats, nullptr, &traced));
   std::printf(
       "mukai-hollow-cylinder.json: PSNR %.2f dB (verge traced per pixel %.2f dB), SSIM "
       "%.4f over %zu pixels, %d class images\n",

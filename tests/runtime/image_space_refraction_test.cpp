@@ -52,7 +52,10 @@ class ImageSpaceTest : public ::testing::Test {
     reference_ = new Image;
     ASSERT_TRUE(load_image(reference, *reference_, error)) << error;
     *reference_ = clamped_to_display(*reference_);
+    ready_ = true;
   }
+  /// A failed suite set-up fails every test instead of letting it use what is missing.
+  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
   static void TearDownTestSuite() {
     delete scene_;
     delete reference_;
@@ -61,12 +64,17 @@ class ImageSpaceTest : public ::testing::Test {
     reference_ = nullptr;
     context_ = nullptr;
   }
+  static inline bool ready_ = false;
 
   static Image render(const Scene& scene, const ImageSpaceSettings& settings) {
     ImageSpaceRenderer renderer;
     std::string error;
-    EXPECT_TRUE(renderer.load(scene, default_shader_dir(), error)) << error;
-    EXPECT_TRUE(renderer.supports(settings.method, error)) << error;
+    // A failure is recorded and the empty picture compares as no match.
+    if (!renderer.load(scene, default_shader_dir(), error) ||
+        !renderer.supports(settings.method, error)) {
+      ADD_FAILURE() << error;
+      return Image{};
+    }
     return clamped_to_display(renderer.render_image(kSize, kSize, settings));
   }
 
@@ -115,6 +123,7 @@ TEST_F(ImageSpaceTest, CubemapWithIndexOneReproducesTheEnvironment) {
   for (bool per_vertex : {false, true}) {
     settings.per_vertex = per_vertex;
     const Image image = render(scene, settings);
+    ASSERT_EQ(image.pixels.size(), environment.pixels.size());
     const ImageComparison c = compare_images(image, environment, mask);
     size_t different = 0;
     for (size_t i = 0; i < image.pixels.size(); ++i)

@@ -1,7 +1,7 @@
 // Headless renders of the geometry-field renderer against the reference ray tracer (the library
 // behind `gfield render`), same scene, same depth, same sample positions (strata centres):
 // PSNR thresholds per scene, and refined > linear > nearest on every scene. Assets are built at
-// test time with `gfield build` on a shared mesh (small N to stay fast).
+// test time with `gfield build` on a bundled mesh (small N to stay fast).
 
 #include <algorithm>
 #include <cstdio>
@@ -31,7 +31,7 @@ std::string spot_object(const std::string& name, const std::string& transform,
                         const std::string& material) {
   const fs::path asset = kDir / "spot";
   return R"({"name": ")" + name +
-         R"(", "shape": "mesh", "file": ")" GFIELD_SHARED_MESHES R"(/spot.obj", "gimage": ")" +
+         R"(", "shape": "mesh", "file": ")" GFIELD_MESH_DIR R"(/spot.obj", "gimage": ")" +
          asset.string() + R"(.gimage.exr", "gfield": ")" + asset.string() +
          R"(.gfield.exr", "transform": )" + transform + R"(, "material": )" + material + "}";
 }
@@ -99,7 +99,7 @@ class RenderTest : public ::testing::Test {
   static void SetUpTestSuite() {
     fs::create_directories(kDir);
     const std::string command = std::string("\"") + GFIELD_CLI +
-                                "\" build \"" GFIELD_SHARED_MESHES "/spot.obj\" -o \"" +
+                                "\" build \"" GFIELD_MESH_DIR "/spot.obj\" -o \"" +
                                 (kDir / "spot").string() +
                                 "\" --size 256 --samples 12 --method square --verify-rays 0 "
                                 "> \"" +
@@ -108,11 +108,15 @@ class RenderTest : public ::testing::Test {
     std::string error;
     context_ = GlContext::create_headless(error).release();
     ASSERT_NE(context_, nullptr) << error;
+    ready_ = true;
   }
+  /// A failed suite set-up fails every test instead of letting it use what is missing.
+  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
   static void TearDownTestSuite() {
     delete context_;
     context_ = nullptr;
   }
+  static inline bool ready_ = false;
   static GlContext* context_;
 };
 GlContext* RenderTest::context_ = nullptr;
