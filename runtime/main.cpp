@@ -125,8 +125,15 @@ int main(int argc, char** argv) {
                  "Headless: frames to render (timings average all but the first)")
       ->check(CLI::Range(1, 100000));
   app.add_flag("--bench", bench, "Headless: print ms per frame, the GL renderer and ray counts");
-  app.add_option("--shaders", shader_dir, "Folder of the GLSL shaders")
-      ->check(CLI::ExistingDirectory);
+  app.add_option("--shaders", shader_dir,
+                 "Folder of the GLSL shaders (default: $GFIELD_SHADER_DIR, else "
+                 "../share/gfield/shaders beside the executable, else the source tree's)")
+      ->check(CLI::ExistingDirectory)
+      ->capture_default_str();
+  std::string asset_dir;
+  app.add_option("--assets", asset_dir,
+                 "Folder of prebuilt assets: NAME.gimage.exr/.gfield.exr for mesh NAME.obj, found "
+                 "there before those beside the mesh (gfield build MESH -o DIR/NAME)");
   CLI11_PARSE(app, argc, argv);
 
   parse_lookup_mode(mode_text, settings.mode);
@@ -135,6 +142,12 @@ int main(int argc, char** argv) {
   Scene scene;
   if (!load_scene(scene_file, scene, error))
     return fail(error);
+  if (!asset_dir.empty() && !use_asset_folder(asset_dir, scene, error))
+    return fail("--assets " + error);
+  if (!std::filesystem::is_regular_file(std::filesystem::path(shader_dir) / "field_trace.frag"))
+    return fail(shader_dir +
+                ": no gfield shaders here (field_trace.frag); set --shaders DIR or "
+                "GFIELD_SHADER_DIR");
   int width = scene.width, height = scene.height;
   if (!size_text.empty() && !parse_size(size_text, width, height))
     return fail("--size " + size_text + ": expected WxH with 1..16384 pixels per side");

@@ -49,8 +49,10 @@ bool Renderer::load(const Scene& scene, const std::filesystem::path& shader_dir,
       error = mesh.file + ": no " +
               std::string(mesh.geometry_image.empty() ? "geometry image" : "geometry field") +
               " (expected " + stem + ".gimage.exr and " + stem +
-              ".gfield.exr beside the mesh or named by \"gimage\"/\"gfield\" in " + scene.filename +
-              "; make them with: gfield build " + mesh.file + " -o DIR/" + stem + ")";
+              ".gfield.exr beside the mesh, in the --assets folder or named by "
+              "\"gimage\"/\"gfield\" in " +
+              scene.filename + "; make them with: gfield build " + mesh.file + " -o DIR/" + stem +
+              ")";
       return false;
     }
     if (!load_geometry_image(mesh.geometry_image, images[m], error))

@@ -12,6 +12,14 @@ namespace fs = std::filesystem;
 fs::path default_shader_dir() {
   if (const char* env = std::getenv("GFIELD_SHADER_DIR"); env != nullptr && env[0] != '\0')
     return env;
+  std::error_code ec;
+  const fs::path executable = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path installed =
+        (executable.parent_path() / GFIELD_SHADER_DIR_FROM_BINARY).lexically_normal();
+    if (fs::is_directory(installed, ec))
+      return installed;
+  }
   return GFIELD_SOURCE_SHADER_DIR;
 }
 

@@ -12,7 +12,9 @@
 
 namespace gfield {
 
-/// The folder holding the shaders: $GFIELD_SHADER_DIR if set, else the source tree's shaders/.
+/// The folder holding the shaders: $GFIELD_SHADER_DIR if set; else, for an installed
+/// executable, share/gfield/shaders beside its bin/ folder (found through /proc/self/exe); else
+/// the source tree's shaders/ (an executable run from the build folder).
 std::filesystem::path default_shader_dir();
 
 /// One shader stage's source after include resolution. `files[k]` is the path of source-string

@@ -711,4 +711,20 @@ bool load_scene(const std::string& filename, Scene& scene, std::string& error) {
   return parse_scene(buffer.str(), filename, scene, error);
 }
 
+bool use_asset_folder(const std::string& dir, Scene& scene, std::string& error) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    error = dir + ": not a folder";
+    return false;
+  }
+  for (MeshAsset& mesh : scene.meshes) {
+    const std::string stem = (fs::path(dir) / fs::path(mesh.file).stem()).string();
+    if (fs::is_regular_file(stem + ".gimage.exr", ec))
+      mesh.geometry_image = stem + ".gimage.exr";
+    if (fs::is_regular_file(stem + ".gfield.exr", ec))
+      mesh.geometry_field = stem + ".gfield.exr";
+  }
+  return true;
+}
+
 }  // namespace gfield

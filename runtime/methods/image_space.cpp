@@ -115,8 +115,9 @@ bool ImageSpaceRenderer::load(const Scene& scene, const std::filesystem::path& s
     if (mesh.geometry_image.empty()) {
       const std::string stem = std::filesystem::path(mesh.file).stem().string();
       error = mesh.file + ": no geometry image (expected " + stem +
-              ".gimage.exr beside the mesh or named by \"gimage\" in " + scene.filename +
-              "; make it with: gfield build " + mesh.file + " -o DIR/" + stem + ")";
+              ".gimage.exr beside the mesh, in the --assets folder or named by \"gimage\" in " +
+              scene.filename + "; make it with: gfield build " + mesh.file + " -o DIR/" + stem +
+              ")";
       return false;
     }
     if (!load_geometry_image(mesh.geometry_image, images[m], error))

@@ -124,6 +124,12 @@ struct Scene {
 /// or zero sizes, singular transforms, index <= 0, a dielectric on a quad, a degenerate camera.
 bool load_scene(const std::string& filename, Scene& scene, std::string& error);
 
+/// Points every mesh of `scene` at the assets found in folder `dir` (DIR/NAME.gimage.exr and
+/// DIR/NAME.gfield.exr for mesh file NAME.EXT, as `gfield build MESH -o DIR/NAME` writes them);
+/// those found there take precedence over the ones beside the mesh or named by the scene. False
+/// with "DIR: not a folder" when `dir` is not one.
+bool use_asset_folder(const std::string& dir, Scene& scene, std::string& error);
+
 /// The same from text; `filename` names the file in errors and is where relative paths start.
 bool parse_scene(const std::string& text, const std::string& filename, Scene& scene,
                  std::string& error);
