@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh
+scripts/build.sh gfield gfield-view  # only what the demo runs; scripts/test.sh builds the rest
 gfield=build/preprocess/gfield
 mkdir -p out
 echo "== gfield info data/meshes/spot.obj"
