@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "preprocess/geometry_image_build.hpp"
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "gfield/atomic_file.hpp"
-#include "preprocess/parameterized_mesh.hpp"
+#include "geometry/parameterized_mesh.hpp"
 #include "preprocess/topology.hpp"
 #include "preprocess/verify.hpp"
 

@@ -16,7 +16,7 @@
 #include "gfield/geometry_field.hpp"
 #include "gfield/geometry_image.hpp"
 #include "preprocess/embree_mesh.hpp"
-#include "preprocess/parameterized_mesh.hpp"
+#include "geometry/parameterized_mesh.hpp"
 
 namespace gfield {
 

@@ -12,7 +12,7 @@
 
 #include "preprocess/chart_split.hpp"
 #include "preprocess/cut_graph.hpp"
-#include "preprocess/outward_normals.hpp"
+#include "geometry/outward_normals.hpp"
 #include "preprocess/parameterize.hpp"
 #include "preprocess/rasterize.hpp"
 #include "preprocess/surface_distance.hpp"

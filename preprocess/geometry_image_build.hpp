@@ -10,8 +10,8 @@
 
 #include "gfield/geometry_image.hpp"
 #include "preprocess/chart_packing.hpp"
-#include "preprocess/mesh_io.hpp"
-#include "preprocess/parameterized_mesh.hpp"
+#include "geometry/mesh_io.hpp"
+#include "geometry/parameterized_mesh.hpp"
 #include "preprocess/repair.hpp"
 
 namespace gfield {

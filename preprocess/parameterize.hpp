@@ -19,7 +19,7 @@
 #include <glm/glm.hpp>
 
 #include "preprocess/cut_graph.hpp"
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 
 namespace gfield {
 

@@ -12,7 +12,7 @@
 
 #include "gfield/geometry_image.hpp"
 #include "preprocess/chart_packing.hpp"
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 
 namespace gfield {
 

@@ -16,10 +16,10 @@
 
 #include "gfield/environment.hpp"
 #include "gfield/optics.hpp"
-#include "preprocess/analytic_primitives.hpp"
+#include "geometry/analytic_primitives.hpp"
 #include "preprocess/embree_mesh.hpp"
-#include "preprocess/mesh_io.hpp"
-#include "preprocess/outward_normals.hpp"
+#include "geometry/mesh_io.hpp"
+#include "geometry/outward_normals.hpp"
 
 namespace gfield {
 namespace {

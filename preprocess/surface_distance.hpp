@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 
 namespace gfield {
 

@@ -7,7 +7,7 @@
 
 #include "gfield/exr_io.hpp"
 #include "preprocess/embree_mesh.hpp"
-#include "preprocess/parameterized_mesh.hpp"
+#include "geometry/parameterized_mesh.hpp"
 
 namespace gfield {
 

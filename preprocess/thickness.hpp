@@ -8,7 +8,7 @@
 
 #include "gfield/geometry_image.hpp"
 #include "gfield/thickness.hpp"
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 
 namespace gfield {
 

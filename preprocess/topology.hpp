@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json_fwd.hpp>
 
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 
 namespace gfield {
 

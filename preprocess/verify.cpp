@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "gfield/exr_io.hpp"
-#include "preprocess/outward_normals.hpp"
-#include "preprocess/parameterized_mesh.hpp"
+#include "geometry/outward_normals.hpp"
+#include "geometry/parameterized_mesh.hpp"
 
 namespace gfield {
 namespace {

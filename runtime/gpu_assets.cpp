@@ -1,5 +1,5 @@
 #include "runtime/gpu_assets.hpp"
-#include "preprocess/outward_normals.hpp"
+#include "geometry/outward_normals.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -20,8 +20,8 @@
 
 #include "gfield/geometry_field.hpp"
 #include "gfield/geometry_image.hpp"
-#include "preprocess/mesh_io.hpp"
-#include "preprocess/parameterized_mesh.hpp"
+#include "geometry/mesh_io.hpp"
+#include "geometry/parameterized_mesh.hpp"
 
 namespace gfield {
 

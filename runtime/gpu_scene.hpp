@@ -15,7 +15,7 @@
 
 namespace gfield {
 
-/// Object-space half extents of an analytic shape's bounds (as preprocess/analytic_primitives'
+/// Object-space half extents of an analytic shape's bounds (as geometry/analytic_primitives'
 /// shape_bounds); zero for meshes.
 glm::vec3 shape_half_extent(const Shape& shape);
 

@@ -8,7 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gfield/exr_io.hpp"
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 #include "runtime/gpu_scene.hpp"
 #include "runtime/supersample.hpp"
 

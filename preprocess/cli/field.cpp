@@ -9,7 +9,7 @@
 #include "gfield/exr_io.hpp"
 #include "preprocess/asset_build.hpp"
 #include "preprocess/cli/commands.hpp"
-#include "preprocess/parameterized_mesh.hpp"
+#include "geometry/parameterized_mesh.hpp"
 
 namespace gfield {
 

@@ -11,8 +11,8 @@
 #include "gfield/exr_io.hpp"
 #include "preprocess/cli/commands.hpp"
 #include "preprocess/geometry_image_build.hpp"
-#include "preprocess/mesh_io.hpp"
-#include "preprocess/parameterized_mesh.hpp"
+#include "geometry/mesh_io.hpp"
+#include "geometry/parameterized_mesh.hpp"
 
 namespace gfield {
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "preprocess/cli/commands.hpp"
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 #include "preprocess/topology.hpp"
 
 namespace gfield {

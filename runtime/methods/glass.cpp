@@ -9,9 +9,9 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gfield/glass_displacement.hpp"
-#include "preprocess/analytic_primitives.hpp"
-#include "preprocess/mesh_io.hpp"
-#include "preprocess/outward_normals.hpp"
+#include "geometry/analytic_primitives.hpp"
+#include "geometry/mesh_io.hpp"
+#include "geometry/outward_normals.hpp"
 #include "runtime/gpu_scene.hpp"
 #include "runtime/supersample.hpp"
 

@@ -1,5 +1,5 @@
 // Exact ray intersections with the analytic shapes of a scene, in their object space: the GLSL
-// port (float) of preprocess/analytic_primitives.cpp, with the same normals (out of the solid;
+// port (float) of geometry/analytic_primitives.cpp, with the same normals (out of the solid;
 // quads +Z) and texture coordinates. Shape numbers follow gfield::ShapeType.
 
 #define SHAPE_MESH 0

@@ -7,7 +7,7 @@
 #include <functional>
 #include <random>
 
-#include "preprocess/analytic_primitives.hpp"
+#include "geometry/analytic_primitives.hpp"
 
 namespace gfield {
 namespace {

@@ -1,4 +1,4 @@
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 
 #include <gtest/gtest.h>
 

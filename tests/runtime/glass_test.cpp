@@ -15,7 +15,7 @@
 
 #include "gfield/image_metrics.hpp"
 #include "gfield/scene.hpp"
-#include "preprocess/analytic_primitives.hpp"
+#include "geometry/analytic_primitives.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/methods/glass.hpp"

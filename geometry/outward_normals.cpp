@@ -1,4 +1,4 @@
-#include "preprocess/outward_normals.hpp"
+#include "geometry/outward_normals.hpp"
 
 #include <algorithm>
 #include <cmath>

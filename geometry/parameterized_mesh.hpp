@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 
 namespace gfield {
 

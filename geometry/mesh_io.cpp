@@ -1,4 +1,4 @@
-#include "preprocess/mesh_io.hpp"
+#include "geometry/mesh_io.hpp"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>

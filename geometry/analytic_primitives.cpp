@@ -1,6 +1,6 @@
 // Analytic ray-shape intersections (double precision, numerically stable quadratics).
 
-#include "preprocess/analytic_primitives.hpp"
+#include "geometry/analytic_primitives.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // NAME.gimage.obj: the parameterised mesh (v), its geometry-image uvs (vt) and f v/vt triangles.
 
-#include "preprocess/parameterized_mesh.hpp"
+#include "geometry/parameterized_mesh.hpp"
 
 #include <cctype>
 #include <charconv>
