@@ -85,20 +85,19 @@ struct Timing {
 Timing time_frames(const Scene& scene, int width, int height, int frames) {
   Timing t;
   std::string error;
-  GlassRenderer renderer;
-  GlassSettings settings;
-  if (!renderer.load(scene, default_shader_dir(), settings, error)) {
+  GpuScene gpu;
+  GlassMethod glass;
+  if (!gpu.load(scene, error) || !glass.load(gpu, default_shader_dir(), error)) {
     std::fprintf(stderr, "bench_glass: %s\n", error.c_str());
     std::exit(2);
   }
-  GlassStats warm;
-  renderer.render_image(width, height, settings, &warm);
-  GlassStats stats;
+  render_image(glass, scene.camera, width, height, 1);  // warm-up (shader compilation)
+  FrameStats stats;
   for (int f = 0; f < frames; ++f)
-    renderer.render_image(width, height, settings, &stats);
+    render_image(glass, scene.camera, width, height, 1, &stats);
   t.glass_ms = stats.milliseconds / frames;
-  t.class_images = stats.class_images;
-  t.vertices = stats.vertices;
+  t.class_images = int(stats.count("class images")) / frames;
+  t.vertices = (long long)(stats.count("opaque vertices")) / frames;
   ReferenceTracer tracer;
   if (!tracer.build(scene, error)) {
     std::fprintf(stderr, "bench_glass: %s\n", error.c_str());

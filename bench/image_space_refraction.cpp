@@ -1,6 +1,6 @@
 // The Davis–Wyman paper's Table 1 on this machine's GL (llvmpipe here): frame time of
 // `davis-wyman` with 1-4 internal bounces (and 3 with back faces only for later bounces) beside
-// `wyman2005`, `cubemap` and the geometry-field refraction (runtime Renderer, refined mode), on
+// `wyman2005`, `cubemap` and the geometry-field refraction (the `field` method, refined mode), on
 // the refractive-mesh scene data/scenes/davis-wyman-color-chart.json, at 512^2 and 1024^2; the
 // reference tracer's wall time for the same image in the same run (`gfield render --spp 1
 // --dielectric tir-only`, the paper's Figure 8 reference) and each method's ratio to it; the PSNR
@@ -26,8 +26,9 @@
 #include "gl_bench_setup.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
-#include "runtime/methods/image_space.hpp"
-#include "runtime/renderer.hpp"
+#include "runtime/methods/cube_map.hpp"
+#include "runtime/methods/geometry_field.hpp"
+#include "runtime/methods/image_space_refraction.hpp"
 #include "runtime/shader_program.hpp"
 
 namespace fs = std::filesystem;
@@ -35,7 +36,7 @@ using namespace gfield;
 
 namespace {
 
-constexpr int kDepth = 10;  // `gfield render`'s default and RenderSettings' default
+constexpr int kDepth = 10;  // `gfield render`'s default and GeometryFieldSettings' default
 
 /// The reference tracer's picture (1 spp at the pixel centres, clamped) and its time in ms.
 Image reference_image(const ReferenceTracer& tracer, int size, DielectricMode mode, double& ms) {
@@ -55,21 +56,14 @@ Image reference_image(const ReferenceTracer& tracer, int size, DielectricMode mo
 /// ms is not null.
 using FrameFunction = std::function<Image(double* ms)>;
 
-FrameFunction image_space_frame(ImageSpaceRenderer& renderer, int size,
-                                const ImageSpaceSettings& settings) {
-  return [&renderer, size, settings](double* ms) {
-    ImageSpaceStats stats;
-    Image image = renderer.render_image(size, size, settings, &stats);
-    if (ms != nullptr)
-      *ms += stats.milliseconds;
-    return image;
-  };
-}
-
-FrameFunction field_frame(Renderer& renderer, int size) {
-  return [&renderer, size](double* ms) {
+/// A frame of `method` at size^2, 1 sample per pixel, `configure` applied first.
+FrameFunction method_frame(Method& method, const Camera& camera, int size,
+                           std::function<void()> configure = {}) {
+  return [&method, &camera, size, configure](double* ms) {
+    if (configure)
+      configure();
     FrameStats stats;
-    Image image = renderer.render_image(size, size, RenderSettings{}, &stats);
+    Image image = render_image(method, camera, size, size, 1, &stats);
     if (ms != nullptr)
       *ms += stats.milliseconds;
     return image;
@@ -114,14 +108,22 @@ void refraction_table(const fs::path& dir, const std::vector<int>& sizes, int fr
   if (!load_scene_and_tracer("davis-wyman-color-chart", dir, true, scene, tracer))
     return;
   std::string error;
-  ImageSpaceRenderer image_space;
-  Renderer field;
-  if (!image_space.load(scene, default_shader_dir(), error) ||
-      !image_space.supports(ImageSpaceMethod::kWyman2005, error) ||
-      !field.load(scene, default_shader_dir(), error)) {
+  GpuScene gpu;
+  ImageSpaceRefractionMethod davis_wyman(true), wyman2005(false);
+  CubeMapMethod cubemap(false);
+  GeometryFieldMethod field;
+  if (!gpu.load(scene, error)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return;
   }
+  for (Method* method : std::vector<Method*>{&davis_wyman, &wyman2005, &cubemap, &field}) {
+    if (!method->load(gpu, default_shader_dir(), error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      return;
+    }
+  }
+  ImageSpaceRefractionSettings& dw = davis_wyman.settings();
+  const Camera& camera = scene.camera;
   for (int size : sizes) {
     const int frames = frames_per_row > 0 ? frames_per_row : size <= 512 ? 3 : 2;
     double tir_ms = 0.0, full_ms = 0.0;
@@ -129,25 +131,23 @@ void refraction_table(const fs::path& dir, const std::vector<int>& sizes, int fr
     const Image full = reference_image(tracer, size, DielectricMode::kFull, full_ms);
     std::vector<Row> rows;
     for (int bounces = 1; bounces <= 4; ++bounces) {
-      ImageSpaceSettings settings;
-      settings.bounces = bounces;
       rows.push_back(timed_row(
           "davis-wyman, " + std::to_string(bounces) + " bounce" + (bounces > 1 ? "s" : ""), frames,
-          image_space_frame(image_space, size, settings)));
+          method_frame(davis_wyman, camera, size, [&dw, bounces] {
+            dw.bounces = bounces;
+            dw.back_only_later = false;
+          })));
     }
-    ImageSpaceSettings back_only;
-    back_only.back_only_later = true;
     rows.push_back(timed_row("davis-wyman, 3 bounces, --back-only-later", frames,
-                             image_space_frame(image_space, size, back_only)));
-    ImageSpaceSettings wyman2005;
-    wyman2005.method = ImageSpaceMethod::kWyman2005;
-    rows.push_back(timed_row("wyman2005", frames, image_space_frame(image_space, size, wyman2005)));
-    ImageSpaceSettings cubemap;
-    cubemap.method = ImageSpaceMethod::kCubeMap;
+                             method_frame(davis_wyman, camera, size, [&dw] {
+                               dw.bounces = 3;
+                               dw.back_only_later = true;
+                             })));
+    rows.push_back(timed_row("wyman2005", frames, method_frame(wyman2005, camera, size)));
     rows.push_back(timed_row("cubemap (per fragment, 256^2 faces)", frames,
-                             image_space_frame(image_space, size, cubemap)));
+                             method_frame(cubemap, camera, size)));
     rows.push_back(
-        timed_row("geometry field (refined, depth 10)", frames, field_frame(field, size)));
+        timed_row("geometry field (refined, depth 10)", frames, method_frame(field, camera, size)));
 
     std::printf("\ndavis-wyman-color-chart %dx%d, %d frames after a warm-up:\n\n", size, size,
                 frames);
@@ -179,20 +179,19 @@ void envmap_table(const fs::path& dir, int size, int frames) {
     if (!load_scene_and_tracer(name, dir, false, scene, tracer))
       continue;
     std::string error;
-    ImageSpaceRenderer image_space;
-    Renderer field;
-    if (!image_space.load(scene, default_shader_dir(), error) ||
-        !field.load(scene, default_shader_dir(), error)) {
+    GpuScene gpu;
+    CubeMapMethod envmap(true);
+    GeometryFieldMethod field;
+    if (!gpu.load(scene, error) || !envmap.load(gpu, default_shader_dir(), error) ||
+        !field.load(gpu, default_shader_dir(), error)) {
       std::fprintf(stderr, "%s\n", error.c_str());
       continue;
     }
     double reference_ms = 0.0;
     const Image reference = reference_image(tracer, size, DielectricMode::kFull, reference_ms);
-    ImageSpaceSettings envmap;
-    envmap.method = ImageSpaceMethod::kEnvMap;
     const Row rows[] = {
-        timed_row("envmap (256^2 faces)", frames, image_space_frame(image_space, size, envmap)),
-        timed_row("geometry field (refined)", frames, field_frame(field, size))};
+        timed_row("envmap (256^2 faces)", frames, method_frame(envmap, scene.camera, size)),
+        timed_row("geometry field (refined)", frames, method_frame(field, scene.camera, size))};
     for (const Row& row : rows)
       std::printf("| %s | %s | %.1f | %.3f | %.2f dB |\n", name, row.method.c_str(), row.ms,
                   row.ms / reference_ms, compare_images(row.image, reference).psnr);

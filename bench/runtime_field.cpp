@@ -17,7 +17,8 @@
 #include "gl_bench_setup.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
-#include "runtime/renderer.hpp"
+#include "runtime/methods/geometry_field.hpp"
+#include "runtime/shader_program.hpp"
 
 namespace fs = std::filesystem;
 using namespace gfield;
@@ -42,8 +43,9 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s: %s\n", name, error.c_str());
       continue;
     }
-    Renderer renderer;
-    if (!renderer.load(scene, default_shader_dir(), error)) {
+    GpuScene gpu;
+    GeometryFieldMethod field;
+    if (!gpu.load(scene, error) || !field.load(gpu, default_shader_dir(), error)) {
       std::fprintf(stderr, "%s\n", error.c_str());
       continue;
     }
@@ -63,23 +65,22 @@ int main(int argc, char** argv) {
       std::printf("%s %dx%d depth %d: reference tracer %.1f ms (1 spp, %u cores)\n", name, size,
                   size, kDepth, reference_stats.seconds * 1e3, std::thread::hardware_concurrency());
       for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
-        RenderSettings settings;
-        settings.mode = mode;
-        settings.max_depth = kDepth;
-        renderer.render_image(size, size, settings);  // warm-up (shader compilation)
+        field.settings().mode = mode;
+        field.settings().max_depth = kDepth;
+        render_image(field, scene.camera, size, size, 1);  // warm-up (shader compilation)
         FrameStats stats;
         Image image;
         for (int f = 0; f < frames; ++f)
-          image = renderer.render_image(size, size, settings, &stats);
+          image = render_image(field, scene.camera, size, size, 1, &stats);
         const double ms = stats.milliseconds / frames;
-        const double rays = double(stats.secondary_rays) / frames;
+        const double rays = stats.count("secondary rays") / frames;
         const double psnr = compare_images(clamped_to_display(image), reference).psnr;
         std::printf(
             "  %-8s %8.1f ms/frame (%.2fx the reference tracer), %.1f ns per traced pixel "
             "per bounce, %.0f traced pixels, PSNR %.2f dB\n",
             lookup_mode_name(mode), ms, ms / (reference_stats.seconds * 1e3),
-            rays > 0 ? stats.trace_milliseconds / frames * 1e6 / rays : 0.0,
-            double(stats.traced_pixels) / frames, psnr);
+            rays > 0 ? stats.part_ms("tracing") / frames * 1e6 / rays : 0.0,
+            stats.count("traced pixels") / frames, psnr);
         std::fflush(stdout);
       }
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gfield/gpu_contract.hpp"
 #include "runtime/shader_program.hpp"
 
 namespace gfield {
@@ -26,25 +27,26 @@ bool probe_field_gpu(const GpuAssets& assets, int asset, const std::vector<Ray>&
     origins[i] = glm::vec4(rays[i].origin, rays[i].t_min);
     directions[i] = glm::vec4(rays[i].direction, rays[i].t_max);
   }
-  GLuint textures[3] = {0, 0, 0};
-  glCreateTextures(GL_TEXTURE_2D, 3, textures);
-  for (GLuint texture : textures)
-    glTextureStorage2D(texture, 1, GL_RGBA32F, width, height);
-  glTextureSubImage2D(textures[0], 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, origins.data());
-  glTextureSubImage2D(textures[1], 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, directions.data());
-  GLuint framebuffer = 0, vertex_array = 0;
-  glCreateFramebuffers(1, &framebuffer);
-  glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, textures[2], 0);
-  glCreateVertexArrays(1, &vertex_array);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  GlTexture textures[3];
+  for (GlTexture& texture : textures) {
+    texture.make(GL_TEXTURE_2D);
+    glTextureStorage2D(texture.id(), 1, GL_RGBA32F, width, height);
+  }
+  glTextureSubImage2D(textures[0].id(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, origins.data());
+  glTextureSubImage2D(textures[1].id(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT,
+                      directions.data());
+  GlFramebuffer framebuffer;
+  GlVertexArray vertex_array;
+  glNamedFramebufferTexture(framebuffer.make(), GL_COLOR_ATTACHMENT0, textures[2].id(), 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
   glUseProgram(program.id());
-  glBindTextureUnit(0, assets.positions());
-  glBindTextureUnit(1, assets.normals());
-  glBindTextureUnit(2, assets.fields());
-  glBindTextureUnit(3, textures[0]);
-  glBindTextureUnit(4, textures[1]);
+  glBindTextureUnit(gpu::UNIT_GI_POSITIONS, assets.positions());
+  glBindTextureUnit(gpu::UNIT_GI_NORMALS, assets.normals());
+  glBindTextureUnit(gpu::UNIT_FIELDS, assets.fields());
+  glBindTextureUnit(gpu::UNIT_PROBE_ORIGINS, textures[0].id());
+  glBindTextureUnit(gpu::UNIT_PROBE_DIRECTIONS, textures[1].id());
   glUniform1i(program.uniform("u_layer"), a.layer);
   glUniform1i(program.uniform("u_samples_per_side"), a.samples_per_side);
   glUniform1i(program.uniform("u_image_size"), a.image_size);
@@ -52,15 +54,12 @@ bool probe_field_gpu(const GpuAssets& assets, int asset, const std::vector<Ray>&
   glUniform3fv(program.uniform("u_box_max"), 1, &a.box.max.x);
   glUniform1i(program.uniform("u_mode"), int(mode));
   glUniform1i(program.uniform("u_last"), last_hit ? 1 : 0);
-  glBindVertexArray(vertex_array);
+  glBindVertexArray(vertex_array.make());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   std::vector<glm::vec4> out(origins.size());
-  glGetTextureImage(textures[2], 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(glm::vec4)),
+  glGetTextureImage(textures[2].id(), 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(glm::vec4)),
                     out.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glDeleteVertexArrays(1, &vertex_array);
-  glDeleteFramebuffers(1, &framebuffer);
-  glDeleteTextures(3, textures);
   const GLenum gl_error = glGetError();
   if (gl_error != GL_NO_ERROR) {
     error = "probe: OpenGL error " + std::to_string(gl_error);

@@ -2,46 +2,8 @@
 
 namespace gfield {
 
-Framebuffer::~Framebuffer() {
-  release();
-}
-
-void Framebuffer::release() {
-  if (framebuffer_ != 0)
-    glDeleteFramebuffers(1, &framebuffer_);
-  if (color_ != 0)
-    glDeleteTextures(1, &color_);
-  if (hits_ != 0)
-    glDeleteTextures(1, &hits_);
-  if (depth_ != 0)
-    glDeleteRenderbuffers(1, &depth_);
-  framebuffer_ = color_ = hits_ = depth_ = 0;
-}
-
 bool Framebuffer::resize(int width, int height) {
-  if (width == width_ && height == height_ && framebuffer_ != 0)
-    return true;
-  release();
-  width_ = width;
-  height_ = height;
-  glCreateTextures(GL_TEXTURE_2D, 1, &color_);
-  glTextureStorage2D(color_, 1, GL_RGBA32F, width, height);
-  glCreateTextures(GL_TEXTURE_2D, 1, &hits_);
-  glTextureStorage2D(hits_, 1, GL_RGBA32F, width, height);
-  glCreateRenderbuffers(1, &depth_);
-  glNamedRenderbufferStorage(depth_, GL_DEPTH_COMPONENT24, width, height);
-  glCreateFramebuffers(1, &framebuffer_);
-  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, color_, 0);
-  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT1, hits_, 0);
-  glNamedFramebufferRenderbuffer(framebuffer_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(framebuffer_, 2, buffers);
-  return glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-}
-
-void Framebuffer::bind() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glViewport(0, 0, width_, height_);
+  return target_.resize(width, height, {GL_RGBA32F, GL_RGBA32F}, GL_DEPTH_COMPONENT24);
 }
 
 namespace {
@@ -60,11 +22,11 @@ std::vector<glm::vec4> read_flipped(GLuint texture, int width, int height) {
 }  // namespace
 
 RgbaImage Framebuffer::read() const {
-  return {width_, height_, read_flipped(color_, width_, height_)};
+  return {width(), height(), read_flipped(target_.texture(0), width(), height())};
 }
 
 std::vector<glm::vec4> Framebuffer::read_hits() const {
-  return read_flipped(hits_, width_, height_);
+  return read_flipped(target_.texture(1), width(), height());
 }
 
 }  // namespace gfield

@@ -1,10 +1,13 @@
 #pragma once
-// An offscreen render target (RGBA32F colour + 24-bit depth) and its readback.
+// The frame a method renders into: RGBA32F colour (linear radiance), an RGBA32F hit attachment
+// (the geometry-field method's per-pixel counts) and 24-bit depth, with their readback.
 
 #include <vector>
 
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
+
+#include "runtime/render_target.hpp"
 
 namespace gfield {
 
@@ -17,33 +20,22 @@ struct RgbaImage {
 
 class Framebuffer {
  public:
-  Framebuffer() = default;
-  ~Framebuffer();
-  Framebuffer(const Framebuffer&) = delete;
-  Framebuffer& operator=(const Framebuffer&) = delete;
-
   /// (Re)allocates for `width` x `height`; false if the FBO is incomplete.
   bool resize(int width, int height);
   /// Binds for drawing and sets the viewport.
-  void bind() const;
+  void bind() const { target_.bind(); }
   /// Reads the colour attachment back (waits for the GPU), flipped so row 0 is the top.
   RgbaImage read() const;
-  /// Reads the RG32F hit attachment back (same layout as read()); see `hit_texture()`.
+  /// Reads the hit attachment back (same layout as read()).
   std::vector<glm::vec4> read_hits() const;
 
-  int width() const { return width_; }
-  int height() const { return height_; }
-  GLuint framebuffer() const { return framebuffer_; }
-  GLuint color_texture() const { return color_; }
+  int width() const { return target_.width(); }
+  int height() const { return target_.height(); }
+  GLuint framebuffer() const { return target_.framebuffer(); }
+  GLuint color_texture() const { return target_.texture(0); }
 
  private:
-  void release();
-  GLuint framebuffer_ = 0;
-  GLuint color_ = 0;
-  GLuint hits_ = 0;
-  GLuint depth_ = 0;
-  int width_ = 0;
-  int height_ = 0;
+  RenderTarget target_;
 };
 
 }  // namespace gfield

@@ -1,12 +1,287 @@
 #include "runtime/gpu_assets.hpp"
-#include "geometry/outward_normals.hpp"
 
 #include <algorithm>
-#include <cmath>
+#include <filesystem>
 
 #include <glm/gtx/norm.hpp>
 
+#include "geometry/mesh_io.hpp"
+#include "geometry/outward_normals.hpp"
+#include "gfield/exr_io.hpp"
+#include "gfield/field_lookup.hpp"
+
 namespace gfield {
+namespace {
+
+/// A 2D-array texture of `layers` layers of side x side texels of `format`, nearest filtering.
+void make_array(GlTexture& texture, GLenum format, int side, int layers) {
+  texture.make(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(texture.id(), 1, format, side, side, layers);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+/// False with "OWNER: problem" when `count` layers of side^2 exceed the GL limits.
+bool fits_gl_limits(int side, int count, const std::string& owner, std::string& error) {
+  GLint max_size = 0, max_layers = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  if (count > max_layers) {
+    error = owner + ": " + std::to_string(count) + " assets exceed GL_MAX_ARRAY_TEXTURE_LAYERS";
+    return false;
+  }
+  if (side > max_size) {
+    error = owner + ": a " + std::to_string(side) + "^2 texture exceeds GL_MAX_TEXTURE_SIZE " +
+            std::to_string(max_size);
+    return false;
+  }
+  return true;
+}
+
+/// The mesh file's triangles with the reference tracer's shading normals (angle-weighted,
+/// outwards; +Z where a vertex has none) and uv 0.
+void source_vertices(const TriangleMesh& mesh, std::vector<GpuVertex>& vertices,
+                     std::vector<unsigned>& indices) {
+  const std::vector<glm::dvec3> normals = outward_vertex_normals(mesh);
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const glm::vec3 n = normals[v] != glm::dvec3(0.0) ? glm::vec3(normals[v]) : glm::vec3(0, 0, 1);
+    vertices.push_back({glm::vec3(mesh.positions[v]), n, glm::vec2(0.0f)});
+  }
+  for (const glm::ivec3& f : mesh.triangles)
+    indices.insert(indices.end(), {unsigned(f.x), unsigned(f.y), unsigned(f.z)});
+}
+
+/// One vertex per corner (a vertex on a chart seam has one uv on each side of it).
+void parameterized_vertices(const ParameterizedMesh& pm, std::vector<GpuVertex>& vertices,
+                            std::vector<unsigned>& indices) {
+  const std::vector<glm::dvec3> normals = outward_vertex_normals(pm.mesh);
+  for (size_t f = 0; f < pm.mesh.triangles.size(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      const size_t v = size_t(pm.mesh.triangles[f][c]);
+      const glm::vec3 n =
+          normals[v] != glm::dvec3(0.0) ? glm::vec3(normals[v]) : glm::vec3(0, 0, 1);
+      indices.push_back(unsigned(vertices.size()));
+      vertices.push_back({glm::vec3(pm.mesh.positions[v]), n, pm.corner_uv[3 * f + size_t(c)]});
+    }
+  }
+}
+
+/// The geometry image's grid: a vertex per texel centre.
+void grid_vertices(const GeometryImage& image, std::vector<GpuVertex>& vertices,
+                   std::vector<unsigned>& indices) {
+  const int n = image.size;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const size_t t = texel_index(image, i, j);
+      vertices.push_back({image.position[t],
+                          image.normal[t],
+                          {(float(i) + 0.5f) / float(n), (float(j) + 0.5f) / float(n)}});
+    }
+  }
+  indices = geometry_image_triangles(image);
+}
+
+}  // namespace
+
+void GpuMesh::upload(const std::vector<GpuVertex>& vertex_data,
+                     const std::vector<unsigned>& index_data) {
+  vertices.make();
+  glNamedBufferStorage(vertices.id(),
+                       GLsizeiptr(std::max<size_t>(1, vertex_data.size()) * sizeof(GpuVertex)),
+                       vertex_data.empty() ? nullptr : vertex_data.data(), 0);
+  indices.make();
+  glNamedBufferStorage(indices.id(),
+                       GLsizeiptr(std::max<size_t>(1, index_data.size()) * sizeof(unsigned)),
+                       index_data.empty() ? nullptr : index_data.data(), 0);
+  vertex_array.make();
+  glVertexArrayVertexBuffer(vertex_array.id(), 0, vertices.id(), 0, sizeof(GpuVertex));
+  glVertexArrayElementBuffer(vertex_array.id(), indices.id());
+  const GLuint offsets[3] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
+                             offsetof(GpuVertex, uv)};
+  for (GLuint attribute = 0; attribute < 3; ++attribute) {
+    glEnableVertexArrayAttrib(vertex_array.id(), attribute);
+    glVertexArrayAttribFormat(vertex_array.id(), attribute, attribute == 2 ? 2 : 3, GL_FLOAT,
+                              GL_FALSE, offsets[attribute]);
+    glVertexArrayAttribBinding(vertex_array.id(), attribute, 0);
+  }
+  index_count = GLsizei(index_data.size());
+  vertex_count = GLsizei(vertex_data.size());
+}
+
+void GpuMesh::draw() const {
+  if (index_count == 0)
+    return;
+  glBindVertexArray(vertex_array.id());
+  glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
+}
+
+std::string missing_asset_message(const MeshAsset& mesh, const std::string& scene_file,
+                                  const char* what) {
+  const std::string stem = std::filesystem::path(mesh.file).stem().string();
+  return mesh.file + ": no " + what + " (expected " + stem + ".gimage.exr and " + stem +
+         ".gfield.exr beside the mesh, in the --assets folder or named by \"gimage\"/\"gfield\" "
+         "in " +
+         scene_file + "; make them with: gfield build " + mesh.file + " -o DIR/" + stem + ")";
+}
+
+bool GpuAssets::require(const Scene& scene, AssetNeeds needs, std::string& error) {
+  if (assets_.size() != scene.meshes.size())
+    assets_ = std::vector<GpuAsset>(scene.meshes.size());
+  needs.images = needs.images || needs.fields || needs.parameterized_meshes;
+  return (!needs.images || loaded_.images || load_images(scene, error)) &&
+         (!needs.fields || loaded_.fields || load_fields(scene, error)) &&
+         (!needs.source_meshes || loaded_.source_meshes || load_source_meshes(scene, error)) &&
+         (!needs.parameterized_meshes || loaded_.parameterized_meshes ||
+          load_parameterized_meshes(scene, error));
+}
+
+bool GpuAssets::upload(const std::vector<const GeometryImage*>& images,
+                       const std::vector<const GeometryField*>& fields, std::string& error) {
+  assets_ = std::vector<GpuAsset>(images.size());
+  images_.clear();
+  for (const GeometryImage* image : images)
+    images_.push_back(*image);
+  loaded_ = AssetNeeds{};
+  texture_bytes_ = 0;
+  if (!upload_images("in-memory assets", error))
+    return false;
+  std::vector<const GeometryField*> present(images.size(), nullptr);
+  std::copy_n(fields.begin(), std::min(fields.size(), present.size()), present.begin());
+  return upload_fields(present, "in-memory assets", error);
+}
+
+bool GpuAssets::load_images(const Scene& scene, std::string& error) {
+  images_.assign(scene.meshes.size(), GeometryImage{});
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const MeshAsset& mesh = scene.meshes[m];
+    if (mesh.geometry_image.empty()) {
+      error = missing_asset_message(mesh, scene.filename, "geometry image");
+      return false;
+    }
+    if (!load_geometry_image(mesh.geometry_image, images_[m], error))
+      return false;
+  }
+  return upload_images(scene.filename, error);
+}
+
+bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
+  int side = 1;
+  for (const GeometryImage& image : images_)
+    side = std::max(side, image.size);
+  const int count = std::max(1, int(images_.size()));
+  if (!fits_gl_limits(side, count, owner, error))
+    return false;
+  make_array(positions_, GL_RGBA32F, side, count);
+  make_array(normals_, GL_RGBA32F, side, count);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  for (size_t m = 0; m < images_.size(); ++m) {
+    const GeometryImage& image = images_[m];
+    std::vector<glm::vec4> position(image.position.size()), normal(image.position.size());
+    for (size_t t = 0; t < position.size(); ++t) {
+      position[t] = glm::vec4(image.position[t], image.coverage[t]);
+      normal[t] = glm::vec4(image.normal[t], 0.0f);
+    }
+    const int n = image.size;
+    glTextureSubImage3D(positions_.id(), 0, 0, 0, GLint(m), n, n, 1, GL_RGBA, GL_FLOAT,
+                        position.data());
+    glTextureSubImage3D(normals_.id(), 0, 0, 0, GLint(m), n, n, 1, GL_RGBA, GL_FLOAT,
+                        normal.data());
+    assets_[m].layer = int(m);
+    assets_[m].image_size = n;
+    assets_[m].box = image.box;
+  }
+  texture_bytes_ += size_t(side) * size_t(side) * size_t(count) * 32;
+  ++texture_uploads_;
+  loaded_.images = true;
+  return true;
+}
+
+bool GpuAssets::load_fields(const Scene& scene, std::string& error) {
+  std::vector<GeometryField> fields(scene.meshes.size());
+  std::vector<const GeometryField*> pointers;
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const MeshAsset& mesh = scene.meshes[m];
+    if (mesh.geometry_field.empty()) {
+      error = missing_asset_message(mesh, scene.filename, "geometry field");
+      return false;
+    }
+    if (!load_geometry_field(mesh.geometry_field, fields[m], error))
+      return false;
+    FieldLookup lookup;
+    if (!make_field_lookup(fields[m], images_[m], lookup, error)) {
+      error = mesh.geometry_field + ": does not match " + mesh.geometry_image + " (" + error + ")";
+      return false;
+    }
+    pointers.push_back(&fields[m]);
+  }
+  return upload_fields(pointers, scene.filename, error);
+}
+
+bool GpuAssets::upload_fields(const std::vector<const GeometryField*>& fields,
+                              const std::string& owner, std::string& error) {
+  int side = 1;
+  for (const GeometryField* field : fields)
+    side = field != nullptr ? std::max(side, field_side(*field)) : side;
+  const int count = std::max(1, int(fields.size()));
+  if (!fits_gl_limits(side, count, owner, error))
+    return false;
+  make_array(fields_, GL_RG32F, side, count);
+  for (size_t m = 0; m < fields.size(); ++m) {
+    if (fields[m] == nullptr)
+      continue;
+    const int n = field_side(*fields[m]);
+    glTextureSubImage3D(fields_.id(), 0, 0, 0, GLint(m), n, n, 1, GL_RG, GL_FLOAT,
+                        fields[m]->uv.data());
+    assets_[m].samples_per_side = fields[m]->samples_per_side;
+  }
+  texture_bytes_ += size_t(side) * size_t(side) * size_t(count) * 8;
+  ++texture_uploads_;
+  loaded_.fields = true;
+  return true;
+}
+
+bool GpuAssets::load_source_meshes(const Scene& scene, std::string& error) {
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    TriangleMesh mesh;
+    if (!load_mesh(scene.meshes[m].file, mesh, error))
+      return false;
+    std::vector<GpuVertex> vertices;
+    std::vector<unsigned> indices;
+    source_vertices(mesh, vertices, indices);
+    assets_[m].source.upload(vertices, indices);
+    Box bounds{glm::vec3(3e38f), glm::vec3(-3e38f)};
+    for (const GpuVertex& v : vertices) {
+      bounds.min = glm::min(bounds.min, v.position);
+      bounds.max = glm::max(bounds.max, v.position);
+    }
+    assets_[m].mesh_bounds = bounds;
+    if (assets_[m].layer < 0)  // no geometry image: the box is the mesh's bounds
+      assets_[m].box = bounds;
+  }
+  loaded_.source_meshes = true;
+  return true;
+}
+
+bool GpuAssets::load_parameterized_meshes(const Scene& scene, std::string& error) {
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    std::vector<GpuVertex> vertices;
+    std::vector<unsigned> indices;
+    const std::string path = parameterized_mesh_path(scene.meshes[m].geometry_image);
+    if (std::filesystem::exists(path)) {
+      ParameterizedMesh pm;
+      if (!load_parameterized_mesh(path, pm, error))
+        return false;
+      parameterized_vertices(pm, vertices, indices);
+    } else {
+      grid_vertices(images_[m], vertices, indices);
+    }
+    assets_[m].parameterized.upload(vertices, indices);
+  }
+  loaded_.parameterized_meshes = true;
+  return true;
+}
 
 std::vector<unsigned> geometry_image_triangles(const GeometryImage& image) {
   const int n = image.size;
@@ -32,165 +307,6 @@ std::vector<unsigned> geometry_image_triangles(const GeometryImage& image) {
     }
   }
   return indices;
-}
-
-std::vector<glm::vec3> angle_weighted_normals(const TriangleMesh& mesh) {
-  const std::vector<glm::dvec3> outward = outward_vertex_normals(mesh);
-  std::vector<glm::vec3> normals(outward.size(), glm::vec3(0.0f, 0.0f, 1.0f));
-  for (size_t v = 0; v < outward.size(); ++v) {
-    if (outward[v] != glm::dvec3(0.0)) {
-      normals[v] = glm::vec3(outward[v]);
-    }
-  }
-  return normals;
-}
-
-GpuAssets::~GpuAssets() {
-  release();
-}
-
-void GpuAssets::release() {
-  for (const GpuAsset& asset : assets_)
-    if (asset.vertex_array != 0)
-      glDeleteVertexArrays(1, &asset.vertex_array);
-  if (!buffers_.empty())
-    glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
-  for (GLuint* texture : {&positions_, &normals_, &fields_}) {
-    if (*texture != 0)
-      glDeleteTextures(1, texture);
-    *texture = 0;
-  }
-  assets_.clear();
-  buffers_.clear();
-  texture_bytes_ = 0;
-}
-
-bool GpuAssets::upload(const std::vector<const GeometryImage*>& images,
-                       const std::vector<const GeometryField*>& fields, std::string& error,
-                       const std::vector<const ParameterizedMesh*>& meshes) {
-  release();
-  GLint max_size = 0, max_layers = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
-  const int count = int(images.size());
-  if (count == 0)
-    return true;
-  if (count > max_layers) {
-    error = std::to_string(count) + " assets exceed GL_MAX_ARRAY_TEXTURE_LAYERS";
-    return false;
-  }
-  int image_side = 1, field_side_max = 1;
-  for (int k = 0; k < count; ++k) {
-    image_side = std::max(image_side, images[size_t(k)]->size);
-    if (const GeometryField* field = fields[size_t(k)]) {
-      const Box &a = field->box, &b = images[size_t(k)]->box;
-      const float tolerance = 1e-5f * diagonal(b);
-      if (glm::any(glm::greaterThan(glm::abs(a.min - b.min), glm::vec3(tolerance))) ||
-          glm::any(glm::greaterThan(glm::abs(a.max - b.max), glm::vec3(tolerance)))) {
-        error = field->source + ": the geometry field's box does not match its geometry image's";
-        return false;
-      }
-      field_side_max = std::max(field_side_max, field_side(*field));
-    }
-  }
-  if (image_side > max_size || field_side_max > max_size) {
-    error = "a " + std::to_string(std::max(image_side, field_side_max)) +
-            "^2 texture exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(max_size);
-    return false;
-  }
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &positions_);
-  glTextureStorage3D(positions_, 1, GL_RGBA32F, image_side, image_side, count);
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &normals_);
-  glTextureStorage3D(normals_, 1, GL_RGBA32F, image_side, image_side, count);
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &fields_);
-  glTextureStorage3D(fields_, 1, GL_RG32F, field_side_max, field_side_max, count);
-  texture_bytes_ = size_t(image_side) * size_t(image_side) * size_t(count) * 32 +
-                   size_t(field_side_max) * size_t(field_side_max) * size_t(count) * 8;
-  for (GLuint texture : {positions_, normals_, fields_}) {
-    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  for (int k = 0; k < count; ++k) {
-    const GeometryImage& image = *images[size_t(k)];
-    const int n = image.size;
-    std::vector<glm::vec4> position(size_t(n) * size_t(n)), normal(position.size());
-    for (size_t t = 0; t < position.size(); ++t) {
-      position[t] = glm::vec4(image.position[t], image.coverage[t]);
-      normal[t] = glm::vec4(image.normal[t], 0.0f);
-    }
-    glTextureSubImage3D(positions_, 0, 0, 0, k, n, n, 1, GL_RGBA, GL_FLOAT, position.data());
-    glTextureSubImage3D(normals_, 0, 0, 0, k, n, n, 1, GL_RGBA, GL_FLOAT, normal.data());
-    GpuAsset asset;
-    asset.layer = k;
-    asset.image_size = n;
-    asset.box = image.box;
-    if (const GeometryField* field = fields[size_t(k)]) {
-      const int side = field_side(*field);
-      glTextureSubImage3D(fields_, 0, 0, 0, k, side, side, 1, GL_RG, GL_FLOAT, field->uv.data());
-      asset.samples_per_side = field->samples_per_side;
-    }
-    // Mesh for rasterisation: position, normal, uv per vertex (per corner when the mesh has
-    // corner uvs: a vertex on a chart seam has one uv on each side).
-    std::vector<float> vertices;
-    std::vector<unsigned> indices;
-    const ParameterizedMesh* pm = size_t(k) < meshes.size() ? meshes[size_t(k)] : nullptr;
-    if (pm != nullptr) {
-      const TriangleMesh& mesh = pm->mesh;
-      const std::vector<glm::vec3> normals = angle_weighted_normals(mesh);
-      const bool corners = pm->corner_uv.size() == 3 * mesh.triangles.size();
-      const auto add_vertex = [&](int v, glm::vec2 uv) {
-        const glm::vec3 p(mesh.positions[size_t(v)]);
-        const glm::vec3& n = normals[size_t(v)];
-        vertices.insert(vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y});
-      };
-      if (corners) {
-        for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-          for (int c = 0; c < 3; ++c) {
-            add_vertex(mesh.triangles[f][c], pm->corner_uv[3 * f + size_t(c)]);
-            indices.push_back(unsigned(3 * f + size_t(c)));
-          }
-        }
-      } else {
-        for (size_t v = 0; v < mesh.positions.size(); ++v)
-          add_vertex(int(v), glm::vec2(0.0f));
-        for (const glm::ivec3& f : mesh.triangles)
-          indices.insert(indices.end(), {unsigned(f.x), unsigned(f.y), unsigned(f.z)});
-      }
-    } else {
-      for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < n; ++i) {
-          const size_t t = texel_index(image, i, j);
-          vertices.insert(vertices.end(),
-                          {image.position[t].x, image.position[t].y, image.position[t].z,
-                           image.normal[t].x, image.normal[t].y, image.normal[t].z,
-                           (float(i) + 0.5f) / float(n), (float(j) + 0.5f) / float(n)});
-        }
-      }
-      indices = geometry_image_triangles(image);
-    }
-    GLuint buffers[2] = {0, 0};
-    glCreateBuffers(2, buffers);
-    buffers_.insert(buffers_.end(), buffers, buffers + 2);
-    glNamedBufferStorage(buffers[0], GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(),
-                         0);
-    glNamedBufferStorage(buffers[1], GLsizeiptr(std::max<size_t>(indices.size(), 1) * 4),
-                         indices.empty() ? nullptr : indices.data(), 0);
-    glCreateVertexArrays(1, &asset.vertex_array);
-    glVertexArrayVertexBuffer(asset.vertex_array, 0, buffers[0], 0, 8 * sizeof(float));
-    glVertexArrayElementBuffer(asset.vertex_array, buffers[1]);
-    for (GLuint attribute = 0; attribute < 3; ++attribute) {
-      glEnableVertexArrayAttrib(asset.vertex_array, attribute);
-      glVertexArrayAttribFormat(asset.vertex_array, attribute, attribute == 2 ? 2 : 3, GL_FLOAT,
-                                GL_FALSE, attribute * 3 * sizeof(float));
-      glVertexArrayAttribBinding(asset.vertex_array, attribute, 0);
-    }
-    asset.index_count = GLsizei(indices.size());
-    assets_.push_back(asset);
-  }
-  return true;
 }
 
 }  // namespace gfield

@@ -1,78 +1,120 @@
 #pragma once
-// Geometry images and geometry fields on the GPU. All assets of a scene share three texture
-// arrays so that a shader can reach any object's data with a layer index:
-//   - positions: GL_TEXTURE_2D_ARRAY RGBA32F, layer = asset, texel (i, j) = P (mesh coordinates)
-//     in xyz and coverage A in w; an n x n image fills the corner [0,n)^2 of the layer;
-//   - normals:   GL_TEXTURE_2D_ARRAY RGBA32F (unit normals in xyz);
-//   - fields:    GL_TEXTURE_2D_ARRAY RG32F, texel (exit, entry) = stored uv of the pair; a
-//     (6N^2)^2 table fills the corner of its layer (3D textures stop at 2048 on Mesa, a 2D array
-//     layer reaches 16384).
-// Shaders read them with texelFetch only (bilinear weights are computed in the shader, as the
-// CPU does, instead of the texture unit's fixed-point filtering). Each asset also has a triangle
-// mesh for rasterisation when one is given (the scene's mesh file, or the parameterised mesh
-// NAME.gimage.obj, whose corner uvs reach the asset's per-texel maps), else the geometry image's
-// grid. Instances share one asset.
+// The scene's mesh assets on the GPU, loaded on demand (a method asks for what it needs):
+//   - geometry images: two GL_TEXTURE_2D_ARRAY RGBA32F textures, layer = asset, texel (i, j) =
+//     P (mesh coordinates) with coverage A in w, and the unit normal; an n x n image fills the
+//     corner [0,n)^2 of its layer;
+//   - geometry fields: GL_TEXTURE_2D_ARRAY RG32F, texel (exit, entry) = the stored uv of the pair;
+//     a (6N^2)^2 table fills the corner of its layer (3D textures stop at 2048 on Mesa, a 2D array
+//     layer reaches 16384);
+//   - rasterisation meshes, two per asset: the mesh file as the reference tracer sees it (its
+//     shading normals, uv 0: the G-buffer's and the glass method's first hits), and the
+//     parameterised mesh NAME.gimage.obj (the same surface with each corner's geometry-image uv,
+//     which reaches the asset's per-texel maps; the image's grid when the file is missing).
+// Shaders read the textures with texelFetch only (bilinear weights are computed in the shader,
+// as the CPU does). Instances share one asset. The texture units are the contract's
+// (shaders/lib/contract.glsl: UNIT_GI_POSITIONS, UNIT_GI_NORMALS, UNIT_FIELDS).
 
 #include <string>
 #include <vector>
 
 #include <epoxy/gl.h>
+#include <glm/glm.hpp>
 
+#include "geometry/parameterized_mesh.hpp"
+#include "gfield/box.hpp"
 #include "gfield/geometry_field.hpp"
 #include "gfield/geometry_image.hpp"
-#include "geometry/mesh_io.hpp"
-#include "geometry/parameterized_mesh.hpp"
+#include "gfield/scene.hpp"
+#include "runtime/gl_object.hpp"
 
 namespace gfield {
 
-/// Where one asset lives on the GPU.
+/// Interleaved vertex of every rasterised mesh: attributes 0 = position, 1 = normal, 2 = uv.
+struct GpuVertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 uv;
+};
+
+/// Indexed triangles on the GPU.
+struct GpuMesh {
+  GlVertexArray vertex_array;
+  GlBuffer vertices;
+  GlBuffer indices;
+  GLsizei index_count = 0;
+  GLsizei vertex_count = 0;
+
+  /// Uploads `vertices` and triangle `indices` (three per triangle).
+  void upload(const std::vector<GpuVertex>& vertex_data, const std::vector<unsigned>& index_data);
+  /// Draws the triangles with the program in use (no-op when empty).
+  void draw() const;
+};
+
+/// Which assets of the scene's meshes a method needs.
+struct AssetNeeds {
+  bool images = false;                ///< geometry images
+  bool fields = false;                ///< geometry fields (and their images)
+  bool source_meshes = false;         ///< the mesh files themselves
+  bool parameterized_meshes = false;  ///< NAME.gimage.obj (and the images)
+};
+
+/// Where one asset (one mesh file of the scene) lives on the GPU.
 struct GpuAsset {
-  int layer = 0;             ///< layer in the three arrays
+  int layer = -1;            ///< layer in the texture arrays (-1: no geometry image loaded)
   int image_size = 0;        ///< n of the geometry image
-  int samples_per_side = 0;  ///< N of the field (0: no field)
-  Box box;                   ///< mesh-coordinate box of the unit cube
-  GLuint vertex_array = 0;   ///< attributes 0 = position, 1 = normal, 2 = geometry-image uv
-  GLsizei index_count = 0;   ///< triangles * 3
+  int samples_per_side = 0;  ///< N of the field (0: no field loaded)
+  Box box;          ///< the geometry image's box (mesh coordinates), else the mesh file's bounds
+  Box mesh_bounds;  ///< bounds of the mesh file's vertices (with the source mesh)
+  GpuMesh source;   ///< the mesh file, the reference tracer's normals, uv 0
+  GpuMesh parameterized;  ///< NAME.gimage.obj with corner uvs, or the image's grid
 };
 
 class GpuAssets {
  public:
-  GpuAssets() = default;
-  ~GpuAssets();
-  GpuAssets(const GpuAssets&) = delete;
-  GpuAssets& operator=(const GpuAssets&) = delete;
-
-  /// Uploads the image and field of every asset (fields[i] may be null: no field) and its
-  /// rasterisation mesh (meshes[i] may be null or meshes empty: the geometry image grid; a mesh
-  /// without corner uvs gets uv 0). False with an error when an image and its field do not
-  /// belong together (box) or a size exceeds the GL limits.
+  /// Loads and uploads, for every mesh of `scene`, what `needs` asks for and is not loaded yet.
+  /// False with "FILE: problem" for a missing or damaged asset, a field that does not belong to
+  /// its image, or a size beyond the GL limits.
+  bool require(const Scene& scene, AssetNeeds needs, std::string& error);
+  /// Uploads in-memory geometry images, one asset each, and their fields (fields[i] null or
+  /// `fields` empty: none), replacing what is loaded (tests, tools that make assets in memory).
+  /// False when a size exceeds the GL limits.
   bool upload(const std::vector<const GeometryImage*>& images,
-              const std::vector<const GeometryField*>& fields, std::string& error,
-              const std::vector<const ParameterizedMesh*>& meshes = {});
+              const std::vector<const GeometryField*>& fields, std::string& error);
 
   const std::vector<GpuAsset>& assets() const { return assets_; }
-  GLuint positions() const { return positions_; }
-  GLuint normals() const { return normals_; }
-  GLuint fields() const { return fields_; }
+  GLuint positions() const { return positions_.id(); }
+  GLuint normals() const { return normals_.id(); }
+  GLuint fields() const { return fields_.id(); }
   /// Bytes of texture memory held.
   size_t texture_bytes() const { return texture_bytes_; }
+  /// How many times texture arrays were filled: a scene edit must not change it.
+  int texture_uploads() const { return texture_uploads_; }
 
  private:
-  void release();
-  std::vector<GpuAsset> assets_;
-  std::vector<GLuint> buffers_;
-  GLuint positions_ = 0;
-  GLuint normals_ = 0;
-  GLuint fields_ = 0;
-  size_t texture_bytes_ = 0;
-};
+  bool load_images(const Scene& scene, std::string& error);
+  bool load_fields(const Scene& scene, std::string& error);
+  bool upload_images(const std::string& owner, std::string& error);
+  bool upload_fields(const std::vector<const GeometryField*>& fields, const std::string& owner,
+                     std::string& error);
+  bool load_source_meshes(const Scene& scene, std::string& error);
+  bool load_parameterized_meshes(const Scene& scene, std::string& error);
 
-/// Angle-weighted vertex normals of `mesh`, oriented outwards by the signed volume (as the
-/// reference tracer computes its shading normals).
-std::vector<glm::vec3> angle_weighted_normals(const TriangleMesh& mesh);
+  std::vector<GpuAsset> assets_;
+  std::vector<GeometryImage> images_;  ///< kept for the grid fallback of parameterized meshes
+  AssetNeeds loaded_;
+  GlTexture positions_;
+  GlTexture normals_;
+  GlTexture fields_;
+  size_t texture_bytes_ = 0;
+  int texture_uploads_ = 0;
+};
 
 /// Grid triangles of a geometry image: two per quad of texel centres whose 4 corners are covered
 /// (A > 0.5), as indices j * n + i. Quads are split along the shorter diagonal.
 std::vector<unsigned> geometry_image_triangles(const GeometryImage& image);
+
+/// The missing-asset message for `mesh`: what was expected where, and the command that makes it.
+std::string missing_asset_message(const MeshAsset& mesh, const std::string& scene_file,
+                                  const char* what);
 
 }  // namespace gfield

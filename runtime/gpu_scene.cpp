@@ -3,75 +3,193 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "geometry/analytic_primitives.hpp"
 #include "gfield/environment.hpp"
-#include "gfield/scene.hpp"
+#include "gfield/gpu_contract.hpp"
+#include "runtime/supersample.hpp"
 
 namespace gfield {
 namespace {
 
-/// std430 mirror of GpuObject in shaders/lib/scene.glsl.
-struct GpuObject {
-  glm::mat4 to_world;
-  glm::mat4 to_object;
-  glm::vec4 color;       ///< rgb albedo or tint, w = index of refraction
-  glm::vec4 absorption;  ///< rgb Beer-Lambert coefficients, w = diagonal of the world bounds
-  glm::vec4 checker0;    ///< rgb, w = checker scale u
-  glm::vec4 checker1;    ///< rgb, w = checker scale v
-  glm::vec4 shape;       ///< radius, height, thickness
-  glm::vec4 size;        ///< xyz size of quads, boxes, slabs
-  glm::vec4 box_min;     ///< object_local_bounds (meshes: the box of the field's unit cube)
-  glm::vec4 box_max;
-  glm::ivec4 kind;   ///< shape type, material type, texture type
-  glm::ivec4 asset;  ///< meshes: layer, samples per side N, geometry-image size n
-};
-static_assert(sizeof(GpuObject) == 288);
+/// The cube [-1, 1]^3 (outward normals, uv 0) that rasterises analytic shapes.
+void make_proxy_cube(GpuMesh& cube) {
+  std::vector<GpuVertex> vertices;
+  std::vector<unsigned> indices;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (float side : {-1.0f, 1.0f}) {
+      const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+      const float corners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
+      for (const auto& c : corners) {
+        glm::vec3 p(0.0f), n(0.0f);
+        p[axis] = side;
+        p[a1] = c[0];
+        p[a2] = c[1];
+        n[axis] = side;
+        indices.push_back(unsigned(vertices.size()));
+        vertices.push_back({p, n, glm::vec2(0.0f)});
+      }
+    }
+  }
+  cube.upload(vertices, indices);
+}
 
-/// std430 mirror of GpuLight in shaders/lib/scene.glsl.
-struct GpuLight {
-  glm::vec4 direction;  ///< xyz direction of a directional light, w = 1 for a point light
-  glm::vec4 position;
-  glm::vec4 color;  ///< rgb colour * intensity
-};
+/// The contract's GpuObject of object k.
+gpu::GpuObject gpu_object(const GpuScene& gpu_scene, int k) {
+  const SceneObject& o = gpu_scene.scene().objects[size_t(k)];
+  gpu::GpuObject g{};
+  const glm::dmat4 to_world = object_to_world(o.transform);
+  g.to_world = glm::mat4(to_world);
+  g.to_object = glm::mat4(glm::inverse(to_world));
+  g.color = glm::vec4(o.material.color, o.material.ior);
+  glm::vec3 lo, hi;
+  gpu_scene.object_world_bounds(k, lo, hi);
+  g.absorption = glm::vec4(o.material.absorption, glm::length(hi - lo));
+  g.checker0 = glm::vec4(o.material.checker_colors[0], o.material.checker_scale.x);
+  g.checker1 = glm::vec4(o.material.checker_colors[1], o.material.checker_scale.y);
+  g.shape = glm::vec4(o.shape.radius, o.shape.height, o.shape.thickness, 0.0f);
+  g.size = glm::vec4(o.shape.size, 0.0f);
+  g.kind = glm::ivec4(int(o.shape.type), int(o.material.type), int(o.material.texture), 0);
+  gpu_scene.object_local_bounds(k, lo, hi);
+  g.box_min = glm::vec4(lo, 0.0f);
+  g.box_max = glm::vec4(hi, 0.0f);
+  if (o.shape.type == ShapeType::kMesh) {
+    const GpuAsset& asset = gpu_scene.assets().assets()[size_t(o.shape.mesh)];
+    g.asset = glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, 0);
+  }
+  return g;
+}
+
+/// Replaces `buffer` by one holding `data` (at least one element's worth of bytes).
+template <class T>
+void fill_buffer(GlBuffer& buffer, const std::vector<T>& data) {
+  buffer.make();
+  glNamedBufferData(buffer.id(), GLsizeiptr(std::max<size_t>(1, data.size()) * sizeof(T)),
+                    data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
+}
 
 }  // namespace
 
-glm::vec3 shape_half_extent(const Shape& shape) {
-  switch (shape.type) {
-    case ShapeType::kSphere:
-      return glm::vec3(shape.radius);
-    case ShapeType::kQuad:
-      return glm::vec3(0.5f * shape.size.x, 0.5f * shape.size.y, 0.0f);
-    case ShapeType::kBox:
-      return 0.5f * shape.size;
-    case ShapeType::kSlab:
-      return 0.5f * glm::vec3(shape.size.x, shape.size.y, shape.thickness);
-    case ShapeType::kCylinder:
-    case ShapeType::kHollowCylinder:
-      return glm::vec3(shape.radius, 0.5f * shape.height, shape.radius);
-    case ShapeType::kMesh:
-      break;
-  }
-  return glm::vec3(0.0f);
+bool GpuScene::load(const Scene& scene, std::string& error) {
+  scene_ = scene;
+  assets_ = GpuAssets();
+  // No assets yet, but one (empty) entry per mesh.
+  if (!assets_.require(scene_, AssetNeeds{}, error) ||
+      !upload_environment_texture(scene_.environment, environment_, error))
+    return false;
+  make_proxy_cube(proxy_);
+  empty_.make();
+  update();
+  return true;
 }
 
-void object_local_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,
-                         glm::vec3& hi) {
-  const SceneObject& o = scene.objects[size_t(object)];
+bool GpuScene::require(const AssetNeeds& needs, std::string& error) {
+  if (!assets_.require(scene_, needs, error))
+    return false;
+  update();
+  return true;
+}
+
+void GpuScene::update() {
+  std::vector<gpu::GpuObject> objects;
+  glm::vec3 lo(scene_.camera.position), hi(scene_.camera.position);
+  for (int k = 0; k < int(scene_.objects.size()); ++k) {
+    objects.push_back(gpu_object(*this, k));
+    glm::vec3 olo, ohi;
+    object_world_bounds(k, olo, ohi);
+    lo = glm::min(lo, olo);
+    hi = glm::max(hi, ohi);
+  }
+  std::vector<gpu::GpuLight> lights;
+  for (const Light& l : scene_.lights)
+    lights.push_back({glm::vec4(l.direction, l.type == LightType::kPoint ? 1.0f : 0.0f),
+                      glm::vec4(l.position, 1.0f), glm::vec4(l.color * l.intensity, 0.0f)});
+  fill_buffer(objects_, objects);
+  fill_buffer(lights_, lights);
+  extent_ = std::max(1e-3f, glm::length(hi - lo));
+}
+
+void GpuScene::bind() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BUFFER_OBJECTS, objects_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BUFFER_LIGHTS, lights_.id());
+  glBindTextureUnit(gpu::UNIT_GI_POSITIONS, assets_.positions());
+  glBindTextureUnit(gpu::UNIT_GI_NORMALS, assets_.normals());
+  glBindTextureUnit(gpu::UNIT_FIELDS, assets_.fields());
+  glBindTextureUnit(gpu::UNIT_ENVIRONMENT, environment_.id());
+}
+
+void GpuScene::set_uniforms(const ShaderProgram& program) const {
+  const auto u = [&](const char* name) { return program.uniform(name); };
+  glUniform1i(u("u_object_count"), int(scene_.objects.size()));
+  glUniform1i(u("u_light_count"), int(scene_.lights.size()));
+  glUniform3fv(u("u_ambient"), 1, &scene_.ambient.x);
+  glUniform1f(u("u_scene_extent"), extent_);
+  glUniform1i(u("u_env_type"), int(scene_.environment.type));
+  glUniform3fv(u("u_env_color"), 1, &scene_.environment.color.x);
+  glUniform1f(u("u_env_intensity"), scene_.environment.intensity);
+}
+
+void GpuScene::set_object_uniforms(const ShaderProgram& program, int object) const {
+  const SceneObject& o = scene_.objects[size_t(object)];
+  const auto u = [&](const char* name) { return program.uniform(name); };
+  const glm::dmat4 to_world_d = object_to_world(o.transform);
+  const glm::mat4 to_world(to_world_d), to_object(glm::inverse(to_world_d));
+  const glm::mat3 normal_to_world(glm::transpose(glm::inverse(glm::dmat3(to_world_d))));
+  glUniformMatrix4fv(u("u_to_world"), 1, GL_FALSE, glm::value_ptr(to_world));
+  glUniformMatrix4fv(u("u_to_object"), 1, GL_FALSE, glm::value_ptr(to_object));
+  glUniformMatrix3fv(u("u_normal_to_world"), 1, GL_FALSE, glm::value_ptr(normal_to_world));
+  glUniform1i(u("u_object"), object);
+  glUniform1i(u("u_shape"), int(o.shape.type));
+  glUniform4f(u("u_shape_params"), o.shape.radius, o.shape.height, o.shape.thickness, 0.0f);
+  glUniform3fv(u("u_shape_size"), 1, &o.shape.size.x);
   if (o.shape.type == ShapeType::kMesh) {
-    const GpuAsset& asset = assets.assets()[size_t(o.shape.mesh)];
-    lo = asset.box.min;
-    hi = asset.box.max;
-  } else {
-    hi = shape_half_extent(o.shape);
-    lo = -hi;
+    glUniform3f(u("u_proxy_half"), 1.0f, 1.0f, 1.0f);
+    glUniform1i(u("u_gi_size"), assets_.assets()[size_t(o.shape.mesh)].image_size);
+    return;
   }
+  // A slightly grown box: the exact shape is found per fragment.
+  glm::dvec3 lo, hi;
+  shape_bounds(o.shape, lo, hi);
+  const glm::vec3 half = glm::vec3(hi) * 1.001f + 1e-5f * extent_;
+  glUniform3fv(u("u_proxy_half"), 1, &half.x);
 }
 
-void object_world_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,
-                         glm::vec3& hi) {
+void GpuScene::draw_object(const ShaderProgram& program, int object, RasterMesh raster) const {
+  set_object_uniforms(program, object);
+  const Shape& shape = scene_.objects[size_t(object)].shape;
+  if (shape.type != ShapeType::kMesh) {
+    proxy_.draw();
+    return;
+  }
+  const GpuAsset& asset = assets_.assets()[size_t(shape.mesh)];
+  (raster == RasterMesh::kSource ? asset.source : asset.parameterized).draw();
+}
+
+void GpuScene::draw_fullscreen() const {
+  glBindVertexArray(empty_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void GpuScene::object_local_bounds(int object, glm::vec3& lo, glm::vec3& hi) const {
+  const SceneObject& o = scene_.objects[size_t(object)];
+  if (o.shape.type == ShapeType::kMesh) {
+    const Box& box = assets_.assets()[size_t(o.shape.mesh)].box;
+    lo = box.min;
+    hi = box.max;
+    return;
+  }
+  glm::dvec3 dlo, dhi;
+  shape_bounds(o.shape, dlo, dhi);
+  lo = glm::vec3(dlo);
+  hi = glm::vec3(dhi);
+}
+
+void GpuScene::object_world_bounds(int object, glm::vec3& lo, glm::vec3& hi) const {
   glm::vec3 olo, ohi;
-  object_local_bounds(scene, assets, object, olo, ohi);
-  const glm::mat4 to_world(object_to_world(scene.objects[size_t(object)].transform));
+  object_local_bounds(object, olo, ohi);
+  const glm::mat4 to_world(object_to_world(scene_.objects[size_t(object)].transform));
   lo = glm::vec3(3.0e38f);
   hi = glm::vec3(-3.0e38f);
   for (int c = 0; c < 8; ++c) {
@@ -83,36 +201,8 @@ void object_world_bounds(const Scene& scene, const GpuAssets& assets, int object
   }
 }
 
-void create_proxy_cube(GLuint& buffer, GLuint& vertex_array) {
-  std::vector<float> v;
-  for (int axis = 0; axis < 3; ++axis) {
-    for (float side : {-1.0f, 1.0f}) {
-      const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
-      const float corners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
-      for (const auto& c : corners) {
-        glm::vec3 p(0.0f), n(0.0f);
-        p[axis] = side;
-        p[a1] = c[0];
-        p[a2] = c[1];
-        n[axis] = side;
-        v.insert(v.end(), {p.x, p.y, p.z, n.x, n.y, n.z, 0.0f, 0.0f});
-      }
-    }
-  }
-  glCreateBuffers(1, &buffer);
-  glNamedBufferStorage(buffer, GLsizeiptr(v.size() * sizeof(float)), v.data(), 0);
-  glCreateVertexArrays(1, &vertex_array);
-  glVertexArrayVertexBuffer(vertex_array, 0, buffer, 0, 8 * sizeof(float));
-  for (GLuint attribute = 0; attribute < 3; ++attribute) {
-    glEnableVertexArrayAttrib(vertex_array, attribute);
-    glVertexArrayAttribFormat(vertex_array, attribute, attribute == 2 ? 2 : 3, GL_FLOAT, GL_FALSE,
-                              attribute * 3 * sizeof(float));
-    glVertexArrayAttribBinding(vertex_array, attribute, 0);
-  }
-}
-
-void set_camera_ray_uniforms(const ShaderProgram& program, const Camera& camera, int width,
-                             int height, glm::vec2 jitter) {
+void set_camera_uniforms(const ShaderProgram& program, const Camera& camera, int width, int height,
+                         glm::vec2 jitter) {
   const glm::vec3 forward = glm::normalize(camera.target - camera.position);
   const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
   const glm::vec3 up = glm::cross(right, forward);
@@ -127,63 +217,21 @@ void set_camera_ray_uniforms(const ShaderProgram& program, const Camera& camera,
   glUniform2f(program.uniform("u_jitter"), jitter.x, jitter.y);
 }
 
-void set_environment_uniforms(const ShaderProgram& program, const EnvironmentDesc& environment) {
-  glUniform1i(program.uniform("u_env_type"), int(environment.type));
-  glUniform3fv(program.uniform("u_env_color"), 1, &environment.color.x);
-  glUniform1f(program.uniform("u_env_intensity"), environment.intensity);
+CameraFrustum camera_frustum(const Camera& camera, int width, int height, float extent,
+                             glm::vec2 jitter) {
+  CameraFrustum f;
+  f.far_plane = 4.0f * extent + glm::length(camera.target - camera.position);
+  f.near_plane = 1e-4f * f.far_plane;
+  f.view = glm::lookAt(camera.position, camera.target, camera.up);
+  const float aspect = float(width) / float(height);
+  f.projection = jittered_projection(
+      glm::perspective(glm::radians(camera.fov_degrees), aspect, f.near_plane, f.far_plane), jitter,
+      width, height);
+  return f;
 }
 
-float upload_scene_buffers(const Scene& scene, const GpuAssets& assets, GLuint& objects_buffer,
-                           GLuint& lights_buffer) {
-  std::vector<GpuObject> objects;
-  glm::vec3 lo(scene.camera.position), hi(scene.camera.position);
-  for (size_t k = 0; k < scene.objects.size(); ++k) {
-    const SceneObject& o = scene.objects[k];
-    GpuObject g{};
-    const glm::dmat4 to_world = object_to_world(o.transform);
-    g.to_world = glm::mat4(to_world);
-    g.to_object = glm::mat4(glm::inverse(to_world));
-    g.color = glm::vec4(o.material.color, o.material.ior);
-    glm::vec3 olo, ohi;
-    object_world_bounds(scene, assets, int(k), olo, ohi);
-    lo = glm::min(lo, olo);
-    hi = glm::max(hi, ohi);
-    g.absorption = glm::vec4(o.material.absorption, glm::length(ohi - olo));
-    g.checker0 = glm::vec4(o.material.checker_colors[0], o.material.checker_scale.x);
-    g.checker1 = glm::vec4(o.material.checker_colors[1], o.material.checker_scale.y);
-    g.shape = glm::vec4(o.shape.radius, o.shape.height, o.shape.thickness, 0.0f);
-    g.size = glm::vec4(o.shape.size, 0.0f);
-    g.kind = glm::ivec4(int(o.shape.type), int(o.material.type), int(o.material.texture), 0);
-    glm::vec3 local_lo, local_hi;
-    object_local_bounds(scene, assets, int(k), local_lo, local_hi);
-    g.box_min = glm::vec4(local_lo, 0.0f);
-    g.box_max = glm::vec4(local_hi, 0.0f);
-    if (o.shape.type == ShapeType::kMesh) {
-      const GpuAsset& asset = assets.assets()[size_t(o.shape.mesh)];
-      g.asset = glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, 0);
-    }
-    objects.push_back(g);
-  }
-  std::vector<GpuLight> lights;
-  for (const Light& l : scene.lights)
-    lights.push_back({glm::vec4(l.direction, l.type == LightType::kPoint ? 1.0f : 0.0f),
-                      glm::vec4(l.position, 1.0f), glm::vec4(l.color * l.intensity, 0.0f)});
-  // Buffers are re-created: sizes change when objects are added in the viewer.
-  for (GLuint* buffer : {&objects_buffer, &lights_buffer}) {
-    if (*buffer != 0)
-      glDeleteBuffers(1, buffer);
-    glCreateBuffers(1, buffer);
-  }
-  glNamedBufferData(objects_buffer,
-                    GLsizeiptr(std::max<size_t>(1, objects.size()) * sizeof(GpuObject)),
-                    objects.empty() ? nullptr : objects.data(), GL_DYNAMIC_DRAW);
-  glNamedBufferData(lights_buffer,
-                    GLsizeiptr(std::max<size_t>(1, lights.size()) * sizeof(GpuLight)),
-                    lights.empty() ? nullptr : lights.data(), GL_DYNAMIC_DRAW);
-  return std::max(1e-3f, glm::length(hi - lo));
-}
-
-bool upload_environment_texture(const EnvironmentDesc& desc, GLuint& texture, std::string& error) {
+bool upload_environment_texture(const EnvironmentDesc& desc, GlTexture& texture,
+                                std::string& error) {
   Environment environment;
   if (!load_environment(desc, environment, error))
     return false;
@@ -195,17 +243,15 @@ bool upload_environment_texture(const EnvironmentDesc& desc, GLuint& texture, st
       layers.push_back(&face);
   const int width = layers.empty() ? 1 : layers[0]->width;
   const int height = layers.empty() ? 1 : layers[0]->height;
-  if (texture != 0)
-    glDeleteTextures(1, &texture);
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture);
-  glTextureStorage3D(texture, 1, GL_RGBA32F, width, height,
+  texture.make(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(texture.id(), 1, GL_RGBA32F, width, height,
                      GLsizei(std::max<size_t>(1, layers.size())));
   for (size_t k = 0; k < layers.size(); ++k) {
     std::vector<glm::vec4> pixels;
     pixels.reserve(layers[k]->pixels.size());
     for (const glm::vec3& p : layers[k]->pixels)
       pixels.emplace_back(p, 1.0f);
-    glTextureSubImage3D(texture, 0, 0, 0, GLint(k), width, height, 1, GL_RGBA, GL_FLOAT,
+    glTextureSubImage3D(texture.id(), 0, 0, 0, GLint(k), width, height, 1, GL_RGBA, GL_FLOAT,
                         pixels.data());
   }
   return true;

@@ -1,57 +1,99 @@
 #pragma once
-// The scene as shaders/lib/scene.glsl sees it: objects and lights in std430 storage buffers
-// (bindings 0 and 1), the bounds of objects, and the proxy cube that rasterises analytic shapes.
-// Shared by the geometry-field renderer and the image-space renderer.
+// The one GPU scene every method draws from: the scene description (CPU), its objects and lights
+// in the contract's std430 storage buffers, the environment texture, the mesh assets (loaded as
+// methods ask for them), the proxy cube that rasterises analytic shapes, and the helpers that
+// bind all of it to the contract's slots (shaders/lib/contract.glsl) and draw one object.
+// Editing objects, materials or lights and calling update() refills the two buffers only.
 
 #include <string>
-#include <vector>
 
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
 #include "gfield/scene.hpp"
+#include "runtime/gl_object.hpp"
 #include "runtime/gpu_assets.hpp"
 #include "runtime/shader_program.hpp"
 
 namespace gfield {
 
-/// Object-space half extents of an analytic shape's bounds (as geometry/analytic_primitives'
-/// shape_bounds); zero for meshes.
-glm::vec3 shape_half_extent(const Shape& shape);
+/// Which of its meshes a mesh object is drawn as (GpuAsset::source / ::parameterized).
+enum class RasterMesh { kSource, kParameterized };
 
-/// Object-space bounds [lo, hi] of scene.objects[object]: its shape's bounds, or its mesh asset's
-/// box (mesh coordinates).
-void object_local_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,
-                         glm::vec3& hi);
+class GpuScene {
+ public:
+  /// Keeps `scene`, uploads its environment, objects and lights (no mesh assets yet). Needs a
+  /// current GL 4.5 context. False with "FILE: problem" when the environment does not load.
+  bool load(const Scene& scene, std::string& error);
+  /// Loads the mesh assets `needs` asks for (those not loaded yet), then refreshes the buffers.
+  bool require(const AssetNeeds& needs, std::string& error);
 
-/// World-space axis-aligned bounds [lo, hi] of scene.objects[object] (scene units): its shape's
-/// bounds, or its mesh asset's box, through its transform.
-void object_world_bounds(const Scene& scene, const GpuAssets& assets, int object, glm::vec3& lo,
-                         glm::vec3& hi);
+  /// The scene drawn; after changing objects, materials or lights call update().
+  Scene& scene() { return scene_; }
+  const Scene& scene() const { return scene_; }
+  /// Refills the objects and lights buffers from scene() (the assets stay).
+  void update();
 
-/// Creates the vertex buffer and vertex array of the cube [-1, 1]^3 that rasterises analytic
-/// shapes: 36 vertices, attributes 0 = position, 1 = normal, 2 = uv (zero).
-void create_proxy_cube(GLuint& buffer, GLuint& vertex_array);
+  const GpuAssets& assets() const { return assets_; }
+  /// Diagonal of the bounds of all objects and the camera (scene units, at least 1e-3).
+  float extent() const { return extent_; }
 
-/// Sets the camera-ray uniforms of a program (u_camera_position/forward/right/up, u_tan_half,
-/// u_image_size, u_jitter): the ray through pixel p + jitter of a width x height picture, as
-/// gfield::camera_ray. The program must be in use.
-void set_camera_ray_uniforms(const ShaderProgram& program, const Camera& camera, int width,
-                             int height, glm::vec2 jitter);
+  /// Binds the objects and lights buffers, the asset textures and the environment to their
+  /// contract slots.
+  void bind() const;
+  /// Sets the scene uniforms of `program` (in use): u_object_count, u_light_count, u_ambient,
+  /// u_scene_extent and the environment's u_env_type, u_env_color, u_env_intensity.
+  void set_uniforms(const ShaderProgram& program) const;
+  /// Sets the per-object uniforms of `program` (in use) for object `object`: u_to_world,
+  /// u_to_object, u_normal_to_world, u_object, u_shape, u_shape_params, u_shape_size,
+  /// u_proxy_half (analytic: the half extents of its bounds, grown a little; mesh: 1) and
+  /// u_gi_size.
+  void set_object_uniforms(const ShaderProgram& program, int object) const;
+  /// Draws object `object` with `program` (in use) after set_object_uniforms: a mesh as its
+  /// `raster` mesh, an analytic shape as the proxy cube grown to its bounds (the fragments
+  /// intersect the exact shape).
+  void draw_object(const ShaderProgram& program, int object, RasterMesh raster) const;
+  /// Draws one full-screen triangle (shaders/fullscreen.vert).
+  void draw_fullscreen() const;
 
-/// Sets u_env_type, u_env_color and u_env_intensity of shaders/lib/scene_environment.glsl. The
-/// program must be in use.
-void set_environment_uniforms(const ShaderProgram& program, const EnvironmentDesc& environment);
+  /// Object-space bounds [lo, hi] of scene().objects[object]: its shape's bounds, or its mesh
+  /// asset's box (mesh coordinates).
+  void object_local_bounds(int object, glm::vec3& lo, glm::vec3& hi) const;
+  /// World-space axis-aligned bounds of scene().objects[object] (scene units).
+  void object_world_bounds(int object, glm::vec3& lo, glm::vec3& hi) const;
 
-/// (Re)creates and fills the objects and lights buffers of shaders/lib/scene.glsl for `scene`
-/// (meshes read their layer and box from `assets`). Returns the scene's extent: the diagonal of
-/// the bounds of all objects and the camera (scene units, at least 1e-3).
-float upload_scene_buffers(const Scene& scene, const GpuAssets& assets, GLuint& objects_buffer,
-                           GLuint& lights_buffer);
+ private:
+  Scene scene_;
+  GpuAssets assets_;
+  GlBuffer objects_;
+  GlBuffer lights_;
+  GlTexture environment_;
+  GpuMesh proxy_;
+  GlVertexArray empty_;
+  float extent_ = 1.0f;
+};
 
-/// Loads the scene's environment images and uploads them as the RGBA32F 2D array texture of
+/// Sets the camera uniforms of shaders/lib/camera.glsl for `program` (in use): the ray through
+/// pixel p + jitter of a width x height picture, as gfield::camera_ray.
+void set_camera_uniforms(const ShaderProgram& program, const Camera& camera, int width, int height,
+                         glm::vec2 jitter);
+
+/// The perspective view-projection of `camera` for a width x height target, the sample offset
+/// `jitter` (pixels) applied, with near = 1e-4 far and far = 4 * extent + the distance to the
+/// target: the frustum every method rasterises with.
+struct CameraFrustum {
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};  ///< jitter included
+  float near_plane = 0.0f;
+  float far_plane = 0.0f;
+};
+CameraFrustum camera_frustum(const Camera& camera, int width, int height, float extent,
+                             glm::vec2 jitter);
+
+/// Loads the environment's images and uploads them as the RGBA32F 2D array texture of
 /// shaders/lib/scene_environment.glsl (equirect: layer 0; cube: the 6 faces in layers 0-5;
 /// analytic environments: one 1 x 1 layer). False with "FILE: problem" when an image fails.
-bool upload_environment_texture(const EnvironmentDesc& desc, GLuint& texture, std::string& error);
+bool upload_environment_texture(const EnvironmentDesc& desc, GlTexture& texture,
+                                std::string& error);
 
 }  // namespace gfield

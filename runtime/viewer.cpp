@@ -1,9 +1,9 @@
 #include "runtime/viewer.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -12,11 +12,11 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include "gfield/gpu_contract.hpp"
 #include "gfield/optics.hpp"
+#include "gfield/stopwatch.hpp"
 #include "runtime/gl_context.hpp"
-#include "runtime/gpu_scene.hpp"
-#include "runtime/methods/glass_view.hpp"
-#include "runtime/methods/image_space_view.hpp"
+#include "runtime/method_panel.hpp"
 
 namespace gfield {
 
@@ -27,9 +27,10 @@ const char* viewer_shortcuts() {
          "  left click         select the object under the cursor (click empty space: none)\n"
          "  ctrl + left drag   move the selected object in the view plane\n"
          "  page up / down     move the selected object towards / away from the camera\n"
-         "  1 / 2 / 3          lookup mode nearest / linear / refined\n"
-         "  + / -              recursion depth up / down\n"
-         "  f                  self-reflection on / off\n"
+         "  1 / 2 / 3          lookup mode nearest / linear / refined (methods with --mode)\n"
+         "  + / -              recursion depth up / down (methods with --depth)\n"
+         "  f                  self-reflection on / off (methods with --no-self-reflection)\n"
+         "  m                  next method\n"
          "  r                  reload the shaders now (they also reload when their files change)\n"
          "  p                  screenshot: gfield-view-N.png in the current folder\n"
          "  c                  camera back to the scene's\n"
@@ -39,9 +40,10 @@ const char* viewer_shortcuts() {
 
 namespace {
 
+constexpr int kPanelWidth = 380;  ///< screen coordinates, docked right of the picture
+
 struct ViewerState {
-  Renderer* renderer = nullptr;
-  RenderSettings settings;
+  ViewSession* session = nullptr;
   Camera camera;
   Camera initial_camera;
   int selected = -1;
@@ -55,25 +57,25 @@ struct ViewerState {
   bool drag_moves_object = false;
   std::string shader_error;
   std::string message;
-  ImageSpaceView image_space;
-  GlassView glass;
+  char reference_path[512] = "";
+  int screenshots = 0;
 };
 
-/// World ray through window coordinates (x right, y down, in framebuffer pixels).
-void pixel_ray(const Camera& camera, int width, int height, double x, double y, glm::vec3& origin,
-               glm::vec3& direction) {
-  const CameraRay ray = camera_ray(camera, width, height, glm::dvec2(x, y));
-  origin = glm::vec3(ray.origin);
-  direction = glm::vec3(ray.direction);
+/// The current method's option called `name`, if it has one.
+std::optional<MethodOption> option_named(ViewSession& session, const std::string& name) {
+  for (const MethodOption& o : session.method(session.current()).options())
+    if (o.name == name)
+      return o;
+  return std::nullopt;
 }
 
 /// The object whose world bounds the ray enters first (a cheap pick), or -1.
-int pick(const Renderer& renderer, glm::vec3 origin, glm::vec3 direction) {
+int pick(const GpuScene& scene, glm::vec3 origin, glm::vec3 direction) {
   int best = -1;
   float best_t = 3.0e38f;
-  for (int k = 0; k < int(renderer.scene().objects.size()); ++k) {
+  for (int k = 0; k < int(scene.scene().objects.size()); ++k) {
     glm::vec3 lo, hi;
-    object_world_bounds(renderer.scene(), renderer.assets(), k, lo, hi);
+    scene.object_world_bounds(k, lo, hi);
     float t0 = 0.0f, t1 = 3.0e38f;
     bool hit = true;
     for (int a = 0; a < 3 && hit; ++a) {
@@ -117,35 +119,36 @@ glm::vec3 screen_offset(const Camera& camera, int height, glm::vec3 anchor, floa
   return (dx * right - dy * up) * per_pixel;
 }
 
+/// Keys 1-3, +/- and f set the current method's options "mode", "depth", "no-self-reflection".
+void method_key(ViewerState& s, int key) {
+  if (key >= GLFW_KEY_1 && key <= GLFW_KEY_3) {
+    if (auto o = option_named(*s.session, "mode"))
+      o->set_choice(key - GLFW_KEY_1);
+  } else if (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD || key == GLFW_KEY_MINUS ||
+             key == GLFW_KEY_KP_SUBTRACT) {
+    const int step = key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD ? 1 : -1;
+    if (auto o = option_named(*s.session, "depth"))
+      *o->int_value = std::clamp(*o->int_value + step, int(o->min), int(o->max));
+  } else if (key == GLFW_KEY_F) {
+    if (auto o = option_named(*s.session, "no-self-reflection"))
+      *o->flag_value = !*o->flag_value;
+  } else if (key == GLFW_KEY_M) {
+    ViewSession& session = *s.session;
+    for (int step = 1; step < session.method_count(); ++step)
+      if (session.select((session.current() + step) % session.method_count(), s.message))
+        break;
+  }
+}
+
 void key_callback(GLFWwindow* window, int key, int scancode, int action, int mods) {
   ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
   if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard)
     return;
   auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(window));
-  Scene& scene = s->renderer->scene();
+  Scene& scene = s->session->scene().scene();
   switch (key) {
     case GLFW_KEY_ESCAPE:
       glfwSetWindowShouldClose(window, GLFW_TRUE);
-      break;
-    case GLFW_KEY_1:
-      s->settings.mode = LookupMode::kNearest;
-      break;
-    case GLFW_KEY_2:
-      s->settings.mode = LookupMode::kLinear;
-      break;
-    case GLFW_KEY_3:
-      s->settings.mode = LookupMode::kRefined;
-      break;
-    case GLFW_KEY_EQUAL:
-    case GLFW_KEY_KP_ADD:
-      s->settings.max_depth = std::min(s->settings.max_depth + 1, 64);
-      break;
-    case GLFW_KEY_MINUS:
-    case GLFW_KEY_KP_SUBTRACT:
-      s->settings.max_depth = std::max(s->settings.max_depth - 1, 0);
-      break;
-    case GLFW_KEY_F:
-      s->settings.self_reflection = !s->settings.self_reflection;
       break;
     case GLFW_KEY_R:
       s->reload = true;
@@ -164,38 +167,170 @@ void key_callback(GLFWwindow* window, int key, int scancode, int action, int mod
       if (s->selected >= 0) {
         glm::vec3& t = scene.objects[size_t(s->selected)].transform.translate;
         const glm::vec3 towards = glm::normalize(s->camera.position - t);
-        t += (key == GLFW_KEY_PAGE_UP ? 0.05f : -0.05f) * s->renderer->scene_extent() * towards;
-        s->renderer->update_scene();
+        t += (key == GLFW_KEY_PAGE_UP ? 0.05f : -0.05f) * s->session->scene().extent() * towards;
+        s->session->scene_changed();
       }
       break;
     default:
+      method_key(*s, key);
       break;
   }
 }
 
-void panel(ViewerState& s, const GlContext& context, const FrameStats& stats, double frame_ms) {
-  Scene& scene = s.renderer->scene();
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("gfield-view");
-  ImGui::Text("%s", context.renderer().c_str());
-  ImGui::Text("frame %.1f ms (%.1f FPS)", frame_ms, 1000.0 / std::max(frame_ms, 1e-3));
-  ImGui::Text("traced pixels %lld, secondary rays %lld", stats.traced_pixels, stats.secondary_rays);
-  ImGui::Separator();
-  const char* methods[] = {"geometry field (Li et al. 2006)"};
-  int method = 0;
-  ImGui::Combo("method", &method, methods, 1);
-  image_space_panel(s.image_space);
-  glass_panel(s.glass);
-  int mode = int(s.settings.mode);
-  const char* modes[] = {"nearest", "linear", "refined"};
-  if (ImGui::Combo("lookup", &mode, modes, 3))
-    s.settings.mode = LookupMode(mode);
-  ImGui::SliderInt("depth", &s.settings.max_depth, 0, 16);
-  ImGui::Checkbox("self-reflection", &s.settings.self_reflection);
-  ImGui::SliderFloat("min weight", &s.settings.min_weight, 0.0f, 0.1f, "%.3f");
-  ImGui::SliderInt("max rays / pixel", &s.settings.max_rays, 1, 64);
-  ImGui::Separator();
+/// A mouse drag in progress: orbit, pan or move the selected object.
+void drag(ViewerState& s, float dx, float dy, int height, bool shift) {
+  if (s.drag_moves_object) {
+    glm::vec3& t = s.session->scene().scene().objects[size_t(s.selected)].transform.translate;
+    t += screen_offset(s.camera, height, t, dx, dy);
+    s.session->scene_changed();
+  } else if (s.drag_button == 1 || shift) {
+    const glm::vec3 offset = screen_offset(s.camera, height, s.camera.target, -dx, -dy);
+    s.camera.position += offset;
+    s.camera.target += offset;
+  } else {
+    orbit(s.camera, dx, dy);
+  }
+}
+
+/// Mouse input over the picture (picture_width x height screen coordinates, `scale` framebuffer
+/// pixels per screen coordinate).
+void handle_mouse(GLFWwindow* window, ViewerState& s, int picture_width, int height, float scale) {
+  const ImGuiIO& io = ImGui::GetIO();
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window, &x, &y);
+  const float dx = float(x - s.last_x), dy = float(y - s.last_y);
+  s.last_x = x;
+  s.last_y = y;
+  if (io.WantCaptureMouse)
+    return;
+  const bool left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  const bool right = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+  const bool ctrl = glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
+                    glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+  const bool shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
+  if ((left || right) && !s.dragging) {
+    s.dragging = true;
+    s.drag_button = left ? 0 : 1;
+    s.press_x = x;
+    s.press_y = y;
+    s.drag_moves_object = left && ctrl && s.selected >= 0;
+  } else if (s.dragging && (left || right)) {
+    drag(s, dx, dy, height, shift);
+  } else if (s.dragging) {
+    // Released: a click without movement selects.
+    if (s.drag_button == 0 && std::abs(x - s.press_x) + std::abs(y - s.press_y) < 3.0) {
+      const CameraRay ray = camera_ray(s.camera, int(float(picture_width) * scale),
+                                       int(float(height) * scale), {x * scale, y * scale});
+      s.selected = pick(s.session->scene(), glm::vec3(ray.origin), glm::vec3(ray.direction));
+    }
+    s.dragging = false;
+  }
+  if (io.MouseWheel != 0.0f) {
+    const glm::vec3 offset = s.camera.position - s.camera.target;
+    s.camera.position = s.camera.target + offset * std::pow(0.9f, io.MouseWheel);
+  }
+}
+
+/// Shaders: reloaded on request or when a file changed (checked twice a second).
+void check_shaders(ViewerState& s, Stopwatch& since_check) {
+  if (!s.reload && since_check.milliseconds() < 500.0)
+    return;
+  std::string error;
+  const bool rebuilt = s.session->reload_shaders_if_changed(error);
+  if (!error.empty()) {
+    s.shader_error = error;
+    std::fprintf(stderr, "gfield-view: %s\n", error.c_str());
+  } else if (rebuilt) {
+    s.shader_error.clear();
+    s.message = "shaders reloaded";
+  }
+  s.reload = false;
+  since_check.restart();
+}
+
+void methods_section(ViewerState& s) {
+  ViewSession& session = *s.session;
+  std::vector<std::string> titles;
+  for (int k = 0; k < session.method_count(); ++k)
+    titles.push_back(session.method(k).info().title);
+  const auto combo = [&](const char* label, int current, bool with_off) {
+    int choice = current;
+    const char* preview = current >= 0 ? titles[size_t(current)].c_str() : "(off)";
+    if (ImGui::BeginCombo(label, preview)) {
+      if (with_off && ImGui::Selectable("(off)", current < 0))
+        choice = -1;
+      for (int k = 0; k < int(titles.size()); ++k)
+        if (ImGui::Selectable(titles[size_t(k)].c_str(), k == current))
+          choice = k;
+      ImGui::EndCombo();
+    }
+    return choice;
+  };
+  const int method = combo("method", session.current(), false);
+  if (method != session.current() && !session.select(method, s.message))
+    s.message = session.method(method).info().name + ": " + s.message;
+  const int compare = combo("right half", session.compare(), true);
+  if (compare != session.compare() && !session.select_compare(compare, s.message))
+    s.message = session.method(compare).info().name + ": " + s.message;
+  method_panel(session.method(session.current()));
+  if (session.compare() >= 0 && session.compare() != session.current() &&
+      ImGui::CollapsingHeader("right half's options"))
+    method_panel(session.method(session.compare()));
+}
+
+void difference_section(ViewerState& s) {
+  ViewSession& session = *s.session;
+  ImGui::InputText("reference", s.reference_path, sizeof(s.reference_path));
+  ImGui::SameLine();
+  if (ImGui::Button("load")) {
+    Image reference;
+    std::string error;
+    if (load_image(s.reference_path, reference, error)) {
+      session.set_reference(std::move(reference));
+      s.message = std::string("reference ") + s.reference_path;
+    } else {
+      s.message = error;
+    }
+  }
+  ImGui::Checkbox("difference to reference", &session.difference);
+  ImGui::SameLine();
+  ImGui::SliderFloat("white at", &session.difference_scale, 0.01f, 1.0f, "%.2f");
+  if (session.difference)
+    ImGui::TextWrapped("%s", session.difference_message().c_str());
+}
+
+/// The selected object's transform and material; true when one changed.
+bool object_editor(SceneObject& o) {
+  bool changed = ImGui::DragFloat3("translate", &o.transform.translate.x, 0.01f);
+  changed |= ImGui::DragFloat3("rotate", &o.transform.rotate_degrees.x, 0.5f);
+  int type = int(o.material.type);
+  const char* types[] = {"diffuse", "mirror", "dielectric"};
+  if (ImGui::Combo("material", &type, types, shape_is_closed(o.shape.type) ? 3 : 2)) {
+    o.material.type = MaterialType(type);
+    changed = true;
+  }
+  if (o.material.type != MaterialType::kDielectric)
+    return changed | ImGui::ColorEdit3(o.material.type == MaterialType::kMirror ? "tint" : "colour",
+                                       &o.material.color.x);
+  changed |= ImGui::SliderFloat("index", &o.material.ior, 1.0f, 2.5f);
+  if (ImGui::BeginCombo("preset", o.material.ior_preset.c_str())) {
+    for (const IorPreset& preset : ior_presets()) {
+      const std::string label =
+          std::string(preset.name) + " (" + std::to_string(preset.index).substr(0, 5) + ")";
+      if (ImGui::Selectable(label.c_str())) {
+        o.material.ior = preset.index;
+        o.material.ior_preset = std::string(preset.name);
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed | ImGui::ColorEdit3("absorption", &o.material.absorption.x,
+                                     ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+}
+
+void objects_section(ViewerState& s) {
+  Scene& scene = s.session->scene().scene();
   std::vector<std::string> names;
   for (size_t k = 0; k < scene.objects.size(); ++k)
     names.push_back(scene.objects[k].name.empty() ? "object " + std::to_string(k)
@@ -208,41 +343,26 @@ void panel(ViewerState& s, const GlContext& context, const FrameStats& stats, do
         s.selected = int(k);
     ImGui::EndCombo();
   }
-  if (s.selected >= 0) {
-    SceneObject& o = scene.objects[size_t(s.selected)];
-    bool changed = false;
-    changed |= ImGui::DragFloat3("translate", &o.transform.translate.x, 0.01f);
-    changed |= ImGui::DragFloat3("rotate", &o.transform.rotate_degrees.x, 0.5f);
-    int type = int(o.material.type);
-    const char* types[] = {"diffuse", "mirror", "dielectric"};
-    const int type_count = shape_is_closed(o.shape.type) ? 3 : 2;
-    if (ImGui::Combo("material", &type, types, type_count)) {
-      o.material.type = MaterialType(type);
-      changed = true;
-    }
-    if (o.material.type != MaterialType::kDielectric)
-      changed |= ImGui::ColorEdit3(o.material.type == MaterialType::kMirror ? "tint" : "colour",
-                                   &o.material.color.x);
-    if (o.material.type == MaterialType::kDielectric) {
-      changed |= ImGui::SliderFloat("index", &o.material.ior, 1.0f, 2.5f);
-      if (ImGui::BeginCombo("preset", o.material.ior_preset.c_str())) {
-        for (const IorPreset& preset : ior_presets()) {
-          const std::string label =
-              std::string(preset.name) + " (" + std::to_string(preset.index).substr(0, 5) + ")";
-          if (ImGui::Selectable(label.c_str())) {
-            o.material.ior = preset.index;
-            o.material.ior_preset = std::string(preset.name);
-            changed = true;
-          }
-        }
-        ImGui::EndCombo();
-      }
-      changed |= ImGui::ColorEdit3("absorption", &o.material.absorption.x,
-                                   ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-    }
-    if (changed)
-      s.renderer->update_scene();
-  }
+  if (s.selected >= 0 && object_editor(scene.objects[size_t(s.selected)]))
+    s.session->scene_changed();
+}
+
+void panel(ViewerState& s, const GlContext& context, const FrameStats& stats, double frame_ms,
+           int window_width, int window_height) {
+  ImGui::SetNextWindowPos(ImVec2(float(window_width - kPanelWidth), 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), float(window_height)), ImGuiCond_Always);
+  ImGui::Begin("gfield-view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+  ImGui::Text("%s", context.renderer().c_str());
+  ImGui::Text("frame %.1f ms (%.1f FPS)", frame_ms, 1000.0 / std::max(frame_ms, 1e-3));
+  for (const auto& [name, value] : stats.counts)
+    ImGui::Text("%s %.0f", name.c_str(), value);
+  ImGui::Text("texture memory %.1f MB", double(s.session->scene().assets().texture_bytes()) / 1e6);
+  ImGui::Separator();
+  methods_section(s);
+  ImGui::Separator();
+  objects_section(s);
+  ImGui::Separator();
+  difference_section(s);
   ImGui::Separator();
   if (ImGui::Button("screenshot (p)"))
     s.screenshot = true;
@@ -258,168 +378,121 @@ void panel(ViewerState& s, const GlContext& context, const FrameStats& stats, do
   ImGui::End();
 }
 
+void save_screenshot(ViewerState& s, const Framebuffer& frame) {
+  const RgbaImage pixels = frame.read();
+  Image image(pixels.width, pixels.height);
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    image.pixels[i] = glm::vec3(pixels.pixels[i]);
+  const std::string name = "gfield-view-" + std::to_string(s.screenshots++) + ".png";
+  std::string error;
+  s.message = save_image(name, image, error) ? "saved " + name : error;
+  s.screenshot = false;
+}
+
+/// Draws the session's frame into the left `picture_width` framebuffer pixels of the window.
+void present(ViewSession& session, const ShaderProgram& program, const Framebuffer& frame) {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, frame.width(), frame.height());
+  glUseProgram(program.id());
+  glBindTextureUnit(gpu::UNIT_FRAME, frame.color_texture());
+  session.scene().draw_fullscreen();
+}
+
+/// One iteration of the window's loop; false when the window has no area.
+bool viewer_frame(GLFWwindow* window, ViewerState& s, const GlContext& context,
+                  const ShaderProgram& present_program, Framebuffer& frame, FrameStats& shown,
+                  double& frame_ms, int frame_number) {
+  int fb_width = 0, fb_height = 0, win_width = 0, win_height = 0;
+  glfwGetFramebufferSize(window, &fb_width, &fb_height);
+  glfwGetWindowSize(window, &win_width, &win_height);
+  const float scale = float(fb_width) / float(std::max(win_width, 1));
+  const int picture_width = std::max(1, win_width - (s.show_panel ? kPanelWidth : 0));
+  if (fb_width <= 0 || fb_height <= 0)
+    return false;
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  handle_mouse(window, s, picture_width, win_height, scale);
+  const Stopwatch clock;
+  frame.resize(int(float(picture_width) * scale), fb_height);
+  // Counting reads buffers back: every 30 frames.
+  FrameStats stats;
+  s.session->draw(s.camera, frame, frame_number % 30 == 0 ? &stats : nullptr);
+  if (frame_number % 30 == 0)
+    shown = stats;
+  present(*s.session, present_program, frame);
+  if (s.screenshot)
+    save_screenshot(s, frame);
+  if (s.show_panel)
+    panel(s, context, shown, frame_ms, win_width, win_height);
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(window);
+  glFinish();
+  frame_ms = 0.9 * frame_ms + 0.1 * clock.milliseconds();
+  return true;
+}
+
+int view(ViewSession& session, const Scene& scene, const std::filesystem::path& shader_dir,
+         int method, const GlContext& context);
+
 }  // namespace
 
-int run_viewer(const Scene& scene, const std::filesystem::path& shader_dir,
-               const RenderSettings& settings, int width, int height) {
+int run_viewer(ViewSession& session, const Scene& scene, const std::filesystem::path& shader_dir,
+               int method, int width, int height) {
   std::string error;
-  // Fit the window on an ordinary screen, keeping the scene's aspect ratio.
+  // Fit the picture on an ordinary screen, keeping the scene's aspect ratio; the panel beside.
   const float shrink = std::min(1.0f, std::min(1600.0f / float(width), 1000.0f / float(height)));
-  auto context = GlContext::create_window(int(float(width) * shrink), int(float(height) * shrink),
-                                          "gfield-view " + scene.filename, error);
+  auto context =
+      GlContext::create_window(int(float(width) * shrink) + kPanelWidth,
+                               int(float(height) * shrink), "gfield-view " + scene.filename, error);
   if (!context) {
     std::fprintf(stderr, "gfield-view: %s\n", error.c_str());
     return kExitNoOpenGL;
   }
-  Renderer renderer;
-  if (!renderer.load(scene, shader_dir, error)) {
-    std::fprintf(stderr, "gfield-view: %s\n", error.c_str());
-    return 2;
-  }
-  ShaderProgram present;
-  if (!present.build(shader_dir, {"fullscreen.vert", "present.frag"}, "", error)) {
-    std::fprintf(stderr, "gfield-view: %s\n", error.c_str());
-    return 2;
-  }
-  GLFWwindow* window = context->window();
-  ViewerState s;
-  s.renderer = &renderer;
-  s.settings = settings;
-  s.camera = s.initial_camera = scene.camera;
-  s.image_space.shader_dir = shader_dir;
-  s.glass.shader_dir = shader_dir;
-  glfwSetWindowUserPointer(window, &s);
+  const int code = view(session, scene, shader_dir, method, *context);
+  session.release();  // while the context is current
+  return code;
+}
 
+namespace {
+
+int view(ViewSession& session, const Scene& scene, const std::filesystem::path& shader_dir,
+         int method, const GlContext& context) {
+  std::string error;
+  ShaderProgram present_program;
+  if (!session.load(scene, shader_dir, error) || !session.select(method, error) ||
+      !present_program.build(shader_dir, {"fullscreen.vert", "present.frag"}, "", error)) {
+    std::fprintf(stderr, "gfield-view: %s\n", error.c_str());
+    return 2;
+  }
+  GLFWwindow* window = context.window();
+  ViewerState s;
+  s.session = &session;
+  s.camera = s.initial_camera = scene.camera;
+  glfwSetWindowUserPointer(window, &s);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450");
   glfwSetKeyCallback(window, key_callback);
-
   Framebuffer frame;
-  GLuint empty_vertex_array = 0;
-  glCreateVertexArrays(1, &empty_vertex_array);
   FrameStats shown;
   double frame_ms = 0.0;
-  int frame_number = 0, screenshot_number = 0;
-  auto last_reload_check = std::chrono::steady_clock::now();
-  while (!glfwWindowShouldClose(window)) {
+  Stopwatch since_check;
+  for (int frame_number = 0; !glfwWindowShouldClose(window);) {
     glfwPollEvents();
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    int fb_width = 0, fb_height = 0, win_width = 0, win_height = 0;
-    glfwGetFramebufferSize(window, &fb_width, &fb_height);
-    glfwGetWindowSize(window, &win_width, &win_height);
-    if (fb_width <= 0 || fb_height <= 0)
-      continue;
-    const float scale = float(fb_width) / float(std::max(win_width, 1));
-
-    // Mouse: orbit, pan, zoom, select, move.
-    const ImGuiIO& io = ImGui::GetIO();
-    double x = 0.0, y = 0.0;
-    glfwGetCursorPos(window, &x, &y);
-    const float dx = float(x - s.last_x), dy = float(y - s.last_y);
-    if (!io.WantCaptureMouse) {
-      const bool left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-      const bool right = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-      const bool ctrl = glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
-                        glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
-      const bool shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
-      if ((left || right) && !s.dragging) {
-        s.dragging = true;
-        s.drag_button = left ? 0 : 1;
-        s.press_x = x;
-        s.press_y = y;
-        s.drag_moves_object = left && ctrl && s.selected >= 0;
-      } else if (s.dragging && (left || right)) {
-        if (s.drag_moves_object) {
-          glm::vec3& t = renderer.scene().objects[size_t(s.selected)].transform.translate;
-          t += screen_offset(s.camera, win_height, t, dx, dy);
-          renderer.update_scene();
-        } else if (s.drag_button == 1 || shift) {
-          const glm::vec3 offset = screen_offset(s.camera, win_height, s.camera.target, -dx, -dy);
-          s.camera.position += offset;
-          s.camera.target += offset;
-        } else {
-          orbit(s.camera, dx, dy);
-        }
-      } else if (s.dragging) {
-        // Released: a click without movement selects.
-        if (s.drag_button == 0 && std::abs(x - s.press_x) + std::abs(y - s.press_y) < 3.0) {
-          glm::vec3 origin, direction;
-          pixel_ray(s.camera, fb_width, fb_height, x * scale, y * scale, origin, direction);
-          s.selected = pick(renderer, origin, direction);
-        }
-        s.dragging = false;
-      }
-      if (io.MouseWheel != 0.0f) {
-        const glm::vec3 offset = s.camera.position - s.camera.target;
-        s.camera.position = s.camera.target + offset * std::pow(0.9f, io.MouseWheel);
-      }
-    }
-    s.last_x = x;
-    s.last_y = y;
-
-    // Shaders: reload on request or when a file changed (checked twice a second).
-    const auto now = std::chrono::steady_clock::now();
-    if (s.reload || now - last_reload_check > std::chrono::milliseconds(500)) {
-      std::string reload_error;
-      const bool rebuilt = renderer.reload_shaders_if_changed(reload_error);
-      if (!reload_error.empty()) {
-        s.shader_error = reload_error;
-        std::fprintf(stderr, "gfield-view: %s\n", reload_error.c_str());
-      } else if (rebuilt) {
-        s.shader_error.clear();
-        s.message = "shaders reloaded";
-      }
-      s.reload = false;
-      last_reload_check = now;
-    }
-
-    frame.resize(fb_width, fb_height);
-    const auto start = std::chrono::steady_clock::now();
-    FrameStats stats;
-    // Counting traced pixels reads the hit buffer back: every 30 frames.
-    const bool count = frame_number % 30 == 0;
-    if (!glass_draw(s.glass, renderer.scene(), s.camera, frame))
-      image_space_draw(s.image_space, renderer, s.camera, s.settings, frame,
-                       count ? &stats : nullptr);
-    if (count)
-      shown = stats;
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fb_width, fb_height);
-    glUseProgram(present.id());
-    glBindTextureUnit(0, frame.color_texture());
-    glBindVertexArray(empty_vertex_array);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    if (s.screenshot) {
-      const RgbaImage pixels = frame.read();
-      Image image(pixels.width, pixels.height);
-      for (size_t i = 0; i < image.pixels.size(); ++i)
-        image.pixels[i] = glm::vec3(pixels.pixels[i]);
-      const std::string name = "gfield-view-" + std::to_string(screenshot_number++) + ".png";
-      std::string save_error;
-      s.message = save_image(name, image, save_error) ? "saved " + name : save_error;
-      s.screenshot = false;
-    }
-    if (s.show_panel)
-      panel(s, *context, shown, frame_ms);
-    ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    glfwSwapBuffers(window);
-    glFinish();
-    frame_ms = 0.9 * frame_ms + 0.1 * std::chrono::duration<double, std::milli>(
-                                          std::chrono::steady_clock::now() - start)
-                                          .count();
-    ++frame_number;
+    check_shaders(s, since_check);
+    if (viewer_frame(window, s, context, present_program, frame, shown, frame_ms, frame_number))
+      ++frame_number;
   }
-  glDeleteVertexArrays(1, &empty_vertex_array);
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   return 0;
 }
+
+}  // namespace
 
 }  // namespace gfield

@@ -10,7 +10,7 @@
 #include "lib/image_space.glsl"
 #include "lib/image_space_surface.glsl"
 
-layout(binding = 10) uniform samplerCube u_cube;
+layout(binding = UNIT_CUBE) uniform samplerCube u_cube;
 
 uniform bool u_reflect_only;  // envmap: every object reflects
 uniform bool u_per_vertex;    // the article's interpolated vector instead of per-fragment Snell
@@ -27,7 +27,7 @@ vec3 cube_radiance(vec3 d) {
 void main() {
   IsSurface s;
   if (!is_resolve_surface(s)) discard;
-  vec3 v = is_camera_direction();
+  vec3 v = camera_direction();
   vec3 n = dot(v, s.normal) > 0.0f ? -s.normal : s.normal;
   int k = u_object;
   vec3 reflected = cube_radiance(normalize(reflect(v, n)));

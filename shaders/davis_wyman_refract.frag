@@ -11,9 +11,9 @@
 #include "lib/image_space.glsl"
 #include "lib/image_space_surface.glsl"
 
-layout(binding = 11) uniform sampler2D u_back;    // back faces: normal, eye depth
-layout(binding = 12) uniform sampler2D u_front;   // front faces: normal, eye depth
-layout(binding = 13) uniform sampler2D u_nearby;  // nearby geometry: colour, eye depth
+layout(binding = UNIT_BACK) uniform sampler2D u_back;    // back faces: normal, eye depth
+layout(binding = UNIT_FRONT) uniform sampler2D u_front;   // front faces: normal, eye depth
+layout(binding = UNIT_NEARBY) uniform sampler2D u_nearby;  // nearby geometry: colour, eye depth
 
 uniform int u_bounces;            // internal intersections, 0..4 (more are allowed)
 uniform int u_iterations_first;   // binary-search steps on the first transmitted ray (8)
@@ -40,7 +40,7 @@ void main() {
   IsSurface s;
   if (!is_resolve_surface(s)) discard;
   float ior = objects[u_object].color.w;
-  vec3 v = is_camera_direction();
+  vec3 v = camera_direction();
   vec3 n1 = dot(v, s.normal) > 0.0f ? -s.normal : s.normal;
   vec3 o = s.position;
   vec3 d = refract(v, n1, 1.0f / ior);

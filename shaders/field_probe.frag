@@ -3,8 +3,8 @@
 // t_max, mesh coordinates), for comparing the GPU lookup with the CPU one. Output: (hit, t, u, v).
 #include "lib/gpu_assets.glsl"
 
-layout(binding = 3) uniform sampler2D u_ray_origins;
-layout(binding = 4) uniform sampler2D u_ray_directions;
+layout(binding = UNIT_PROBE_ORIGINS) uniform sampler2D u_ray_origins;
+layout(binding = UNIT_PROBE_DIRECTIONS) uniform sampler2D u_ray_directions;
 uniform int u_layer;
 uniform int u_samples_per_side;
 uniform int u_image_size;

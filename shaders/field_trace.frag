@@ -12,17 +12,11 @@
 #include "lib/scene.glsl"
 #include "lib/optics.glsl"
 
-layout(binding = 6) uniform sampler2D u_g_position;   // xyz world, w object (-1: none)
-layout(binding = 7) uniform sampler2D u_g_normal;     // xyz shading normal, w u
-layout(binding = 8) uniform sampler2D u_g_geometric;  // xyz geometric normal, w v
+#include "lib/camera.glsl"
 
-uniform vec3 u_camera_position;
-uniform vec3 u_camera_forward;
-uniform vec3 u_camera_right;
-uniform vec3 u_camera_up;
-uniform vec2 u_tan_half;      // tan(fov/2) * aspect, tan(fov/2)
-uniform vec2 u_image_size;
-uniform vec2 u_jitter;        // sample offset from the pixel centre, pixels (x right, y down)
+layout(binding = UNIT_GBUFFER_POSITION) uniform sampler2D u_g_position;    // xyz world, w object
+layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D u_g_normal;        // xyz shading normal, w u
+layout(binding = UNIT_GBUFFER_GEOMETRIC) uniform sampler2D u_g_geometric;  // xyz geometric, w v
 uniform int u_max_depth;      // reflections/refractions after the camera ray (as gfield render)
 uniform float u_min_weight;   // branches below this path weight are not traced
 uniform int u_max_rays;       // secondary rays per pixel at most
@@ -56,14 +50,6 @@ void push_ray(vec3 origin, vec3 direction, vec3 weight, int depth, int inside, i
   r.from = from;
   stack_rays[stack_count] = r;
   stack_count++;
-}
-
-// The pixel's camera ray, as gfield::camera_ray.
-vec3 camera_direction() {
-  vec2 pixel = vec2(gl_FragCoord.x, u_image_size.y - gl_FragCoord.y) + u_jitter;
-  float sx = (2.0f * pixel.x / u_image_size.x - 1.0f) * u_tan_half.x;
-  float sy = (1.0f - 2.0f * pixel.y / u_image_size.y) * u_tan_half.y;
-  return normalize(u_camera_forward + sx * u_camera_right + sy * u_camera_up);
 }
 
 // What a ray sees at a hit: diffuse shading is added to `radiance`; mirrors and dielectrics

@@ -11,15 +11,18 @@
 #include "lib/optics.glsl"
 #include "lib/scene_environment.glsl"
 #include "lib/glass_shading.glsl"
+#include "lib/camera.glsl"
 
 #define GLASS_LAYERS 4
 #define GLASS_CLASSES 8
 
-layout(binding = 0) uniform sampler2D u_layer0;  // peeled layers: x code (-1: none), y depth
-layout(binding = 1) uniform sampler2D u_layer1;
-layout(binding = 2) uniform sampler2D u_layer2;
-layout(binding = 3) uniform sampler2D u_layer3;
-layout(binding = 4) uniform sampler2DArray u_class_images;  // rgb radiance, a depth (2: none)
+// Peeled layers: x code (-1: none), y depth.
+layout(binding = UNIT_PEEL_LAYERS + 0) uniform sampler2D u_layer0;
+layout(binding = UNIT_PEEL_LAYERS + 1) uniform sampler2D u_layer1;
+layout(binding = UNIT_PEEL_LAYERS + 2) uniform sampler2D u_layer2;
+layout(binding = UNIT_PEEL_LAYERS + 3) uniform sampler2D u_layer3;
+// rgb radiance, a depth (2: none)
+layout(binding = UNIT_CLASS_IMAGES) uniform sampler2DArray u_class_images;
 
 uniform int u_layer_of_class[GLASS_CLASSES];  // class -> layer of u_class_images (-1: not drawn)
 uniform int u_glass_shape;        // SHAPE_SLAB or SHAPE_HOLLOW_CYLINDER
@@ -46,39 +49,8 @@ float linear_depth(float window_z) {
   return 2.0f * u_near * u_far / (u_far + u_near - z * (u_far - u_near));
 }
 
-uniform vec3 u_camera_position;
-uniform vec3 u_camera_forward;
-uniform vec3 u_camera_right;
-uniform vec3 u_camera_up;
-uniform vec2 u_tan_half;
-uniform vec2 u_image_size;
-uniform vec2 u_jitter;
-
-// Opaque analytic shapes, for the reflected rays.
-struct GlassOpaque {
-  mat4 to_object;
-  mat4 to_world;
-  vec4 shape;     // radius, height, thickness
-  vec4 size;
-  vec4 color;
-  vec4 checker0;
-  vec4 checker1;
-  ivec4 kind;     // shape type, texture type
-};
-layout(std430, binding = 0) readonly buffer Opaque { GlassOpaque opaque[]; };
-uniform int u_opaque_count;
 
 layout(location = 0) out vec4 o_color;
-
-// The eye ray through this fragment's sample: the class images and the peeled layers are drawn
-// with the jittered projection of runtime/supersample.hpp, so a fragment at pixel p shows what
-// lies along the ray through p + u_jitter; the exact path must take the same ray.
-vec3 camera_direction() {
-  vec2 pixel = vec2(gl_FragCoord.x, u_image_size.y - gl_FragCoord.y) + u_jitter;
-  float sx = (2.0f * pixel.x / u_image_size.x - 1.0f) * u_tan_half.x;
-  float sy = (1.0f - 2.0f * pixel.y / u_image_size.y) * u_tan_half.y;
-  return normalize(u_camera_forward + sx * u_camera_right + sy * u_camera_up);
-}
 
 // The refraction class of a pattern of peeled surface codes (glass.cpp's glass_class), -1 for a
 // pattern the displacement does not model.
@@ -180,10 +152,11 @@ int nearest_opaque(vec3 o, vec3 d, float t_max, out ShapeHit hit) {
   hit.t = t_max;
   hit.normal = vec3(0.0f);
   hit.uv = vec2(0.0f);
-  for (int k = 0; k < u_opaque_count; k++) {
-    vec3 lo = (opaque[k].to_object * vec4(o, 1.0f)).xyz;
-    vec3 ld = (opaque[k].to_object * vec4(d, 0.0f)).xyz;
-    ShapeHit h = intersect_shape(opaque[k].kind.x, opaque[k].shape, opaque[k].size.xyz, lo, ld,
+  for (int k = 0; k < u_object_count; k++) {
+    if (objects[k].kind.x == SHAPE_MESH || objects[k].kind.y != MATERIAL_DIFFUSE) continue;
+    vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
+    vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
+    ShapeHit h = intersect_shape(objects[k].kind.x, objects[k].shape, objects[k].size.xyz, lo, ld,
                                  u_epsilon, hit.t);
     if (h.hit && h.t < hit.t) {
       hit = h;
@@ -196,9 +169,9 @@ int nearest_opaque(vec3 o, vec3 d, float t_max, out ShapeHit hit) {
 // Diffuse radiance of opaque shape k hit at t along o + t d.
 vec3 shade_opaque(int k, ShapeHit hit, vec3 o, vec3 d) {
   vec3 p = o + hit.t * d;
-  vec3 n = normalize(transpose(mat3(opaque[k].to_object)) * hit.normal);
-  vec3 albedo = texture_albedo(opaque[k].kind.y, opaque[k].color.rgb, opaque[k].checker0,
-                               opaque[k].checker1, hit.uv);
+  vec3 n = normalize(transpose(mat3(objects[k].to_object)) * hit.normal);
+  vec3 albedo = texture_albedo(objects[k].kind.z, objects[k].color.rgb, objects[k].checker0,
+                               objects[k].checker1, hit.uv);
   return glass_shade(albedo, p, n, n, d);
 }
 

@@ -4,8 +4,11 @@
 // surface faces away from the eye: the line leaves the glass there) and the window depth.
 layout(location = 0) flat in int v_surface;
 
-layout(binding = 0) uniform sampler2D u_previous;  // x: code (-1: none), y: depth
-layout(binding = 1) uniform sampler2DArray u_scene;  // layer 0: a = the scene's window depth
+#include "lib/contract.glsl"
+
+layout(binding = UNIT_PEEL_PREVIOUS) uniform sampler2D u_previous;  // x: code (-1: none), y: depth
+// Layer 0 of the class images: a = the scene's window depth.
+layout(binding = UNIT_CLASS_IMAGES) uniform sampler2DArray u_scene;
 uniform bool u_first;
 
 layout(location = 0) out vec4 o_layer;

@@ -8,11 +8,8 @@ layout(location = 2) in vec2 v_uv;
 layout(location = 3) in float v_valid;
 
 uniform vec3 u_eye;
-uniform bool u_smooth;        // interpolated normals (else the face's)
-uniform int u_texture;        // TEXTURE_*
-uniform vec3 u_color;
-uniform vec4 u_checker0;      // rgb, squares along u
-uniform vec4 u_checker1;      // rgb, squares along v
+uniform int u_object;     // the object drawn: its material in objects[]
+uniform bool u_smooth;    // interpolated normals (else the face's)
 
 layout(location = 0) out vec4 o_color;  // rgb radiance, a = window depth of the drawn point
 
@@ -22,6 +19,7 @@ void main() {
   vec3 g = normalize(cross(dFdx(v_world), dFdy(v_world)));
   vec3 n = u_smooth ? normalize(v_normal) : g;
   if (dot(g, n) < 0.0f) g = -g;
-  vec3 albedo = texture_albedo(u_texture, u_color, u_checker0, u_checker1, v_uv);
+  GpuObject o = objects[u_object];
+  vec3 albedo = texture_albedo(o.kind.z, o.color.rgb, o.checker0, o.checker1, v_uv);
   o_color = vec4(glass_shade(albedo, v_world, n, g, v_world - u_eye), gl_FragCoord.z);
 }

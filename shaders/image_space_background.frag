@@ -4,4 +4,4 @@
 
 layout(location = 0) out vec4 o_color;
 
-void main() { o_color = vec4(environment_radiance(is_camera_direction()), 1.0f); }
+void main() { o_color = vec4(environment_radiance(camera_direction()), 1.0f); }

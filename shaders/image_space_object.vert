@@ -8,7 +8,9 @@ layout(location = 0) in vec3 a_position;  // object space (analytic: the unit cu
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
 
-layout(binding = 9) uniform sampler2DArray u_thickness;  // r = d_n (mesh units), layer = asset
+#include "lib/contract.glsl"
+
+layout(binding = UNIT_THICKNESS) uniform sampler2DArray u_thickness;  // r = d_n (mesh units), layer = asset
 
 uniform mat4 u_to_world;
 uniform mat4 u_view_projection;

@@ -1,6 +1,8 @@
 #version 450
 // Shows the linear-radiance frame on an 8-bit display: clamp and sRGB encoding (as PNG output).
-layout(binding = 0) uniform sampler2D u_frame;
+#include "lib/contract.glsl"
+
+layout(binding = UNIT_FRAME) uniform sampler2D u_frame;
 layout(location = 0) out vec4 o_color;
 
 vec3 linear_to_srgb(vec3 v) {

@@ -9,8 +9,8 @@
 #include "lib/image_space.glsl"
 #include "lib/image_space_surface.glsl"
 
-layout(binding = 11) uniform sampler2D u_back;    // back faces: normal, eye depth
-layout(binding = 13) uniform sampler2D u_nearby;  // nearby geometry: colour, eye depth
+layout(binding = UNIT_BACK) uniform sampler2D u_back;    // back faces: normal, eye depth
+layout(binding = UNIT_NEARBY) uniform sampler2D u_nearby;  // nearby geometry: colour, eye depth
 
 uniform int u_background;       // BACKGROUND_DEPTH_MAP or BACKGROUND_ANALYTIC
 uniform int u_exit_iterations;  // binary-search steps in the nearby-geometry map
@@ -29,7 +29,7 @@ void main() {
   if (!is_resolve_surface(s)) discard;
   int k = u_object;
   float ior = objects[k].color.w;
-  vec3 v = is_camera_direction();
+  vec3 v = camera_direction();
   vec3 n1 = dot(v, s.normal) > 0.0f ? -s.normal : s.normal;
   vec3 t1 = refract(v, n1, 1.0f / ior);
   if (dot(t1, t1) == 0.0f) {

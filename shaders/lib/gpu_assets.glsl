@@ -3,9 +3,11 @@
 // with gs_select_asset(); the functions that shaders/lib/field_lookup.glsl expects then read
 // that asset's layer.
 
-layout(binding = 0) uniform sampler2DArray u_gi_positions;  // xyz = P (mesh coordinates), w = A
-layout(binding = 1) uniform sampler2DArray u_gi_normals;    // xyz = unit normal
-layout(binding = 2) uniform sampler2DArray u_fields;        // xy = uv, texel (exit, entry)
+#include "lib/contract.glsl"
+
+layout(binding = UNIT_GI_POSITIONS) uniform sampler2DArray u_gi_positions;  // xyz P, w A
+layout(binding = UNIT_GI_NORMALS) uniform sampler2DArray u_gi_normals;      // xyz unit normal
+layout(binding = UNIT_FIELDS) uniform sampler2DArray u_fields;  // xy uv, texel (exit, entry)
 
 int gs_layer = 0;
 int gs_samples_per_side = 0;

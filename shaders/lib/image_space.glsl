@@ -9,31 +9,16 @@
 // drawn.
 #include "lib/scene.glsl"
 #include "lib/optics.glsl"
+#include "lib/camera.glsl"
 
 #define IS_FAR 1.0e30f
 
-uniform vec3 u_camera_position;
-uniform vec3 u_camera_forward;
-uniform vec3 u_camera_right;
-uniform vec3 u_camera_up;
-uniform vec2 u_tan_half;    // tan(fov/2) * aspect, tan(fov/2)
-uniform vec2 u_image_size;  // the picture, pixels
 uniform vec2 u_near_far;    // eye depths of the near and far planes
 // The search frustums' near and far planes (eye depths): the view frustum with its depth range
 // tightened to the bounds of what a map holds (the refractors, the nearby geometry), so that a
 // binary search of a few steps starts from an end point close to the surface it seeks.
 uniform vec2 u_refractor_depths;
 uniform vec2 u_nearby_depths;
-
-uniform vec2 u_jitter;      // the final pass's sample offset, pixels (x right, y down)
-
-// The pixel's camera ray, as gfield::camera_ray through the pixel centre moved by u_jitter.
-vec3 is_camera_direction() {
-  vec2 pixel = vec2(gl_FragCoord.x, u_image_size.y - gl_FragCoord.y) + u_jitter;
-  float sx = (2.0f * pixel.x / u_image_size.x - 1.0f) * u_tan_half.x;
-  float sy = (1.0f - 2.0f * pixel.y / u_image_size.y) * u_tan_half.y;
-  return normalize(u_camera_forward + sx * u_camera_right + sy * u_camera_up);
-}
 
 float is_eye_depth(vec3 p) { return dot(p - u_camera_position, u_camera_forward); }
 

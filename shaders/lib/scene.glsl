@@ -1,40 +1,17 @@
 // The scene on the GPU: objects (analytic shapes and geometry-field meshes) and lights in
-// shader storage buffers (runtime/renderer.cpp fills them), the nearest hit of a world ray over
+// shader storage buffers (runtime/gpu_scene.cpp fills them), the nearest hit of a world ray over
 // all objects (Li et al. 2006, TraceRay step 1-2), shadow rays and diffuse shading as the
 // reference tracer does them (preprocess/reference_tracer.cpp).
 
+#include "lib/contract.glsl"
 #include "lib/gpu_assets.glsl"
 #include "lib/shapes.glsl"
 #include "lib/scene_environment.glsl"
 #include "lib/textures.glsl"
 
-#define MATERIAL_DIFFUSE 0
-#define MATERIAL_MIRROR 1
-#define MATERIAL_DIELECTRIC 2
-
-struct GpuObject {
-  mat4 to_world;   // object -> world
-  mat4 to_object;  // world -> object
-  vec4 color;      // rgb: albedo or mirror tint; w: index of refraction
-  vec4 absorption; // rgb: Beer-Lambert coefficient; w: world diagonal of the object's bounds
-  vec4 checker0;   // rgb: first checker colour; w: squares along u
-  vec4 checker1;   // rgb: second checker colour; w: squares along v
-  vec4 shape;      // radius, height, thickness, 0
-  vec4 size;       // xyz: box / quad / slab extents
-  vec4 box_min;    // object-space bounds (mesh: the asset's box, mesh coordinates)
-  vec4 box_max;
-  ivec4 kind;      // shape type, material type, texture type, 0
-  ivec4 asset;     // mesh: layer, samples per side N, image size n, 0
-};
-
-struct GpuLight {
-  vec4 direction;  // xyz: the way a directional light travels; w: 0 directional, 1 point
-  vec4 position;   // xyz: point light position
-  vec4 color;      // rgb: colour * intensity
-};
-
-layout(std430, binding = 0) readonly buffer Objects { GpuObject objects[]; };
-layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
+// GpuObject, GpuLight and the MATERIAL_* codes are the contract's (shaders/lib/contract.glsl).
+layout(std430, binding = BUFFER_OBJECTS) readonly buffer Objects { GpuObject objects[]; };
+layout(std430, binding = BUFFER_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
 
 uniform int u_object_count;
 uniform int u_light_count;

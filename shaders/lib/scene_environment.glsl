@@ -2,14 +2,10 @@
 // constant colour, equirectangular image or six cube faces, times the intensity), with the
 // images read by texelFetch and filtered here as gfield::sample_bilinear does.
 
+#include "lib/contract.glsl"
 #include "lib/environment.glsl"
 
-#define ENV_STUDIO 0
-#define ENV_CONSTANT 1
-#define ENV_EQUIRECT 2
-#define ENV_CUBE 3
-
-layout(binding = 5) uniform sampler2DArray u_env_images;  // equirect: layer 0; cube: 6 layers
+layout(binding = UNIT_ENVIRONMENT) uniform sampler2DArray u_env_images;  // equirect: layer 0; cube: 6 layers
 uniform int u_env_type;
 uniform vec3 u_env_color;
 uniform float u_env_intensity;

@@ -1,14 +1,8 @@
 // Exact ray intersections with the analytic shapes of a scene, in their object space: the GLSL
 // port (float) of geometry/analytic_primitives.cpp, with the same normals (out of the solid;
-// quads +Z) and texture coordinates. Shape numbers follow gfield::ShapeType.
+// quads +Z) and texture coordinates. Shape codes SHAPE_* are the contract's.
 
-#define SHAPE_MESH 0
-#define SHAPE_SPHERE 1
-#define SHAPE_QUAD 2
-#define SHAPE_BOX 3
-#define SHAPE_CYLINDER 4
-#define SHAPE_SLAB 5
-#define SHAPE_HOLLOW_CYLINDER 6
+#include "lib/contract.glsl"
 
 const float SHAPE_PI = 3.14159265358979f;
 

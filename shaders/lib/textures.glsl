@@ -1,11 +1,9 @@
 // Diffuse albedo of the scene's textures as gfield::texture_albedo (core/src/scene.cpp) computes
 // it: plain colour, checker (squares along u and v in checker0.w / checker1.w) or the 6 x 4
-// colour chart (sRGB patches on black gaps, returned linear). Texture numbers follow
-// gfield::TextureType.
+// colour chart (sRGB patches on black gaps, returned linear). Texture codes TEXTURE_* are the
+// contract's.
 
-#define TEXTURE_NONE 0
-#define TEXTURE_CHECKER 1
-#define TEXTURE_COLOR_CHART 2
+#include "lib/contract.glsl"
 
 vec3 texture_albedo(int texture_type, vec3 color, vec4 checker0, vec4 checker1, vec2 uv) {
   if (texture_type == TEXTURE_CHECKER) {

@@ -13,9 +13,9 @@
 
 #include <gtest/gtest.h>
 
+#include "geometry/analytic_primitives.hpp"
 #include "gfield/image_metrics.hpp"
 #include "gfield/scene.hpp"
-#include "geometry/analytic_primitives.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/methods/glass.hpp"
@@ -151,10 +151,15 @@ Image signed_difference(const Image& image, const Image& reference, const PixelM
   return out;
 }
 
+/// Class images drawn per sample (FrameStats sums them over the kSamples samples).
+int class_images(const FrameStats& stats) {
+  return int(stats.count("class images")) / kSamples;
+}
+
 /// Both renders of a scene file of data/scenes, compared behind the glass, into `out`; fatal
 /// failure when the scene, the tracer or the renderer fails to load (callers wrap it in
 /// ASSERT_NO_FATAL_FAILURE).
-void compare_scene(const std::string& name, ImageComparison& out, GlassStats* stats = nullptr,
+void compare_scene(const std::string& name, ImageComparison& out, FrameStats* stats = nullptr,
                    ImageComparison* no_fresnel = nullptr, ImageComparison* traced_verge = nullptr) {
   std::string error;
   Scene scene;
@@ -167,21 +172,21 @@ void compare_scene(const std::string& name, ImageComparison& out, GlassStats* st
   options.jitter = false;
   const Image reference = tracer.render(options);
 
-  GlassRenderer renderer;
-  GlassSettings settings;
-  settings.samples_per_pixel = kSamples;
-  ASSERT_TRUE(renderer.load(scene, default_shader_dir(), settings, error)) << error;
-  const Image image = renderer.render_image(kSize, kSize, settings, stats);
+  GpuScene gpu;
+  GlassMethod glass;
+  ASSERT_TRUE(gpu.load(scene, error)) << error;
+  ASSERT_TRUE(glass.load(gpu, default_shader_dir(), error)) << error;
+  const auto render = [&] { return render_image(glass, scene.camera, kSize, kSize, kSamples); };
+  const Image image = render_image(glass, scene.camera, kSize, kSize, kSamples, stats);
   const PixelMask mask = glass_mask(scene, kSize, kSize);
   if (no_fresnel != nullptr) {
-    GlassSettings plain = settings;
-    plain.fresnel = false;
-    *no_fresnel = compare_images(renderer.render_image(kSize, kSize, plain), reference, mask);
+    glass.settings().fresnel = false;
+    *no_fresnel = compare_images(render(), reference, mask);
+    glass.settings().fresnel = true;
   }
   if (traced_verge != nullptr) {
-    GlassSettings traced = settings;
-    traced.trace_verge = true;
-    const Image traced_image = renderer.render_image(kSize, kSize, traced);
+    glass.settings().trace_verge = true;
+    const Image traced_image = render();
     *traced_verge = compare_images(traced_image, reference, mask);
     if (const char* dump = std::getenv("GFIELD_GLASS_TEST_DUMP")) {
       save_image(std::string(dump) + "/" + name + ".traced-verge.difference.png",
@@ -234,14 +239,14 @@ TEST_F(GlassTest, PlateScenesMatchTheReferenceBehindTheGlass) {
                 {"mukai-plate-tilt30-w02.json", 30.0},
                 {"mukai-plate-tilt30-w10.json", 30.0}};
   for (const auto& scene : scenes) {
-    GlassStats stats;
+    FrameStats stats;
     ImageComparison plain;
     ImageComparison c;
     ASSERT_NO_FATAL_FAILURE(compare_scene(scene.name, c, &stats, &plain));
     std::printf(
         "%s: PSNR %.2f dB (without Fresnel %.2f dB), SSIM %.4f over %zu pixels, %d class "
         "images\n",
-        scene.name, c.psnr, plain.psnr, c.ssim, c.pixels, stats.class_images);
+        scene.name, c.psnr, plain.psnr, c.ssim, c.pixels, class_images(stats));
     EXPECT_GT(c.pixels, size_t(kSize * kSize / 20)) << scene.name;
     EXPECT_GE(c.psnr, scene.min_psnr) << scene.name;
     // The Fresnel terms are not decoration: they bring the picture closer to the reference.
@@ -250,18 +255,18 @@ TEST_F(GlassTest, PlateScenesMatchTheReferenceBehindTheGlass) {
 }
 
 TEST_F(GlassTest, HollowCylinderMatchesTheReferenceBehindTheGlass) {
-  GlassStats stats;
+  FrameStats stats;
   ImageComparison traced;
   ImageComparison c;
   ASSERT_NO_FATAL_FAILURE(compare_scene("mukai-hollow-cylinder.json", c, &stats, nullptr, &traced));
   std::printf(
       "mukai-hollow-cylinder.json: PSNR %.2f dB (verge traced per pixel %.2f dB), SSIM "
       "%.4f over %zu pixels, %d class images\n",
-      c.psnr, traced.psnr, c.ssim, c.pixels, stats.class_images);
+      c.psnr, traced.psnr, c.ssim, c.pixels, class_images(stats));
   EXPECT_GT(c.pixels, size_t(kSize * kSize / 20));
   EXPECT_GE(c.psnr, 33.5);
   // None, both walls, verge, front wall and back wall (through the open top) all appear.
-  EXPECT_EQ(stats.class_images, 5);
+  EXPECT_EQ(class_images(stats), 5);
   // Tracing the verge per pixel follows its fold exactly.
   EXPECT_GE(traced.psnr, 38.0);
 }
@@ -272,8 +277,10 @@ TEST_F(GlassTest, RefusesScenesWithoutOneSlabOrHollowCylinder) {
   ASSERT_TRUE(
       load_scene(std::string(GFIELD_DATA_DIR) + "/scenes/two-mirror-spheres.json", scene, error))
       << error;
-  GlassRenderer renderer;
-  EXPECT_FALSE(renderer.load(scene, default_shader_dir(), GlassSettings{}, error));
+  GpuScene gpu;
+  ASSERT_TRUE(gpu.load(scene, error)) << error;
+  GlassMethod glass;
+  EXPECT_FALSE(glass.load(gpu, default_shader_dir(), error));
   EXPECT_NE(error.find("two-mirror-spheres.json"), std::string::npos) << error;
 }
 

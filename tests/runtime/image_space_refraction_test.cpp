@@ -1,4 +1,5 @@
-// The image-space methods (runtime/methods/image_space.hpp) headless on whatever EGL offers
+// The image-space methods (runtime/methods/cube_map.hpp, image_space_refraction.hpp) headless
+// on whatever EGL offers
 // (llvmpipe in CI), judged against the reference tracer: `gfield render --dielectric tir-only`
 // (Davis & Wyman's Figure 8 reference) on the refractive-mesh scene at 256^2, and against the
 // environment itself for the cube map at index 1.
@@ -6,12 +7,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include <gtest/gtest.h>
 
 #include "gfield/image_metrics.hpp"
 #include "runtime/gl_context.hpp"
-#include "runtime/methods/image_space.hpp"
+#include "runtime/methods/cube_map.hpp"
+#include "runtime/methods/image_space_refraction.hpp"
 #include "runtime/shader_program.hpp"
 #include "test_support/cli_run.hpp"
 
@@ -20,6 +23,15 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kSize = 256;
+
+/// Which image-space method renders and how.
+struct ImageSpaceSettings {
+  std::string method = "davis-wyman";  ///< cubemap, envmap, wyman2005 or davis-wyman
+  int samples_per_pixel = 1;
+  int bounces = 3;
+  bool per_vertex = false;
+  ExitBackground background = ExitBackground::kDepthMap;
+};
 
 class ImageSpaceTest : public ::testing::Test {
  protected:
@@ -67,15 +79,27 @@ class ImageSpaceTest : public ::testing::Test {
   static inline bool ready_ = false;
 
   static Image render(const Scene& scene, const ImageSpaceSettings& settings) {
-    ImageSpaceRenderer renderer;
+    GpuScene gpu;
+    std::unique_ptr<Method> method;
+    if (settings.method == "cubemap" || settings.method == "envmap") {
+      auto cube = std::make_unique<CubeMapMethod>(settings.method == "envmap");
+      cube->settings().per_vertex = settings.per_vertex;
+      method = std::move(cube);
+    } else {
+      auto refraction =
+          std::make_unique<ImageSpaceRefractionMethod>(settings.method == "davis-wyman");
+      refraction->settings().bounces = settings.bounces;
+      refraction->settings().background = settings.background;
+      method = std::move(refraction);
+    }
     std::string error;
     // A failure is recorded and the empty picture compares as no match.
-    if (!renderer.load(scene, default_shader_dir(), error) ||
-        !renderer.supports(settings.method, error)) {
+    if (!gpu.load(scene, error) || !method->load(gpu, default_shader_dir(), error)) {
       ADD_FAILURE() << error;
       return Image{};
     }
-    return clamped_to_display(renderer.render_image(kSize, kSize, settings));
+    return clamped_to_display(
+        render_image(*method, scene.camera, kSize, kSize, settings.samples_per_pixel));
   }
 
   /// The pixels where the refractor is seen: it drawn white on black.
@@ -108,7 +132,7 @@ TEST_F(ImageSpaceTest, CubemapWithIndexOneReproducesTheEnvironment) {
   Scene empty = scene;
   empty.objects.clear();
   ImageSpaceSettings settings;
-  settings.method = ImageSpaceMethod::kCubeMap;
+  settings.method = "cubemap";
   const Image environment = render(empty, settings);
   const PixelMask mask = refractor_mask();
   size_t covered = 0;
@@ -148,11 +172,12 @@ TEST_F(ImageSpaceTest, WymanNeedsThicknessMaps) {
       (fs::path(GFIELD_TEST_TMP) / "image_space" / "nothickness").string() + ".gimage.exr";
   fs::copy_file(scene_->meshes[0].geometry_image, scene.meshes[0].geometry_image,
                 fs::copy_options::overwrite_existing);
-  ImageSpaceRenderer renderer;
+  GpuScene gpu;
   std::string error;
-  ASSERT_TRUE(renderer.load(scene, default_shader_dir(), error)) << error;
-  EXPECT_TRUE(renderer.supports(ImageSpaceMethod::kDavisWyman, error));
-  EXPECT_FALSE(renderer.supports(ImageSpaceMethod::kWyman2005, error));
+  ASSERT_TRUE(gpu.load(scene, error)) << error;
+  ImageSpaceRefractionMethod davis_wyman(true), wyman2005(false);
+  EXPECT_TRUE(davis_wyman.load(gpu, default_shader_dir(), error)) << error;
+  EXPECT_FALSE(wyman2005.load(gpu, default_shader_dir(), error));
   EXPECT_NE(error.find("gfield thickness"), std::string::npos) << error;
 }
 
@@ -171,9 +196,9 @@ TEST_F(ImageSpaceTest, DavisWymanBeatsWyman2005AgainstTheTirOnlyReference) {
     ImageSpaceSettings settings;
     settings.samples_per_pixel = 4;
     settings.background = background;
-    settings.method = ImageSpaceMethod::kWyman2005;
+    settings.method = "wyman2005";
     figures.wyman2005 = compare_images(render(*scene_, settings), *reference_, mask).psnr;
-    settings.method = ImageSpaceMethod::kDavisWyman;
+    settings.method = "davis-wyman";
     std::printf("%s: wyman2005 %.2f dB, davis-wyman 0-4 bounces", name.c_str(), figures.wyman2005);
     for (int bounces = 0; bounces <= 4; ++bounces) {
       settings.bounces = bounces;
@@ -204,7 +229,7 @@ TEST_F(ImageSpaceTest, DavisWymanBeatsWyman2005AgainstTheTirOnlyReference) {
   // cubemap sees no nearby geometry through the refractor: far below both.
   ImageSpaceSettings cube;
   cube.samples_per_pixel = 4;
-  cube.method = ImageSpaceMethod::kCubeMap;
+  cube.method = "cubemap";
   const double cubemap = compare_images(render(*scene_, cube), *reference_, mask).psnr;
   std::printf("cubemap %.2f dB\n", cubemap);
   EXPECT_LT(cubemap, map.wyman2005);

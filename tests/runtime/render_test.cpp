@@ -1,4 +1,4 @@
-// Headless renders of the geometry-field renderer against the reference ray tracer (the library
+// Headless renders of the geometry-field method against the reference ray tracer (the library
 // behind `gfield render`), same scene, same depth, same sample positions (strata centres):
 // PSNR thresholds per scene, and refined > linear > nearest on every scene. Assets are built at
 // test time with `gfield build` on a bundled mesh (small N to stay fast).
@@ -16,7 +16,8 @@
 #include "gfield/scene.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
-#include "runtime/renderer.hpp"
+#include "runtime/methods/geometry_field.hpp"
+#include "runtime/shader_program.hpp"
 
 namespace gfield {
 namespace {
@@ -135,8 +136,10 @@ bool psnr_per_mode(const std::string& name, const std::string& text, int size, i
     return false;
   }
   ReferenceTracer tracer;
-  Renderer renderer;
-  if (!tracer.build(scene, error) || !renderer.load(scene, default_shader_dir(), error)) {
+  GpuScene gpu;
+  GeometryFieldMethod field;
+  if (!tracer.build(scene, error) || !gpu.load(scene, error) ||
+      !field.load(gpu, default_shader_dir(), error)) {
     ADD_FAILURE() << error;
     return false;
   }
@@ -148,11 +151,9 @@ bool psnr_per_mode(const std::string& name, const std::string& text, int size, i
   const Image reference = clamped_to_display(tracer.render(options));
   save_image((kDir / (name + "-reference.png")).string(), reference, error);
   for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
-    RenderSettings settings;
-    settings.mode = mode;
-    settings.max_depth = depth;
-    settings.samples_per_pixel = spp;
-    const Image image = clamped_to_display(renderer.render_image(size, size, settings));
+    field.settings().mode = mode;
+    field.settings().max_depth = depth;
+    const Image image = clamped_to_display(render_image(field, scene.camera, size, size, spp));
     psnr[int(mode)] = compare_images(image, reference).psnr;
     std::printf("%s %s: PSNR %.2f dB\n", name.c_str(), lookup_mode_name(mode), psnr[int(mode)]);
     if (mode == LookupMode::kRefined)

@@ -9,11 +9,18 @@
 
 #include <glm/glm.hpp>
 
+#include "gfield/gpu_contract.hpp"
 #include "gfield/image.hpp"
 
 namespace gfield {
 
-enum class EnvironmentType { kStudio, kConstant, kEquirect, kCube };
+/// Environment kinds; the numbers are the shaders' ENV_* codes (shaders/lib/contract.glsl).
+enum class EnvironmentType {
+  kStudio = gpu::ENV_STUDIO,
+  kConstant = gpu::ENV_CONSTANT,
+  kEquirect = gpu::ENV_EQUIRECT,
+  kCube = gpu::ENV_CUBE,
+};
 
 /// What a scene file says about the environment (paths already resolved against the scene file).
 struct EnvironmentDesc {

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "gfield/environment.hpp"
+#include "gfield/gpu_contract.hpp"
 
 namespace gfield {
 
@@ -33,7 +34,16 @@ struct CameraRay {
 CameraRay camera_ray(const Camera& camera, int width, int height, glm::dvec2 pixel);
 
 /// Object-space shapes. Every shape is centred on the origin before its transform.
-enum class ShapeType { kMesh, kSphere, kQuad, kBox, kCylinder, kSlab, kHollowCylinder };
+/// Shape kinds; the numbers are the shaders' SHAPE_* codes (shaders/lib/contract.glsl).
+enum class ShapeType {
+  kMesh = gpu::SHAPE_MESH,
+  kSphere = gpu::SHAPE_SPHERE,
+  kQuad = gpu::SHAPE_QUAD,
+  kBox = gpu::SHAPE_BOX,
+  kCylinder = gpu::SHAPE_CYLINDER,
+  kSlab = gpu::SHAPE_SLAB,
+  kHollowCylinder = gpu::SHAPE_HOLLOW_CYLINDER,
+};
 
 struct Shape {
   ShapeType type = ShapeType::kSphere;
@@ -60,8 +70,17 @@ struct Transform {
 };
 glm::dmat4 object_to_world(const Transform& transform);
 
-enum class MaterialType { kDiffuse, kMirror, kDielectric };
-enum class TextureType { kNone, kChecker, kColorChart };
+/// Material and texture kinds; the numbers are the shaders' MATERIAL_* and TEXTURE_* codes.
+enum class MaterialType {
+  kDiffuse = gpu::MATERIAL_DIFFUSE,
+  kMirror = gpu::MATERIAL_MIRROR,
+  kDielectric = gpu::MATERIAL_DIELECTRIC,
+};
+enum class TextureType {
+  kNone = gpu::TEXTURE_NONE,
+  kChecker = gpu::TEXTURE_CHECKER,
+  kColorChart = gpu::TEXTURE_COLOR_CHART,
+};
 
 struct Material {
   MaterialType type = MaterialType::kDiffuse;

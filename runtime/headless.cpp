@@ -1,0 +1,153 @@
+#include "runtime/headless.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "gfield/image_metrics.hpp"
+#include "gfield/stopwatch.hpp"
+#include "runtime/gl_context.hpp"
+
+namespace gfield {
+namespace {
+
+int fail(const std::string& message, int code = 2) {
+  std::fprintf(stderr, "gfield-view: %s\n", message.c_str());
+  return code;
+}
+
+/// One method's picture and its timings.
+struct MethodRun {
+  Image image;
+  FrameStats first;  ///< the first frame (shader warm-up included)
+  FrameStats rest;   ///< the other frames, summed
+};
+
+/// Selects (loads) the method named `name`.
+bool select_method(ViewSession& session, const std::string& name, std::string& error) {
+  const int index = session.find(name);
+  if (index < 0) {
+    error = "--method " + name + ": no such method";
+    return false;
+  }
+  return session.select(index, error);
+}
+
+/// Renders o.frames pictures with the selected method.
+MethodRun render_frames(ViewSession& session, const HeadlessOptions& o) {
+  Method& method = session.method(session.current());
+  const Camera& camera = session.scene().scene().camera;
+  MethodRun run;
+  run.image = render_image(method, camera, o.width, o.height, o.samples_per_pixel, &run.first);
+  for (int f = 1; f < o.frames; ++f)
+    run.image = render_image(method, camera, o.width, o.height, o.samples_per_pixel, &run.rest);
+  return run;
+}
+
+void print_bench(const Method& method, const MethodRun& run, const HeadlessOptions& o) {
+  const int timed = o.frames > 1 ? o.frames - 1 : 1;
+  const FrameStats& s = o.frames > 1 ? run.rest : run.first;
+  const double ms = s.milliseconds / timed;
+  std::printf("%s: %dx%d, %d spp\n", method.info().name.c_str(), o.width, o.height,
+              o.samples_per_pixel);
+  std::printf("first frame: %.2f ms (includes shader warm-up)\n", run.first.milliseconds);
+  std::printf("frame: %.2f ms (%.1f FPS) over %d frame(s)", ms, 1000.0 / std::max(ms, 1e-6), timed);
+  for (size_t k = 0; k < s.parts_ms.size(); ++k)
+    std::printf("%s %s %.2f ms", k == 0 ? ":" : ",", s.parts_ms[k].first.c_str(),
+                s.parts_ms[k].second / timed);
+  std::printf("\n");
+  // Counts per sample (one frame is samples_per_pixel samples).
+  FrameStats per_sample;
+  const double samples = double(timed) * double(std::max(1, o.samples_per_pixel));
+  for (const auto& [name, value] : s.counts)
+    per_sample.add_count(name, value / samples);
+  for (const auto& [name, value] : s.parts_ms)
+    per_sample.add_part(name, value / samples);
+  for (size_t k = 0; k < per_sample.counts.size(); ++k)
+    std::printf("%s%s %.0f", k == 0 ? "per sample: " : ", ", per_sample.counts[k].first.c_str(),
+                per_sample.counts[k].second);
+  if (!per_sample.counts.empty())
+    std::printf("\n");
+  const std::string summary = method.summary(per_sample);
+  if (!summary.empty())
+    std::printf("%s\n", summary.c_str());
+}
+
+/// Prints PSNR and SSIM against o.reference and writes the heat map; false on a bad reference.
+bool compare_with_reference(const Image& image, const HeadlessOptions& o, std::string& error) {
+  Image reference;
+  if (!load_image(o.reference, reference, error))
+    return false;
+  if (reference.width != image.width || reference.height != image.height) {
+    error = o.reference + ": " + std::to_string(reference.width) + "x" +
+            std::to_string(reference.height) + ", the render is " + std::to_string(image.width) +
+            "x" + std::to_string(image.height);
+    return false;
+  }
+  const ImageComparison c = compare_images(image, reference);
+  std::printf("%s vs %s: PSNR %.2f dB, SSIM %.4f, mean |error| %.4f\n", o.method.c_str(),
+              o.reference.c_str(), c.psnr, c.ssim, c.mean_abs_error);
+  return o.difference.empty() ||
+         save_image(o.difference, error_heatmap(image, reference, o.difference_scale), error);
+}
+
+Image side_by_side(const Image& left, const Image& right) {
+  Image both(left.width + right.width, left.height);
+  for (int y = 0; y < left.height; ++y) {
+    for (int x = 0; x < left.width; ++x)
+      both.at(x, y) = left.at(x, y);
+    for (int x = 0; x < right.width; ++x)
+      both.at(left.width + x, y) = right.at(x, y);
+  }
+  return both;
+}
+
+/// The headless run with a current context.
+int render_headless(ViewSession& session, const Scene& scene,
+                    const std::filesystem::path& shader_dir, const HeadlessOptions& options,
+                    const GlContext& context) {
+  std::string error;
+  HeadlessOptions o = options;
+  o.width = o.width > 0 ? o.width : scene.width;
+  o.height = o.height > 0 ? o.height : scene.height;
+  const Stopwatch load_clock;
+  if (!session.load(scene, shader_dir, error) || !select_method(session, o.method, error))
+    return fail(error);
+  const double load_s = load_clock.seconds();
+  const MethodRun run = render_frames(session, o);
+  if (o.bench) {
+    std::printf("renderer: %s (%s, %s)\n", context.renderer().c_str(), context.version().c_str(),
+                context.platform().c_str());
+    std::printf("scene: %s; load + upload %.3f s; texture memory %.1f MB\n", scene.filename.c_str(),
+                load_s, double(session.scene().assets().texture_bytes()) / 1e6);
+    print_bench(session.method(session.current()), run, o);
+  }
+  if (!o.reference.empty() && !compare_with_reference(run.image, o, error))
+    return fail(error);
+  Image picture = run.image;
+  if (!o.side_by_side.empty()) {
+    if (!select_method(session, o.side_by_side, error))
+      return fail(error);
+    const MethodRun second = render_frames(session, o);
+    if (o.bench)
+      print_bench(session.method(session.current()), second, o);
+    picture = side_by_side(picture, second.image);
+  }
+  if (!o.out.empty() && !save_image(o.out, picture, error))
+    return fail(error);
+  return 0;
+}
+
+}  // namespace
+
+int run_headless(ViewSession& session, const Scene& scene, const std::filesystem::path& shader_dir,
+                 const HeadlessOptions& options) {
+  std::string error;
+  auto context = GlContext::create_headless(error);
+  if (!context)
+    return fail(error, kExitNoOpenGL);
+  const int code = render_headless(session, scene, shader_dir, options, *context);
+  session.release();  // while the context is current
+  return code;
+}
+
+}  // namespace gfield

@@ -1,0 +1,100 @@
+#include "runtime/method.hpp"
+
+#include <utility>
+
+#include "runtime/supersample.hpp"
+
+namespace gfield {
+
+MethodOption int_option(std::string name, std::string label, std::string help, int* value, int min,
+                        int max) {
+  MethodOption o;
+  o.kind = MethodOption::Kind::kInt;
+  o.name = std::move(name);
+  o.label = std::move(label);
+  o.help = std::move(help);
+  o.int_value = value;
+  o.min = min;
+  o.max = max;
+  return o;
+}
+
+MethodOption float_option(std::string name, std::string label, std::string help, float* value,
+                          float min, float max) {
+  MethodOption o;
+  o.kind = MethodOption::Kind::kFloat;
+  o.name = std::move(name);
+  o.label = std::move(label);
+  o.help = std::move(help);
+  o.float_value = value;
+  o.min = min;
+  o.max = max;
+  return o;
+}
+
+MethodOption flag_option(std::string name, std::string label, std::string help, bool* value,
+                         bool sets) {
+  MethodOption o;
+  o.kind = MethodOption::Kind::kFlag;
+  o.name = std::move(name);
+  o.label = std::move(label);
+  o.help = std::move(help);
+  o.flag_value = value;
+  o.flag_sets = sets;
+  return o;
+}
+
+namespace {
+void add_named(std::vector<std::pair<std::string, double>>& list, const std::string& name,
+               double value) {
+  for (auto& [n, v] : list) {
+    if (n == name) {
+      v += value;
+      return;
+    }
+  }
+  list.emplace_back(name, value);
+}
+}  // namespace
+
+void FrameStats::add_part(const std::string& name, double ms) {
+  add_named(parts_ms, name, ms);
+}
+
+void FrameStats::add_count(const std::string& name, double count) {
+  add_named(counts, name, count);
+}
+
+double FrameStats::part_ms(const std::string& name) const {
+  for (const auto& [n, v] : parts_ms)
+    if (n == name)
+      return v;
+  return 0.0;
+}
+
+double FrameStats::count(const std::string& name) const {
+  for (const auto& [n, v] : counts)
+    if (n == name)
+      return v;
+  return 0.0;
+}
+
+Image render_image(Method& method, const Camera& camera, int width, int height, int spp,
+                   FrameStats* stats) {
+  return render_supersampled(width, height, spp, [&](Framebuffer& target, glm::vec2 jitter) {
+    method.render(camera, target, jitter, stats);
+  });
+}
+
+bool reload_programs_if_changed(const std::vector<ShaderProgram*>& programs, std::string& error) {
+  bool rebuilt = false;
+  error.clear();
+  for (ShaderProgram* program : programs) {
+    std::string program_error;
+    rebuilt |= program->reload_if_changed(program_error);
+    error += program_error;
+  }
+  return rebuilt && error.empty();
+}
+
+}  // namespace gfield

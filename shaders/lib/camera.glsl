@@ -1,0 +1,19 @@
+// The camera of a full-screen pass (set by runtime/gpu_scene.cpp's set_camera_uniforms) and the
+// ray of this fragment's sample: the contract's gf_camera_direction through the pixel centre
+// moved by u_jitter, as gfield::camera_ray and the reference tracer's sample positions.
+
+#include "lib/contract.glsl"
+
+uniform vec3 u_camera_position;
+uniform vec3 u_camera_forward;
+uniform vec3 u_camera_right;
+uniform vec3 u_camera_up;
+uniform vec2 u_tan_half;    // tan(fov/2) * aspect, tan(fov/2)
+uniform vec2 u_image_size;  // the picture, pixels
+uniform vec2 u_jitter;      // sample offset from the pixel centre, pixels (x right, y down)
+
+vec3 camera_direction() {
+  vec2 pixel = vec2(gl_FragCoord.x, u_image_size.y - gl_FragCoord.y) + u_jitter;
+  return gf_camera_direction(u_camera_forward, u_camera_right, u_camera_up, u_tan_half,
+                             u_image_size, pixel);
+}

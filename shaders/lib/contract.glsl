@@ -1,0 +1,100 @@
+// The contract between the C++ runtime and the shaders, written once. This file is valid GLSL
+// 4.50 and valid C++ with GLM: the shaders include it, and core/include/gfield/gpu_contract.hpp
+// includes it into namespace gfield::gpu. It holds the codes both sides use (shapes, materials,
+// textures, environments), the binding slots of storage buffers and texture units, the std430
+// layouts of the scene buffers, and the camera ray. Keep to the common subset: `GF_CONST int`
+// constants, GF_INLINE functions, structs of vec4 / ivec4 / mat4 members only (their std430
+// layout is the C++ layout), float literals with an f suffix.
+
+#ifdef __cplusplus
+#define GF_CONST inline constexpr
+#define GF_INLINE inline
+#else
+#define GF_CONST const
+#define GF_INLINE
+#endif
+
+// Shapes (gfield::ShapeType).
+GF_CONST int SHAPE_MESH = 0;
+GF_CONST int SHAPE_SPHERE = 1;
+GF_CONST int SHAPE_QUAD = 2;
+GF_CONST int SHAPE_BOX = 3;
+GF_CONST int SHAPE_CYLINDER = 4;
+GF_CONST int SHAPE_SLAB = 5;
+GF_CONST int SHAPE_HOLLOW_CYLINDER = 6;
+
+// Materials (gfield::MaterialType).
+GF_CONST int MATERIAL_DIFFUSE = 0;
+GF_CONST int MATERIAL_MIRROR = 1;
+GF_CONST int MATERIAL_DIELECTRIC = 2;
+
+// Procedural textures (gfield::TextureType).
+GF_CONST int TEXTURE_NONE = 0;
+GF_CONST int TEXTURE_CHECKER = 1;
+GF_CONST int TEXTURE_COLOR_CHART = 2;
+
+// Environments (gfield::EnvironmentType).
+GF_CONST int ENV_STUDIO = 0;
+GF_CONST int ENV_CONSTANT = 1;
+GF_CONST int ENV_EQUIRECT = 2;
+GF_CONST int ENV_CUBE = 3;
+
+// Shader storage buffer bindings.
+GF_CONST int BUFFER_OBJECTS = 0;  // GpuObject[], one per scene object
+GF_CONST int BUFFER_LIGHTS = 1;   // GpuLight[], one per light
+
+// Texture units. Every program of the runtime draws from this one table, so a unit means the
+// same texture in every pass.
+GF_CONST int UNIT_GI_POSITIONS = 0;   // 2D array RGBA32F: P (mesh coordinates), coverage A in w
+GF_CONST int UNIT_GI_NORMALS = 1;     // 2D array RGBA32F: unit normals
+GF_CONST int UNIT_FIELDS = 2;         // 2D array RG32F: stored uv, texel (exit, entry)
+GF_CONST int UNIT_PROBE_ORIGINS = 3;  // field probe: ray origins (xyz) and t_min (w)
+GF_CONST int UNIT_PROBE_DIRECTIONS = 4;  // field probe: ray directions (xyz) and t_max (w)
+GF_CONST int UNIT_ENVIRONMENT = 5;    // 2D array RGBA32F: equirect layer 0 or six cube faces
+GF_CONST int UNIT_GBUFFER_POSITION = 6;   // xyz world position, w object (-1: none)
+GF_CONST int UNIT_GBUFFER_NORMAL = 7;     // xyz shading normal, w texture u
+GF_CONST int UNIT_GBUFFER_GEOMETRIC = 8;  // xyz geometric normal, w texture v
+GF_CONST int UNIT_THICKNESS = 9;      // 2D array R32F: d_n per geometry-image texel (wyman2005)
+GF_CONST int UNIT_CUBE = 10;          // the cube map of the object being drawn (cubemap, envmap)
+GF_CONST int UNIT_BACK = 11;          // back faces of the refractors: normal, eye depth
+GF_CONST int UNIT_FRONT = 12;         // front faces of the refractors: normal, eye depth
+GF_CONST int UNIT_NEARBY = 13;        // nearby geometry: colour, eye depth
+GF_CONST int UNIT_PEEL_PREVIOUS = 14;  // glass, while peeling: the layer peeled before
+GF_CONST int UNIT_PEEL_LAYERS = 15;    // glass: peeled layers 0..3 in units 15..18
+GF_CONST int UNIT_CLASS_IMAGES = 19;   // glass: 2D array, one scene image per refraction class
+GF_CONST int UNIT_SHADOW_MAPS = 20;    // glass: 2D array shadow maps, layer = light
+GF_CONST int UNIT_FRAME = 21;          // the presented frame (viewer)
+
+// One scene object (std430, 288 bytes).
+struct GpuObject {
+  mat4 to_world;    // object -> world
+  mat4 to_object;   // world -> object
+  vec4 color;       // rgb: albedo or mirror tint; w: index of refraction
+  vec4 absorption;  // rgb: Beer-Lambert coefficient; w: world diagonal of the object's bounds
+  vec4 checker0;    // rgb: first checker colour; w: squares along u
+  vec4 checker1;    // rgb: second checker colour; w: squares along v
+  vec4 shape;       // radius, height, thickness, 0
+  vec4 size;        // xyz: box / quad / slab extents
+  vec4 box_min;     // object-space bounds (mesh: the asset's box, mesh coordinates)
+  vec4 box_max;
+  ivec4 kind;   // SHAPE_*, MATERIAL_*, TEXTURE_*, 0
+  ivec4 asset;  // mesh: layer, samples per side N, geometry-image size n, 0
+};
+
+// One light (std430, 48 bytes).
+struct GpuLight {
+  vec4 direction;  // xyz: the way a directional light travels; w: 0 directional, 1 point
+  vec4 position;   // xyz: point light position
+  vec4 color;      // rgb: colour * intensity
+};
+
+// The camera ray's direction (world, unit) through `pixel` (x right, y down, pixel centres at
+// + 0.5) of a picture of `image_size` pixels, for a camera looking along `forward` with `right`
+// and `up` (unit, orthogonal) and tan_half = (tan(fov / 2) * aspect, tan(fov / 2)): the ray of
+// gfield::camera_ray.
+GF_INLINE vec3 gf_camera_direction(vec3 forward, vec3 right, vec3 up, vec2 tan_half, vec2 image_size,
+                                   vec2 pixel) {
+  float sx = (2.0f * pixel.x / image_size.x - 1.0f) * tan_half.x;
+  float sy = (1.0f - 2.0f * pixel.y / image_size.y) * tan_half.y;
+  return normalize(forward + sx * right + sy * up);
+}
