@@ -25,6 +25,14 @@ RgbaImage Framebuffer::read() const {
   return {width(), height(), read_flipped(target_.texture(0), width(), height())};
 }
 
+Image Framebuffer::read_image() const {
+  const RgbaImage rgba = read();
+  Image image(rgba.width, rgba.height);
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    image.pixels[i] = glm::vec3(rgba.pixels[i]);
+  return image;
+}
+
 std::vector<glm::vec4> Framebuffer::read_hits() const {
   return read_flipped(target_.texture(1), width(), height());
 }

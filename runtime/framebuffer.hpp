@@ -7,6 +7,7 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
+#include "gfield/image.hpp"
 #include "runtime/render_target.hpp"
 
 namespace gfield {
@@ -26,6 +27,8 @@ class Framebuffer {
   void bind() const { target_.bind(); }
   /// Reads the colour attachment back (waits for the GPU), flipped so row 0 is the top.
   RgbaImage read() const;
+  /// The colour's rgb as an Image (linear radiance, rows top to bottom).
+  Image read_image() const;
   /// Reads the hit attachment back (same layout as read()).
   std::vector<glm::vec4> read_hits() const;
 

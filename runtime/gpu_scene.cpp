@@ -189,12 +189,17 @@ void GpuScene::object_local_bounds(int object, glm::vec3& lo, glm::vec3& hi) con
 void GpuScene::object_world_bounds(int object, glm::vec3& lo, glm::vec3& hi) const {
   glm::vec3 olo, ohi;
   object_local_bounds(object, olo, ohi);
-  const glm::mat4 to_world(object_to_world(scene_.objects[size_t(object)].transform));
   lo = glm::vec3(3.0e38f);
   hi = glm::vec3(-3.0e38f);
+  grow_world_bounds(glm::mat4(object_to_world(scene_.objects[size_t(object)].transform)), olo, ohi,
+                    lo, hi);
+}
+
+void grow_world_bounds(const glm::mat4& to_world, glm::vec3 box_lo, glm::vec3 box_hi, glm::vec3& lo,
+                       glm::vec3& hi) {
   for (int c = 0; c < 8; ++c) {
-    const glm::vec3 corner((c & 1) ? ohi.x : olo.x, (c & 2) ? ohi.y : olo.y,
-                           (c & 4) ? ohi.z : olo.z);
+    const glm::vec3 corner((c & 1) ? box_hi.x : box_lo.x, (c & 2) ? box_hi.y : box_lo.y,
+                           (c & 4) ? box_hi.z : box_lo.z);
     const glm::vec3 w(to_world * glm::vec4(corner, 1.0f));
     lo = glm::min(lo, w);
     hi = glm::max(hi, w);

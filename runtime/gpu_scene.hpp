@@ -73,6 +73,11 @@ class GpuScene {
   float extent_ = 1.0f;
 };
 
+/// Grows the world box [lo, hi] by the 8 corners of the object-space box [box_lo, box_hi] mapped
+/// by `to_world`.
+void grow_world_bounds(const glm::mat4& to_world, glm::vec3 box_lo, glm::vec3 box_hi, glm::vec3& lo,
+                       glm::vec3& hi);
+
 /// Sets the camera uniforms of shaders/lib/camera.glsl for `program` (in use): the ray through
 /// pixel p + jitter of a width x height picture, as gfield::camera_ray.
 void set_camera_uniforms(const ShaderProgram& program, const Camera& camera, int width, int height,

@@ -6,13 +6,24 @@
 
 namespace gfield {
 
-MethodOption int_option(std::string name, std::string label, std::string help, int* value, int min,
-                        int max) {
+namespace {
+
+MethodOption described(MethodOption::Kind kind, std::string name, std::string label,
+                       std::string help) {
   MethodOption o;
-  o.kind = MethodOption::Kind::kInt;
+  o.kind = kind;
   o.name = std::move(name);
   o.label = std::move(label);
   o.help = std::move(help);
+  return o;
+}
+
+}  // namespace
+
+MethodOption int_option(std::string name, std::string label, std::string help, int* value, int min,
+                        int max) {
+  MethodOption o =
+      described(MethodOption::Kind::kInt, std::move(name), std::move(label), std::move(help));
   o.int_value = value;
   o.min = min;
   o.max = max;
@@ -21,11 +32,8 @@ MethodOption int_option(std::string name, std::string label, std::string help, i
 
 MethodOption float_option(std::string name, std::string label, std::string help, float* value,
                           float min, float max) {
-  MethodOption o;
-  o.kind = MethodOption::Kind::kFloat;
-  o.name = std::move(name);
-  o.label = std::move(label);
-  o.help = std::move(help);
+  MethodOption o =
+      described(MethodOption::Kind::kFloat, std::move(name), std::move(label), std::move(help));
   o.float_value = value;
   o.min = min;
   o.max = max;
@@ -34,11 +42,8 @@ MethodOption float_option(std::string name, std::string label, std::string help,
 
 MethodOption flag_option(std::string name, std::string label, std::string help, bool* value,
                          bool sets) {
-  MethodOption o;
-  o.kind = MethodOption::Kind::kFlag;
-  o.name = std::move(name);
-  o.label = std::move(label);
-  o.help = std::move(help);
+  MethodOption o =
+      described(MethodOption::Kind::kFlag, std::move(name), std::move(label), std::move(help));
   o.flag_value = value;
   o.flag_sets = sets;
   return o;
@@ -84,6 +89,21 @@ Image render_image(Method& method, const Camera& camera, int width, int height, 
   return render_supersampled(width, height, spp, [&](Framebuffer& target, glm::vec2 jitter) {
     method.render(camera, target, jitter, stats);
   });
+}
+
+double timed_ms(bool timed, const Stopwatch& clock) {
+  if (!timed)
+    return 0.0;
+  glFinish();
+  return clock.milliseconds();
+}
+
+void add_frame_time(FrameStats* stats, const Stopwatch& clock, const std::string& part,
+                    double part_ms) {
+  if (stats == nullptr)
+    return;
+  stats->milliseconds += timed_ms(true, clock);
+  stats->add_part(part, part_ms);
 }
 
 bool reload_programs_if_changed(const std::vector<ShaderProgram*>& programs, std::string& error) {

@@ -18,6 +18,7 @@
 
 #include "gfield/image.hpp"
 #include "gfield/scene.hpp"
+#include "gfield/stopwatch.hpp"
 #include "runtime/framebuffer.hpp"
 #include "runtime/gpu_scene.hpp"
 
@@ -123,6 +124,14 @@ class Method {
 /// radiance, rows top to bottom).
 Image render_image(Method& method, const Camera& camera, int width, int height, int spp,
                    FrameStats* stats = nullptr);
+
+/// When `timed`: waits for the GPU and returns the milliseconds since `clock` started; else 0
+/// (a frame that is not timed is not stalled).
+double timed_ms(bool timed, const Stopwatch& clock);
+/// With `stats`: waits for the GPU, adds the frame's time since `clock` started and the named
+/// part `part` of `part_ms`.
+void add_frame_time(FrameStats* stats, const Stopwatch& clock, const std::string& part,
+                    double part_ms);
 
 /// Rebuilds every program in `programs` whose files changed (the Method contract).
 bool reload_programs_if_changed(const std::vector<ShaderProgram*>& programs, std::string& error);

@@ -84,10 +84,7 @@ void ViewSession::draw_difference(Framebuffer& frame) {
                           std::to_string(frame.height()) + " (e.g. gfield render SCENE --size WxH)";
     return;
   }
-  const RgbaImage pixels = frame.read();
-  Image image(pixels.width, pixels.height);
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    image.pixels[i] = glm::vec3(pixels.pixels[i]);
+  const Image image = frame.read_image();
   const ImageComparison c = compare_images(image, reference_);
   char text[96];
   std::snprintf(text, sizeof(text), "PSNR %.2f dB, SSIM %.4f against the reference", c.psnr,

@@ -379,10 +379,7 @@ void panel(ViewerState& s, const GlContext& context, const FrameStats& stats, do
 }
 
 void save_screenshot(ViewerState& s, const Framebuffer& frame) {
-  const RgbaImage pixels = frame.read();
-  Image image(pixels.width, pixels.height);
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    image.pixels[i] = glm::vec3(pixels.pixels[i]);
+  const Image image = frame.read_image();
   const std::string name = "gfield-view-" + std::to_string(s.screenshots++) + ".png";
   std::string error;
   s.message = save_image(name, image, error) ? "saved " + name : error;

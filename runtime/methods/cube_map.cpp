@@ -98,11 +98,7 @@ void CubeMapMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 
   for (int k = 0; k < objects; ++k)
     if (uses_cube(k))
       render_cube_map(k, std::max(1, settings_.cube_size));
-  double pass_ms = 0.0;
-  if (stats != nullptr) {
-    glFinish();
-    pass_ms = clock.milliseconds();
-  }
+  const double pass_ms = timed_ms(stats != nullptr, clock);
   const ImageSpaceView view = passes_.camera_view(camera, target.width(), target.height(), jitter);
   target.bind();
   passes_.draw_background_and_opaque(view, [&](int k) { return !uses_cube(k); });
@@ -118,11 +114,7 @@ void CubeMapMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 
     glBindTextureUnit(gpu::UNIT_CUBE, cubes_[size_t(k)].texture.id());
     passes_.draw_object(surface_program_, k);
   }
-  if (stats != nullptr) {
-    glFinish();
-    stats->milliseconds += clock.milliseconds();
-    stats->add_part("cube maps", pass_ms);
-  }
+  add_frame_time(stats, clock, "cube maps", pass_ms);
 }
 
 bool CubeMapMethod::reload_shaders_if_changed(std::string& error) {

@@ -92,16 +92,11 @@ void GeometryFieldMethod::render(const Camera& camera, Framebuffer& target, glm:
                                  FrameStats* stats) {
   const Stopwatch clock;
   render_gbuffer(camera, target.width(), target.height(), jitter);
-  double gbuffer_ms = 0.0;
-  if (stats != nullptr) {
-    glFinish();
-    gbuffer_ms = clock.milliseconds();
-  }
+  const double gbuffer_ms = timed_ms(stats != nullptr, clock);
   render_tracing(camera, target, jitter);
   if (stats == nullptr)
     return;
-  glFinish();
-  const double ms = clock.milliseconds();
+  const double ms = timed_ms(true, clock);
   stats->milliseconds += ms;
   stats->add_part("G-buffer", gbuffer_ms);
   stats->add_part("tracing", ms - gbuffer_ms);

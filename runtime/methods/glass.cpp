@@ -16,18 +16,6 @@ namespace {
 
 constexpr int kShadowedLights = 4;  // GLASS_SHADOWED_LIGHTS of shaders/lib/glass_shading.glsl
 
-/// Grows [lo, hi] by the 8 corners of the box [olo, ohi] mapped by `to_world`.
-void grow_bounds(const glm::mat4& to_world, glm::vec3 olo, glm::vec3 ohi, glm::vec3& lo,
-                 glm::vec3& hi) {
-  for (int c = 0; c < 8; ++c) {
-    const glm::vec3 corner((c & 1) ? ohi.x : olo.x, (c & 2) ? ohi.y : olo.y,
-                           (c & 4) ? ohi.z : olo.z);
-    const glm::vec3 w(to_world * glm::vec4(corner, 1.0f));
-    lo = glm::min(lo, w);
-    hi = glm::max(hi, w);
-  }
-}
-
 }  // namespace
 
 MethodInfo GlassMethod::info() const {
@@ -135,11 +123,11 @@ void GlassMethod::update_geometry() {
     const glm::mat4 to_world(object_to_world(o.transform));
     if (o.shape.type == ShapeType::kMesh) {
       const Box& b = scene_->assets().assets()[size_t(o.shape.mesh)].mesh_bounds;
-      grow_bounds(to_world, b.min, b.max, lo_, hi_);
+      grow_world_bounds(to_world, b.min, b.max, lo_, hi_);
     } else {
       glm::dvec3 olo, ohi;
       shape_bounds(o.shape, olo, ohi);
-      grow_bounds(to_world, glm::vec3(olo), glm::vec3(ohi), lo_, hi_);
+      grow_world_bounds(to_world, glm::vec3(olo), glm::vec3(ohi), lo_, hi_);
     }
   }
   extent_ = std::max(1e-3f, glm::length(hi_ - lo_));
@@ -274,10 +262,7 @@ void GlassMethod::peel(const glm::mat4& view_projection, int width, int height) 
       glBindTextureUnit(gpu::UNIT_PEEL_PREVIOUS, layers_[k - 1].texture(0));
     glDrawArrays(GL_TRIANGLES, 0, glass_vertex_count_);
   }
-  if (timed_) {
-    glFinish();
-    peel_ms_ = clock.milliseconds();
-  }
+  peel_ms_ = timed_ms(timed_, clock);
 }
 
 void GlassMethod::set_class_uniforms(int refraction_class) {
@@ -396,17 +381,11 @@ void GlassMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 ji
   glDisable(GL_BLEND);
   int layer_of_class[kGlassClasses];
   draw_class_images(camera, classes, frustum.projection * frustum.view, layer_of_class);
-  double scene_ms = 0.0;
-  if (stats != nullptr) {
-    glFinish();
-    scene_ms = clock.milliseconds() - peel_ms_;
-  }
+  const double scene_ms = timed_ms(timed_, clock) - peel_ms_;
   composite(camera, target, jitter, frustum, layer_of_class);
   if (stats == nullptr)
     return;
-  glFinish();
-  stats->milliseconds += clock.milliseconds();
-  stats->add_part("peeling", peel_ms_);
+  add_frame_time(stats, clock, "peeling", peel_ms_);
   stats->add_part("class images", scene_ms);
   stats->add_count("class images", double(classes.size()));
   stats->add_count("opaque vertices", double(vertex_count()));

@@ -128,11 +128,7 @@ void ImageSpaceRefractionMethod::render(const Camera& camera, Framebuffer& targe
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   render_maps(camera, target.width(), target.height());
-  double pass_ms = 0.0;
-  if (stats != nullptr) {
-    glFinish();
-    pass_ms = clock.milliseconds();
-  }
+  const double pass_ms = timed_ms(stats != nullptr, clock);
   const ImageSpaceView view = passes_.camera_view(camera, target.width(), target.height(), jitter);
   target.bind();
   const GpuScene& scene = passes_.scene();
@@ -142,11 +138,7 @@ void ImageSpaceRefractionMethod::render(const Camera& camera, Framebuffer& targe
   for (int k = 0; k < int(scene.scene().objects.size()); ++k)
     if (is_dielectric(scene, k))
       passes_.draw_object(refract_program_, k);
-  if (stats != nullptr) {
-    glFinish();
-    stats->milliseconds += clock.milliseconds();
-    stats->add_part("screen maps", pass_ms);
-  }
+  add_frame_time(stats, clock, "screen maps", pass_ms);
 }
 
 bool ImageSpaceRefractionMethod::reload_shaders_if_changed(std::string& error) {

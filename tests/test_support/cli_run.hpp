@@ -1,5 +1,6 @@
 #pragma once
-// Runs the built `gfield` executable (GFIELD_CLI) for end-to-end tests: exit code, stdout, stderr.
+// Runs the built executables (`gfield`: GFIELD_CLI; `gfield-view`: GFIELD_VIEW in the runtime
+// tests) for end-to-end tests: exit code, stdout, stderr.
 
 #include <sys/wait.h>
 
@@ -18,11 +19,11 @@ struct CliRun {
   std::string err;
 };
 
-/// Runs `gfield ARGS` through the shell (ARGS is shell syntax).
-inline CliRun run_cli(const std::string& args) {
+/// Runs `EXECUTABLE ARGS` through the shell (ARGS is shell syntax).
+inline CliRun run_program(const std::string& executable, const std::string& args) {
   const std::string err_path =
       std::string(GFIELD_TEST_TMP) + "/cli_stderr_" + std::to_string(::getpid()) + ".txt";
-  const std::string command = std::string(GFIELD_CLI) + " " + args + " 2>" + err_path;
+  const std::string command = executable + " " + args + " 2>" + err_path;
   CliRun run;
   FILE* pipe = popen(command.c_str(), "r");
   std::array<char, 4096> buffer;
@@ -36,6 +37,11 @@ inline CliRun run_cli(const std::string& args) {
   run.err.assign(std::istreambuf_iterator<char>(in), {});
   std::remove(err_path.c_str());
   return run;
+}
+
+/// Runs `gfield ARGS`.
+inline CliRun run_cli(const std::string& args) {
+  return run_program(GFIELD_CLI, args);
 }
 
 }  // namespace gfield::test
