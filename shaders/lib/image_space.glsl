@@ -1,4 +1,4 @@
-// Shared pieces of the image-space methods (runtime/methods/image_space.cpp): the camera's
+// Shared pieces of the image-space methods (runtime/methods/image_space_passes.cpp): the camera's
 // projection to and from screen buffers, forward shading of opaque surfaces, the ray / depth-map
 // intersection by binary search of Davis & Wyman 2007 (section 3), and what a ray leaving a
 // refractor sees (nearby geometry, then the environment).
