@@ -6,6 +6,8 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "geometry/edge_key.hpp"
+
 namespace gfield {
 namespace {
 
@@ -50,12 +52,12 @@ std::vector<std::vector<int>> split_compressed_regions(const TriangleMesh& mesh,
   for (size_t f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
       const glm::ivec3& t = mesh.triangles[f];
-      directed[(uint64_t(uint32_t(t[k])) << 32) | uint32_t(t[(k + 1) % 3])] = int(f);
+      directed[half_edge_key(t[k], t[(k + 1) % 3])] = int(f);
     }
   for (size_t f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
       const glm::ivec3& t = mesh.triangles[f];
-      auto it = directed.find((uint64_t(uint32_t(t[(k + 1) % 3])) << 32) | uint32_t(t[k]));
+      auto it = directed.find(half_edge_key(t[(k + 1) % 3], t[k]));
       if (it != directed.end())
         neighbours[f][k] = it->second;
     }

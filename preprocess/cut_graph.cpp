@@ -10,14 +10,10 @@
 #include <queue>
 #include <unordered_map>
 
+#include "geometry/edge_key.hpp"
+
 namespace gfield {
 namespace {
-
-uint64_t edge_key(int a, int b) {
-  if (a > b)
-    std::swap(a, b);
-  return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
-}
 
 /// Undirected edges with their faces (one or two) and the vertex-edge adjacency.
 struct EdgeGraph {
@@ -62,12 +58,12 @@ std::vector<Edge> boundary_edges(const TriangleMesh& mesh) {
   std::unordered_map<uint64_t, char> directed;
   for (const glm::ivec3& t : mesh.triangles)
     for (int k = 0; k < 3; ++k)
-      directed[(uint64_t(uint32_t(t[k])) << 32) | uint32_t(t[(k + 1) % 3])] = 1;
+      directed[half_edge_key(t[k], t[(k + 1) % 3])] = 1;
   std::vector<Edge> edges;
   for (const glm::ivec3& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
-      if (!directed.count((uint64_t(uint32_t(b)) << 32) | uint32_t(a)))
+      if (!directed.count(half_edge_key(b, a)))
         edges.push_back({a, b});
     }
   return edges;

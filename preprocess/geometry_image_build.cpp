@@ -10,9 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geometry/edge_key.hpp"
+#include "geometry/outward_normals.hpp"
 #include "preprocess/chart_split.hpp"
 #include "preprocess/cut_graph.hpp"
-#include "geometry/outward_normals.hpp"
 #include "preprocess/parameterize.hpp"
 #include "preprocess/rasterize.hpp"
 #include "preprocess/surface_distance.hpp"
@@ -61,12 +62,12 @@ Component make_component(const TriangleMesh& mesh, std::vector<int> faces) {
   std::unordered_map<uint64_t, int> directed;
   for (const glm::ivec3& t : c.mesh.triangles)
     for (int k = 0; k < 3; ++k)
-      directed[(uint64_t(uint32_t(t[k])) << 32) | uint32_t(t[(k + 1) % 3])] = t[(k + 1) % 3];
+      directed[half_edge_key(t[k], t[(k + 1) % 3])] = t[(k + 1) % 3];
   std::unordered_map<int, int> boundary_next;
   size_t interior = 0;
   for (const auto& [key, target] : directed) {
-    const int source = int(key >> 32);
-    if (directed.count((uint64_t(uint32_t(target)) << 32) | uint32_t(source)))
+    const int source = half_edge_source(key);
+    if (directed.count(half_edge_key(target, source)))
       ++interior;
     else
       boundary_next[target] = source;  // boundary halfedges, reversed: any consistent walk
@@ -292,11 +293,11 @@ TriangleMesh geometry_image_surface(const GeometryImage& image) {
   return surface;
 }
 
-bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions& options,
-                          GeometryImage& image, ParameterizedMesh& parameterized,
-                          GeometryImageReport& report, std::string& error) {
-  const auto start = Clock::now();
-  report = {};
+namespace {
+
+/// False with an error for an image size or face count outside the documented limits.
+bool check_build_input(const TriangleMesh& input, const GeometryImageOptions& options,
+                       std::string& error) {
   if (options.size < kMinImageSize || options.size > kMaxImageSize) {
     error = "image size " + std::to_string(options.size) + " is outside [" +
             std::to_string(kMinImageSize) + ", " + std::to_string(kMaxImageSize) + "]";
@@ -311,14 +312,17 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
     error = "the mesh has no faces";
     return false;
   }
+  return true;
+}
 
-  // Repair.
-  auto stage = Clock::now();
-  RepairedMesh repaired;
+/// Repairs `input` and splits it into components (the largest only, unless all are asked for).
+bool repair_and_split(const TriangleMesh& input, const GeometryImageOptions& options,
+                      RepairedMesh& repaired, std::vector<Component>& components,
+                      GeometryImageReport& report, std::string& error) {
   if (!repair_mesh(input, options.holes, repaired, error))
     return false;
   report.repair = repaired.report;
-  std::vector<Component> components = split_components(repaired.mesh);
+  components = split_components(repaired.mesh);
   report.components = components.size();
   if (options.components == ComponentSelection::kLargest && components.size() > 1) {
     for (size_t c = 1; c < components.size(); ++c)
@@ -326,16 +330,19 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
     report.dropped_components = components.size() - 1;
     components.resize(1);
   }
-  report.seconds.repair = seconds_since(stage);
+  return true;
+}
 
-  // Parameterise each component (and the protrusions cut from it).
-  stage = Clock::now();
+/// Parameterises each component and the protrusions cut from it: one chart per piece, in
+/// `components` and `charts` (same order), each reported.
+bool parameterize_pieces(const TriangleMesh& mesh, std::vector<Component>& components,
+                         const GeometryImageOptions& options, std::vector<Chart>& charts,
+                         GeometryImageReport& report, std::string& error) {
   std::vector<Piece> pieces;
   for (size_t c = 0; c < components.size(); ++c)
-    if (!chart_pieces(repaired.mesh, std::move(components[c]), c, 0, false, options, pieces, error))
+    if (!chart_pieces(mesh, std::move(components[c]), c, 0, false, options, pieces, error))
       return false;
   components.clear();
-  std::vector<Chart> charts;
   for (Piece& piece : pieces) {
     ChartReport& chart_report = piece.report;
     const Component& component = piece.component;
@@ -354,20 +361,35 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
     components.push_back(std::move(piece.component));
     charts.push_back(std::move(piece.chart));
   }
-  report.seconds.parameterize = seconds_since(stage);
+  return true;
+}
 
-  // Pack.
-  stage = Clock::now();
-  std::vector<double> areas;
+/// The parameterised mesh: the charted faces with compact vertices (corner uvs come later).
+ParameterizedMesh charted_mesh(const TriangleMesh& mesh, const std::vector<Component>& components) {
+  ParameterizedMesh parameterized;
+  std::vector<int> compact(mesh.positions.size(), -1);
   for (const Component& c : components)
-    areas.push_back(c.area);
-  std::vector<ChartRect> rects;
-  if (!pack_charts(areas, options.size, options.gutter, rects, error))
-    return false;
-  report.seconds.pack = seconds_since(stage);
+    for (int f : c.faces) {
+      glm::ivec3 t;
+      for (int k = 0; k < 3; ++k) {
+        int& v = compact[mesh.triangles[f][k]];
+        if (v < 0) {
+          v = int(parameterized.mesh.positions.size());
+          parameterized.mesh.positions.push_back(mesh.positions[mesh.triangles[f][k]]);
+        }
+        t[k] = v;
+      }
+      parameterized.mesh.triangles.push_back(t);
+    }
+  return parameterized;
+}
 
-  // Rasterise.
-  stage = Clock::now();
+/// Rasterises the packed charts into `image` (its box: the padded bounds of the charted mesh)
+/// and gives the parameterised mesh its corner uvs.
+void rasterize_image(const TriangleMesh& mesh, const std::vector<Component>& components,
+                     std::vector<Chart>& charts, const std::vector<ChartRect>& rects,
+                     const GeometryImageOptions& options, GeometryImage& image,
+                     ParameterizedMesh& parameterized, GeometryImageReport& report) {
   std::vector<RasterChart> raster(components.size());
   for (size_t c = 0; c < components.size(); ++c) {
     raster[c].faces = components[c].faces;
@@ -376,31 +398,13 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
     raster[c].rect = rects[c];
     report.charts[c].rect = rects[c];
   }
-  // The parameterised mesh: kept faces, compact vertices (image uvs per corner below), and the
-  // box of the image: the padded bounds of its vertices.
-  parameterized = {};
-  std::vector<int> compact(repaired.mesh.positions.size(), -1);
-  for (const Component& c : components)
-    for (int f : c.faces) {
-      glm::ivec3 t;
-      for (int k = 0; k < 3; ++k) {
-        int& v = compact[repaired.mesh.triangles[f][k]];
-        if (v < 0) {
-          v = int(parameterized.mesh.positions.size());
-          parameterized.mesh.positions.push_back(
-              repaired.mesh.positions[repaired.mesh.triangles[f][k]]);
-        }
-        t[k] = v;
-      }
-      parameterized.mesh.triangles.push_back(t);
-    }
+  parameterized = charted_mesh(mesh, components);
   std::vector<glm::vec3> box_points(parameterized.mesh.positions.begin(),
                                     parameterized.mesh.positions.end());
   image.box = padded_bounds(box_points.data(), box_points.size(), kBoxPadding);
-
-  const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(repaired.mesh);
+  const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
   std::vector<glm::vec2> face_uv;
-  rasterize_charts(repaired.mesh, normals, raster, options.size, image.box, image, face_uv);
+  rasterize_charts(mesh, normals, raster, options.size, image.box, image, face_uv);
   for (const Component& c : components)
     for (int f : c.faces)
       for (int k = 0; k < 3; ++k)
@@ -409,11 +413,12 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
   for (float a : image.coverage)
     covered += a > 0.0f;
   report.coverage = double(covered) / double(image.coverage.size());
-  report.seconds.rasterize = seconds_since(stage);
+}
 
-  // Route summary: "orbifold", or "orbifold + slit+disk x3".
+/// "orbifold", or "orbifold + slit+disk x3": the charts' routes, counted.
+std::string route_summary(const std::vector<ChartReport>& charts) {
   std::vector<std::pair<std::string, int>> routes;
-  for (const ChartReport& chart : report.charts) {
+  for (const ChartReport& chart : charts) {
     auto it = std::find_if(routes.begin(), routes.end(),
                            [&](const auto& r) { return r.first == chart.route; });
     if (it == routes.end())
@@ -421,77 +426,127 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
     else
       ++it->second;
   }
+  std::string summary;
   for (size_t r = 0; r < routes.size(); ++r)
-    report.route += (r ? " + " : "") + routes[r].first +
-                    (routes[r].second > 1 ? " x" + std::to_string(routes[r].second) : "");
+    summary += (r ? " + " : "") + routes[r].first +
+               (routes[r].second > 1 ? " x" + std::to_string(routes[r].second) : "");
+  return summary;
+}
 
-  // Measure.
-  stage = Clock::now();
+/// Conformal distortion (ratio of the map's singular values) of face f of the map surface ->
+/// image uv, and its surface and uv areas; the ratio is -1 for a degenerate surface face.
+double face_distortion(const ParameterizedMesh& parameterized, size_t f, double& surface_area,
+                       double& uv_area) {
+  const TriangleMesh& pm = parameterized.mesh;
+  const glm::ivec3& t = pm.triangles[f];
+  const glm::dvec3 e1 = pm.positions[t[1]] - pm.positions[t[0]];
+  const glm::dvec3 e2 = pm.positions[t[2]] - pm.positions[t[0]];
+  const glm::dvec2 u0 = parameterized.corner_uv[3 * f], u1 = parameterized.corner_uv[3 * f + 1],
+                   u2 = parameterized.corner_uv[3 * f + 2];
+  surface_area = 0.5 * glm::length(glm::cross(e1, e2));
+  uv_area = 0.5 * std::abs((u1.x - u0.x) * (u2.y - u0.y) - (u1.y - u0.y) * (u2.x - u0.x));
+  const double l1 = glm::length(e1);
+  if (!(surface_area > 0.0) || !(l1 > 0.0))
+    return -1.0;
+  // Local frame of the surface triangle; J maps it onto the uv triangle.
+  const glm::dvec2 q1(l1, 0.0), q2(glm::dot(e2, e1) / l1, 2.0 * surface_area / l1);
+  const glm::dmat2 surface_edges(q1, q2), uv_edges(u1 - u0, u2 - u0);
+  const glm::dmat2 j = uv_edges * glm::inverse(surface_edges);
+  // Singular values of a 2x2 matrix.
+  const double a = j[0][0], b = j[1][0], c = j[0][1], d = j[1][1];
+  const double s1 = std::hypot(a + d, c - b) / 2.0, s2 = std::hypot(a - d, c + b) / 2.0;
+  const double sigma1 = s1 + s2, sigma2 = std::abs(s1 - s2);
+  return sigma2 > 0.0 ? sigma1 / sigma2 : 1e30;
+}
+
+/// Area-weighted conformal distortion and area-ratio percentiles of the map into `report`.
+void measure_distortion(const ParameterizedMesh& parameterized, GeometryImageReport& report) {
+  const size_t faces = parameterized.mesh.triangles.size();
+  std::vector<double> surface_area(faces), uv_area(faces), sigma_ratio(faces);
+  double surface_total = 0.0, uv_total = 0.0;
+  for (size_t f = 0; f < faces; ++f) {
+    sigma_ratio[f] = face_distortion(parameterized, f, surface_area[f], uv_area[f]);
+    surface_total += surface_area[f];
+    uv_total += uv_area[f];
+  }
+  // Degenerate uv faces (counted apart) are left out of the conformal distortion.
+  std::vector<std::pair<double, double>> conformal, area_ratio;
+  for (size_t f = 0; f < faces; ++f) {
+    if (sigma_ratio[f] >= 1.0 && uv_area[f] > 1e-12 * uv_total)
+      conformal.push_back({sigma_ratio[f], surface_area[f]});
+    if (surface_area[f] > 0.0 && uv_total > 0.0)
+      area_ratio.push_back(
+          {(uv_area[f] / uv_total) / (surface_area[f] / surface_total), surface_area[f]});
+  }
+  double weighted = 0.0, weight = 0.0;
+  for (const auto& [value, w] : conformal) {
+    weighted += value * w;
+    weight += w;
+  }
+  report.conformal_mean = weight > 0.0 ? weighted / weight : 0.0;
+  report.conformal_p95 = weighted_percentile(conformal, 0.95);
+  report.area_p5 = weighted_percentile(area_ratio, 0.05);
+  report.area_p50 = weighted_percentile(area_ratio, 0.50);
+  report.area_p95 = weighted_percentile(area_ratio, 0.95);
+}
+
+/// The input's diagonal and, with options.measure, the distortion and the reconstruction error
+/// both ways (mesh -> image surface and back) into `report`.
+void measure_image(const TriangleMesh& input, const GeometryImage& image,
+                   const ParameterizedMesh& parameterized, const GeometryImageOptions& options,
+                   GeometryImageReport& report) {
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   for (const glm::dvec3& p : input.positions) {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
   report.diagonal = glm::length(hi - lo);
-  if (options.measure) {
-    // Distortion of the map surface -> image uv, per face.
-    std::vector<std::pair<double, double>> conformal, area_ratio;
-    double surface_total = 0.0, uv_total = 0.0;
-    const TriangleMesh& pm = parameterized.mesh;
-    std::vector<double> surface_area(pm.triangles.size()), uv_area(pm.triangles.size());
-    std::vector<double> sigma_ratio(pm.triangles.size(), -1.0);
-    for (size_t f = 0; f < pm.triangles.size(); ++f) {
-      const glm::ivec3& t = pm.triangles[f];
-      const glm::dvec3 e1 = pm.positions[t[1]] - pm.positions[t[0]];
-      const glm::dvec3 e2 = pm.positions[t[2]] - pm.positions[t[0]];
-      const glm::dvec2 u0 = parameterized.corner_uv[3 * f], u1 = parameterized.corner_uv[3 * f + 1],
-                       u2 = parameterized.corner_uv[3 * f + 2];
-      surface_area[f] = 0.5 * glm::length(glm::cross(e1, e2));
-      uv_area[f] = 0.5 * std::abs((u1.x - u0.x) * (u2.y - u0.y) - (u1.y - u0.y) * (u2.x - u0.x));
-      surface_total += surface_area[f];
-      uv_total += uv_area[f];
-      const double l1 = glm::length(e1);
-      if (!(surface_area[f] > 0.0) || !(l1 > 0.0))
-        continue;
-      // Local frame of the surface triangle; J maps it onto the uv triangle.
-      const glm::dvec2 q1(l1, 0.0), q2(glm::dot(e2, e1) / l1, 2.0 * surface_area[f] / l1);
-      const glm::dmat2 surface_edges(q1, q2), uv_edges(u1 - u0, u2 - u0);
-      const glm::dmat2 j = uv_edges * glm::inverse(surface_edges);
-      // Singular values of a 2x2 matrix.
-      const double a = j[0][0], b = j[1][0], c = j[0][1], d = j[1][1];
-      const double s1 = std::hypot(a + d, c - b) / 2.0, s2 = std::hypot(a - d, c + b) / 2.0;
-      const double sigma1 = s1 + s2, sigma2 = std::abs(s1 - s2);
-      sigma_ratio[f] = sigma2 > 0.0 ? sigma1 / sigma2 : 1e30;
-    }
-    // Degenerate uv faces (counted apart) are left out of the conformal distortion.
-    for (size_t f = 0; f < pm.triangles.size(); ++f)
-      if (sigma_ratio[f] >= 1.0 && uv_area[f] > 1e-12 * uv_total)
-        conformal.push_back({sigma_ratio[f], surface_area[f]});
-    for (size_t f = 0; f < pm.triangles.size(); ++f)
-      if (surface_area[f] > 0.0 && uv_total > 0.0)
-        area_ratio.push_back(
-            {(uv_area[f] / uv_total) / (surface_area[f] / surface_total), surface_area[f]});
-    double weighted = 0.0, weight = 0.0;
-    for (const auto& [value, w] : conformal) {
-      weighted += value * w;
-      weight += w;
-    }
-    report.conformal_mean = weight > 0.0 ? weighted / weight : 0.0;
-    report.conformal_p95 = weighted_percentile(conformal, 0.95);
-    report.area_p5 = weighted_percentile(area_ratio, 0.05);
-    report.area_p50 = weighted_percentile(area_ratio, 0.50);
-    report.area_p95 = weighted_percentile(area_ratio, 0.95);
+  if (!options.measure)
+    return;
+  measure_distortion(parameterized, report);
+  const TriangleMesh surface = geometry_image_surface(image);
+  report.mesh_to_image = error_stats(
+      distances_to_surface(sample_surface(input, options.error_samples, options.seed), surface),
+      report.diagonal);
+  report.image_to_mesh = error_stats(
+      distances_to_surface(sample_surface(surface, options.error_samples, options.seed + 1), input),
+      report.diagonal);
+}
 
-    // Reconstruction error both ways.
-    const TriangleMesh surface = geometry_image_surface(image);
-    report.mesh_to_image = error_stats(
-        distances_to_surface(sample_surface(input, options.error_samples, options.seed), surface),
-        report.diagonal);
-    report.image_to_mesh =
-        error_stats(distances_to_surface(
-                        sample_surface(surface, options.error_samples, options.seed + 1), input),
-                    report.diagonal);
-  }
+}  // namespace
+
+bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions& options,
+                          GeometryImage& image, ParameterizedMesh& parameterized,
+                          GeometryImageReport& report, std::string& error) {
+  const auto start = Clock::now();
+  report = {};
+  if (!check_build_input(input, options, error))
+    return false;
+  auto stage = Clock::now();
+  RepairedMesh repaired;
+  std::vector<Component> components;
+  if (!repair_and_split(input, options, repaired, components, report, error))
+    return false;
+  report.seconds.repair = seconds_since(stage);
+  stage = Clock::now();
+  std::vector<Chart> charts;
+  if (!parameterize_pieces(repaired.mesh, components, options, charts, report, error))
+    return false;
+  report.seconds.parameterize = seconds_since(stage);
+  stage = Clock::now();
+  std::vector<double> areas;
+  for (const Component& c : components)
+    areas.push_back(c.area);
+  std::vector<ChartRect> rects;
+  if (!pack_charts(areas, options.size, options.gutter, rects, error))
+    return false;
+  report.seconds.pack = seconds_since(stage);
+  stage = Clock::now();
+  rasterize_image(repaired.mesh, components, charts, rects, options, image, parameterized, report);
+  report.route = route_summary(report.charts);
+  report.seconds.rasterize = seconds_since(stage);
+  stage = Clock::now();
+  measure_image(input, image, parameterized, options, report);
   report.seconds.measure = seconds_since(stage);
   report.seconds.total = seconds_since(start);
   return true;
