@@ -39,13 +39,9 @@ std::vector<std::vector<int>> face_regions(const std::vector<glm::ivec3>& neighb
   return regions;
 }
 
-}  // namespace
-
-std::vector<std::vector<int>> split_compressed_regions(const TriangleMesh& mesh,
-                                                       const std::vector<glm::dvec2>& corner_uv,
-                                                       const SplitOptions& options) {
+/// Face neighbours across edges (-1 on the boundary): F x 3, neighbour k across edge k -> k+1.
+std::vector<glm::ivec3> face_neighbours(const TriangleMesh& mesh) {
   const size_t nf = mesh.triangles.size();
-  // Face neighbours across edges (-1 on the boundary).
   std::vector<glm::ivec3> neighbours(nf, glm::ivec3(-1));
   std::unordered_map<uint64_t, int> directed;
   directed.reserve(3 * nf);
@@ -61,8 +57,19 @@ std::vector<std::vector<int>> split_compressed_regions(const TriangleMesh& mesh,
       if (it != directed.end())
         neighbours[f][k] = it->second;
     }
+  return neighbours;
+}
 
-  std::vector<double> area(nf), uv_area(nf);
+/// Faces whose uv area share is below options.threshold times their surface area share, grown
+/// by options.grow_rings rings of neighbours; `area` gets the F surface areas. Empty when the
+/// surface or its uvs have no area.
+std::vector<char> compressed_faces(const TriangleMesh& mesh,
+                                   const std::vector<glm::dvec2>& corner_uv,
+                                   const std::vector<glm::ivec3>& neighbours,
+                                   const SplitOptions& options, std::vector<double>& area) {
+  const size_t nf = mesh.triangles.size();
+  area.assign(nf, 0.0);
+  std::vector<double> uv_area(nf);
   double total = 0.0, uv_total = 0.0;
   for (size_t f = 0; f < nf; ++f) {
     const glm::ivec3& t = mesh.triangles[f];
@@ -87,16 +94,34 @@ std::vector<std::vector<int>> split_compressed_regions(const TriangleMesh& mesh,
             grown[neighbours[f][k]] = 1;
     marked.swap(grown);
   }
-  auto region_area = [&](const std::vector<int>& faces) {
-    double sum = 0.0;
-    for (int f : faces)
-      sum += area[f];
-    return sum;
-  };
+  return marked;
+}
+
+double region_area(const std::vector<int>& faces, const std::vector<double>& area) {
+  double sum = 0.0;
+  for (int f : faces)
+    sum += area[f];
+  return sum;
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> split_compressed_regions(const TriangleMesh& mesh,
+                                                       const std::vector<glm::dvec2>& corner_uv,
+                                                       const SplitOptions& options) {
+  const size_t nf = mesh.triangles.size();
+  const std::vector<glm::ivec3> neighbours = face_neighbours(mesh);
+  std::vector<double> area;
+  std::vector<char> marked = compressed_faces(mesh, corner_uv, neighbours, options, area);
+  if (marked.empty())
+    return {};
+  double total = 0.0;
+  for (double a : area)
+    total += a;
   // Keep the large compressed regions only.
   bool any = false;
   for (const std::vector<int>& region : face_regions(neighbours, marked)) {
-    const bool keep = region_area(region) >= options.min_area_fraction * total;
+    const bool keep = region_area(region, area) >= options.min_area_fraction * total;
     any |= keep;
     if (!keep)
       for (int f : region)
@@ -113,7 +138,7 @@ std::vector<std::vector<int>> split_compressed_regions(const TriangleMesh& mesh,
     return {};
   size_t largest = 0;
   for (size_t r = 1; r < rest_regions.size(); ++r)
-    if (region_area(rest_regions[r]) > region_area(rest_regions[largest]))
+    if (region_area(rest_regions[r], area) > region_area(rest_regions[largest], area))
       largest = r;
   for (size_t r = 0; r < rest_regions.size(); ++r)
     if (r != largest)

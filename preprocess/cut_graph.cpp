@@ -76,19 +76,28 @@ std::vector<Edge> path_edges(const std::vector<int>& path) {
   return edges;
 }
 
-std::vector<Edge> tree_cotree_cut(const TriangleMesh& mesh, int root) {
-  const EdgeGraph graph(mesh);
-  const size_t nv = mesh.positions.size(), nf = mesh.triangles.size();
+namespace {
 
-  // Vertex BFS tree, rooted at every boundary vertex when there is a boundary.
-  std::vector<int> parent_edge(nv, -1);
-  std::vector<char> reached(nv, 0), on_boundary(nv, 0);
+/// The vertex BFS tree of the tree-cotree cut, rooted at every boundary vertex when there is a
+/// boundary (else at `root`), across interior edges.
+struct VertexTree {
+  std::vector<int> parent_edge;   ///< per vertex, -1 at a root
+  std::vector<char> in_tree;      ///< per edge
+  std::vector<char> on_boundary;  ///< per vertex
+};
+
+VertexTree vertex_tree(const EdgeGraph& graph, size_t vertices, int root) {
+  VertexTree tree;
+  tree.parent_edge.assign(vertices, -1);
+  tree.in_tree.assign(graph.edges.size(), 0);
+  tree.on_boundary.assign(vertices, 0);
+  std::vector<char> reached(vertices, 0);
   std::deque<int> queue;
   for (size_t e = 0; e < graph.edges.size(); ++e)
     if (graph.boundary(int(e)))
-      on_boundary[graph.edges[e][0]] = on_boundary[graph.edges[e][1]] = 1;
-  for (size_t v = 0; v < nv; ++v)
-    if (on_boundary[v]) {
+      tree.on_boundary[graph.edges[e][0]] = tree.on_boundary[graph.edges[e][1]] = 1;
+  for (size_t v = 0; v < vertices; ++v)
+    if (tree.on_boundary[v]) {
       reached[v] = 1;
       queue.push_back(int(v));
     }
@@ -96,7 +105,6 @@ std::vector<Edge> tree_cotree_cut(const TriangleMesh& mesh, int root) {
     reached[root] = 1;
     queue.push_back(root);
   }
-  std::vector<char> in_tree(graph.edges.size(), 0);
   while (!queue.empty()) {
     const int v = queue.front();
     queue.pop_front();
@@ -105,22 +113,26 @@ std::vector<Edge> tree_cotree_cut(const TriangleMesh& mesh, int root) {
       if (reached[w] || graph.boundary(e))
         continue;
       reached[w] = 1;
-      parent_edge[w] = e;
-      in_tree[e] = 1;
+      tree.parent_edge[w] = e;
+      tree.in_tree[e] = 1;
       queue.push_back(w);
     }
   }
+  return tree;
+}
 
-  // Face spanning tree across interior edges outside the vertex tree.
-  std::vector<char> face_reached(nf, 0), in_cotree(graph.edges.size(), 0);
-  for (size_t start = 0; start < nf; ++start) {
+/// The face spanning tree across interior edges outside the vertex tree: per edge, 1 when in it.
+std::vector<char> face_cotree(const EdgeGraph& graph, size_t faces,
+                              const std::vector<char>& in_tree) {
+  std::vector<char> face_reached(faces, 0), in_cotree(graph.edges.size(), 0);
+  for (size_t start = 0; start < faces; ++start) {
     if (face_reached[start])
       continue;
     face_reached[start] = 1;
-    std::deque<int> faces{int(start)};
-    while (!faces.empty()) {
-      const int f = faces.front();
-      faces.pop_front();
+    std::deque<int> queue{int(start)};
+    while (!queue.empty()) {
+      const int f = queue.front();
+      queue.pop_front();
       for (int k = 0; k < 3; ++k) {
         const int e = graph.face_edges[f][k];
         if (in_tree[e] || graph.boundary(e))
@@ -130,24 +142,29 @@ std::vector<Edge> tree_cotree_cut(const TriangleMesh& mesh, int root) {
           continue;
         face_reached[g] = 1;
         in_cotree[e] = 1;
-        faces.push_back(g);
+        queue.push_back(g);
       }
     }
   }
+  return in_cotree;
+}
 
-  // Each leftover edge closes a loop through the vertex tree: cut along it (paths as a
-  // symmetric difference, so a shared stem to the root cancels).
+/// Each edge in neither tree closes a loop through the vertex tree: the cut is the union of
+/// those loops (each a symmetric difference of the two paths to the root, so a shared stem
+/// cancels). Per edge, 1 when cut.
+std::vector<char> loop_edges(const EdgeGraph& graph, const VertexTree& tree,
+                             const std::vector<char>& in_cotree) {
   std::vector<char> in_cut(graph.edges.size(), 0), in_loop(graph.edges.size(), 0);
   std::vector<int> loop;
   for (size_t e = 0; e < graph.edges.size(); ++e) {
-    if (in_tree[e] || in_cotree[e] || graph.boundary(int(e)))
+    if (tree.in_tree[e] || in_cotree[e] || graph.boundary(int(e)))
       continue;
     loop.assign(1, int(e));
     for (int end = 0; end < 2; ++end) {
       int v = graph.edges[e][end];
-      while (parent_edge[v] >= 0) {
-        loop.push_back(parent_edge[v]);
-        v = graph.other(parent_edge[v], v);
+      while (tree.parent_edge[v] >= 0) {
+        loop.push_back(tree.parent_edge[v]);
+        v = graph.other(tree.parent_edge[v], v);
       }
     }
     for (int l : loop)
@@ -157,13 +174,18 @@ std::vector<Edge> tree_cotree_cut(const TriangleMesh& mesh, int root) {
       in_loop[l] = 0;
     }
   }
-  // Prune dangling branches (degree-1 vertices off the boundary).
-  std::vector<int> degree(nv, 0);
+  return in_cut;
+}
+
+/// Removes dangling branches of the cut (degree-1 vertices off the boundary).
+void prune_branches(const EdgeGraph& graph, const std::vector<char>& on_boundary,
+                    std::vector<char>& in_cut) {
+  std::vector<int> degree(on_boundary.size(), 0);
   for (size_t e = 0; e < graph.edges.size(); ++e)
     if (in_cut[e])
       ++degree[graph.edges[e][0]], ++degree[graph.edges[e][1]];
   std::vector<int> leaves;
-  for (size_t v = 0; v < nv; ++v)
+  for (size_t v = 0; v < degree.size(); ++v)
     if (degree[v] == 1 && !on_boundary[v])
       leaves.push_back(int(v));
   while (!leaves.empty()) {
@@ -182,6 +204,16 @@ std::vector<Edge> tree_cotree_cut(const TriangleMesh& mesh, int root) {
       break;
     }
   }
+}
+
+}  // namespace
+
+std::vector<Edge> tree_cotree_cut(const TriangleMesh& mesh, int root) {
+  const EdgeGraph graph(mesh);
+  const VertexTree tree = vertex_tree(graph, mesh.positions.size(), root);
+  const std::vector<char> in_cotree = face_cotree(graph, mesh.triangles.size(), tree.in_tree);
+  std::vector<char> in_cut = loop_edges(graph, tree, in_cotree);
+  prune_branches(graph, tree.on_boundary, in_cut);
   std::vector<Edge> cut;
   for (size_t e = 0; e < graph.edges.size(); ++e)
     if (in_cut[e])

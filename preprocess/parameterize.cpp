@@ -198,6 +198,74 @@ void count_uv_faults(const std::vector<glm::dvec2>& corner_uv, size_t& flipped,
   }
 }
 
+namespace {
+
+/// The orbifold's three cones by farthest-point sampling (chart.cones) and the seam: a path
+/// first -> duplicated and a second path duplicated -> second avoiding the first, so that the
+/// seam is a simple path.
+bool orbifold_seam(const TriangleMesh& component, Chart& chart, std::vector<int>& path1,
+                   std::vector<int>& path2, std::string& error) {
+  const std::vector<int> far = farthest_points(component, 3);
+  if (far[0] == far[1] || far[1] == far[2] || far[0] == far[2]) {
+    error = "orbifold: the component has fewer than three distinct cone vertices";
+    return false;
+  }
+  const int first = far[0], duplicated = far[2], second = far[1];
+  path1 = shortest_path(component, first, duplicated);
+  std::vector<char> blocked(component.positions.size(), 0);
+  for (int v : path1)
+    blocked[v] = v != duplicated;
+  path2 = shortest_path(component, duplicated, second, blocked);
+  if (path1.empty() || path2.empty()) {
+    error = "orbifold: no seam path between the cones";
+    return false;
+  }
+  chart.cones = {first, duplicated, second};
+  return true;
+}
+
+using SeamVertexIndices = boost::associative_property_map<std::unordered_map<SeamVertex, int>>;
+
+/// One Orbifold Tutte solve with `weights`: the corner uvs into `chart` (in [0,1]^2). True when
+/// it is finite and has no flipped face; `error` says why not.
+bool solve_orbifold(const TriangleMesh& component, const SurfaceMesh& sm, SeamMesh& mesh,
+                    const std::unordered_map<SeamVertex, SMP::Cone_type>& cones,
+                    SeamVertexIndices vimap, SMP::Weight_type weights, Chart& chart,
+                    std::string& error) {
+  std::unordered_map<SeamVertex, Point2> uvs;
+  boost::associative_property_map<std::unordered_map<SeamVertex, Point2>> uvmap(uvs);
+  SMP::Orbifold_Tutte_parameterizer_3<SeamMesh, SparseLU> parameterizer(SMP::Square, weights);
+  const auto border = PMP::longest_border(mesh).first;
+  const SMP::Error_code code = parameterizer.parameterize(mesh, border, cones, uvmap, vimap);
+  if (code != SMP::OK) {
+    error = "orbifold: " + parameterization_error_message(code);
+    return false;
+  }
+  chart.corner_uv.assign(3 * component.triangles.size(), glm::dvec2(0.0));
+  for (auto f : sm.faces()) {
+    const glm::ivec3& t = component.triangles[size_t(f)];
+    for (auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      const int v = int(CGAL::target(h.tmhd, sm));
+      const int corner = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+      const Point2& p = get(uvmap, target(h, mesh));
+      // CGAL's square orbifold tile has its unique cones at (-1,-1) and (1,1).
+      chart.corner_uv[3 * size_t(f) + corner] = {(p.x() + 1.0) / 2.0, (p.y() + 1.0) / 2.0};
+    }
+  }
+  if (!all_finite(chart.corner_uv)) {
+    error = "orbifold: the solution is not finite (degenerate triangles)";
+    return false;
+  }
+  chart.weights = weights == SMP::Cotangent ? "cotangent" : "mean value";
+  orient_and_count(chart);
+  if (chart.flipped == 0)
+    return true;
+  error = "orbifold: " + std::to_string(chart.flipped) + " flipped faces";
+  return false;
+}
+
+}  // namespace
+
 bool parameterize_orbifold(const TriangleMesh& component, Chart& chart, std::string& error) {
   chart = {};
   chart.orbifold = true;
@@ -206,25 +274,9 @@ bool parameterize_orbifold(const TriangleMesh& component, Chart& chart, std::str
     error = "orbifold: the component is not an oriented manifold";
     return false;
   }
-  // Cones: farthest-point sampling; the seam runs first -> duplicated -> second, the second
-  // path avoiding the first so the seam is a simple path.
-  const std::vector<int> far = farthest_points(component, 3);
-  if (far[0] == far[1] || far[1] == far[2] || far[0] == far[2]) {
-    error = "orbifold: the component has fewer than three distinct cone vertices";
+  std::vector<int> path1, path2;
+  if (!orbifold_seam(component, chart, path1, path2, error))
     return false;
-  }
-  const int first = far[0], duplicated = far[2], second = far[1];
-  const std::vector<int> path1 = shortest_path(component, first, duplicated);
-  std::vector<char> blocked(component.positions.size(), 0);
-  for (int v : path1)
-    blocked[v] = v != duplicated;
-  const std::vector<int> path2 = shortest_path(component, duplicated, second, blocked);
-  if (path1.empty() || path2.empty()) {
-    error = "orbifold: no seam path between the cones";
-    return false;
-  }
-  chart.cones = {first, duplicated, second};
-
   SeamEdgeMap seam_edges =
       sm.add_property_map<SurfaceMesh::Edge_index, bool>("e:seam", false).first;
   SeamVertexMap seam_vertices = sm.add_property_map<VertexIndex, bool>("v:seam", false).first;
@@ -237,51 +289,21 @@ bool parameterize_orbifold(const TriangleMesh& component, Chart& chart, std::str
       }
       ++chart.seam_edges;
     }
-
   std::unordered_map<SeamVertex, int> indices;
   for (SeamVertex v : vertices(mesh))
     indices.emplace(v, int(indices.size()));
-  boost::associative_property_map<std::unordered_map<SeamVertex, int>> vimap(indices);
   std::unordered_map<SeamVertex, SMP::Cone_type> cones;
-  const std::vector<VertexIndex> cone_vertices{VertexIndex(first), VertexIndex(duplicated),
-                                               VertexIndex(second)};
+  const std::vector<VertexIndex> cone_vertices{
+      VertexIndex(chart.cones[0]), VertexIndex(chart.cones[1]), VertexIndex(chart.cones[2])};
   if (!SMP::locate_cones(mesh, cone_vertices.begin(), cone_vertices.end(), cones)) {
     error = "orbifold: invalid cones";
     return false;
   }
-  const auto border = PMP::longest_border(mesh).first;
-
   // Cotangent weights approximate a conformal map; mean-value weights are always one-to-one.
-  for (SMP::Weight_type weights : {SMP::Cotangent, SMP::Mean_value}) {
-    std::unordered_map<SeamVertex, Point2> uvs;
-    boost::associative_property_map<std::unordered_map<SeamVertex, Point2>> uvmap(uvs);
-    SMP::Orbifold_Tutte_parameterizer_3<SeamMesh, SparseLU> parameterizer(SMP::Square, weights);
-    const SMP::Error_code code = parameterizer.parameterize(mesh, border, cones, uvmap, vimap);
-    if (code != SMP::OK) {
-      error = "orbifold: " + parameterization_error_message(code);
-      continue;
-    }
-    chart.corner_uv.assign(3 * component.triangles.size(), glm::dvec2(0.0));
-    for (auto f : sm.faces()) {
-      const glm::ivec3& t = component.triangles[size_t(f)];
-      for (auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
-        const int v = int(CGAL::target(h.tmhd, sm));
-        const int corner = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-        const Point2& p = get(uvmap, target(h, mesh));
-        // CGAL's square orbifold tile has its unique cones at (-1,-1) and (1,1).
-        chart.corner_uv[3 * size_t(f) + corner] = {(p.x() + 1.0) / 2.0, (p.y() + 1.0) / 2.0};
-      }
-    }
-    if (!all_finite(chart.corner_uv)) {
-      error = "orbifold: the solution is not finite (degenerate triangles)";
-      continue;
-    }
-    chart.weights = weights == SMP::Cotangent ? "cotangent" : "mean value";
-    orient_and_count(chart);
-    if (chart.flipped == 0)
+  for (SMP::Weight_type weights : {SMP::Cotangent, SMP::Mean_value})
+    if (solve_orbifold(component, sm, mesh, cones, SeamVertexIndices(indices), weights, chart,
+                       error))
       return true;
-    error = "orbifold: " + std::to_string(chart.flipped) + " flipped faces";
-  }
   return !chart.corner_uv.empty() && all_finite(chart.corner_uv) && chart.flipped == 0;
 }
 

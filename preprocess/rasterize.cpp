@@ -59,106 +59,95 @@ std::vector<ChartTransform> orbifold_copies(glm::dvec2 lo, glm::dvec2 hi) {
   return copies;
 }
 
-void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
-                      const std::vector<RasterChart>& charts, int size, const Box& box,
-                      GeometryImage& image, std::vector<glm::vec2>& face_uv) {
-  const size_t texels = size_t(size) * size_t(size);
-  image.size = size;
-  image.position.assign(texels, glm::vec3(0.0f));
-  image.normal.assign(texels, glm::vec3(0.0f, 0.0f, 1.0f));
-  image.coverage.assign(texels, 0.0f);
-  face_uv.assign(3 * mesh.triangles.size(), glm::vec2(0.0f));
-  // Per texel, the smallest barycentric weight of the triangle that wrote it: the triangle that
-  // holds the centre most firmly wins (ties: the first).
-  std::vector<double> best(texels, -std::numeric_limits<double>::infinity());
-  const double tolerance = 1e-6;
+namespace {
 
-  for (const RasterChart& chart : charts) {
-    const ChartRect& rect = chart.rect;
-    std::vector<ChartTransform> copies{ChartTransform{}};
-    if (chart.orbifold) {
-      glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-      for (const glm::dvec2& uv : chart.corner_uv) {
-        lo = glm::min(lo, uv);
-        hi = glm::max(hi, uv);
-      }
-      copies = orbifold_copies(lo, hi);
+/// Writes the texels whose centres lie in triangle `t` (its image positions q, texels, counter-
+/// clockwise) of the chart's `rect`, where it holds the centre more firmly than what is there:
+/// `best` per texel is the smallest barycentric weight of the triangle that wrote it.
+void rasterize_triangle(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
+                        const glm::ivec3& t, const glm::dvec2 q[3], const ChartRect& rect,
+                        GeometryImage& image, std::vector<double>& best) {
+  const double tolerance = 1e-6;
+  const double area = cross(q[1] - q[0], q[2] - q[0]);
+  if (!(area > 0.0))
+    return;  // degenerate in uv: its neighbours cover its texels
+  const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2]));
+  const glm::dvec2 hi = glm::max(q[0], glm::max(q[1], q[2]));
+  const int i0 = std::max(rect.x, int(std::ceil(lo.x - 0.5)));
+  const int i1 = std::min(rect.x + rect.size - 1, int(std::floor(hi.x - 0.5)));
+  const int j0 = std::max(rect.y, int(std::ceil(lo.y - 0.5)));
+  const int j1 = std::min(rect.y + rect.size - 1, int(std::floor(hi.y - 0.5)));
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
+      const glm::dvec2 c(i + 0.5, j + 0.5);
+      glm::dvec3 w(cross(q[1] - c, q[2] - c), cross(q[2] - c, q[0] - c), cross(q[0] - c, q[1] - c));
+      w /= area;
+      const double weakest = std::min(w.x, std::min(w.y, w.z));
+      const size_t texel = size_t(j) * size_t(image.size) + size_t(i);
+      if (weakest < -tolerance || weakest <= best[texel])
+        continue;
+      best[texel] = weakest;
+      w = glm::max(w, glm::dvec3(0.0));
+      w /= w.x + w.y + w.z;
+      const glm::dvec3 p =
+          w.x * mesh.positions[t[0]] + w.y * mesh.positions[t[1]] + w.z * mesh.positions[t[2]];
+      const glm::dvec3 n = w.x * normals[t[0]] + w.y * normals[t[1]] + w.z * normals[t[2]];
+      const double length = glm::length(n);
+      image.position[texel] = glm::vec3(p);
+      image.normal[texel] = length > 0.0 ? glm::vec3(n / length) : glm::vec3(0, 0, 1);
+      image.coverage[texel] = 1.0f;
     }
-    auto to_texels = [&](glm::dvec2 uv) {
-      return glm::dvec2(rect.x, rect.y) + uv * double(rect.size);
-    };
+}
+
+/// The chart's copies: itself, or the orbifold tiling's copies that meet the unit square.
+std::vector<ChartTransform> chart_copies(const RasterChart& chart) {
+  if (!chart.orbifold)
+    return {ChartTransform{}};
+  glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const glm::dvec2& uv : chart.corner_uv) {
+    lo = glm::min(lo, uv);
+    hi = glm::max(hi, uv);
+  }
+  return orbifold_copies(lo, hi);
+}
+
+/// Image uv of every corner of the chart's faces into face_uv (3 per face of the mesh): one copy
+/// per face (orbifold: the copy holding the centroid).
+void chart_corner_uvs(const RasterChart& chart, const std::vector<ChartTransform>& copies, int size,
+                      std::vector<glm::vec2>& face_uv) {
+  const ChartRect& rect = chart.rect;
+  for (size_t local = 0; local < chart.faces.size(); ++local) {
+    const glm::dvec2* uv = &chart.corner_uv[3 * local];
+    const ChartTransform* chosen = &copies[0];
+    const glm::dvec2 centroid = (uv[0] + uv[1] + uv[2]) / 3.0;
     for (const ChartTransform& g : copies) {
-      for (size_t local = 0; local < chart.faces.size(); ++local) {
-        const glm::ivec3& t = mesh.triangles[chart.faces[local]];
-        const glm::dvec2 q[3] = {to_texels(g(chart.corner_uv[3 * local])),
-                                 to_texels(g(chart.corner_uv[3 * local + 1])),
-                                 to_texels(g(chart.corner_uv[3 * local + 2]))};
-        const double area = cross(q[1] - q[0], q[2] - q[0]);
-        if (!(area > 0.0))
-          continue;  // degenerate in uv: its neighbours cover its texels
-        const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2]));
-        const glm::dvec2 hi = glm::max(q[0], glm::max(q[1], q[2]));
-        const int i0 = std::max(rect.x, int(std::ceil(lo.x - 0.5)));
-        const int i1 = std::min(rect.x + rect.size - 1, int(std::floor(hi.x - 0.5)));
-        const int j0 = std::max(rect.y, int(std::ceil(lo.y - 0.5)));
-        const int j1 = std::min(rect.y + rect.size - 1, int(std::floor(hi.y - 0.5)));
-        for (int j = j0; j <= j1; ++j)
-          for (int i = i0; i <= i1; ++i) {
-            const glm::dvec2 c(i + 0.5, j + 0.5);
-            glm::dvec3 w(cross(q[1] - c, q[2] - c), cross(q[2] - c, q[0] - c),
-                         cross(q[0] - c, q[1] - c));
-            w /= area;
-            const double weakest = std::min(w.x, std::min(w.y, w.z));
-            const size_t texel = size_t(j) * size_t(size) + size_t(i);
-            if (weakest < -tolerance || weakest <= best[texel])
-              continue;
-            best[texel] = weakest;
-            w = glm::max(w, glm::dvec3(0.0));
-            w /= w.x + w.y + w.z;
-            const glm::dvec3 p = w.x * mesh.positions[t[0]] + w.y * mesh.positions[t[1]] +
-                                 w.z * mesh.positions[t[2]];
-            const glm::dvec3 n = w.x * normals[t[0]] + w.y * normals[t[1]] + w.z * normals[t[2]];
-            const double length = glm::length(n);
-            image.position[texel] = glm::vec3(p);
-            image.normal[texel] = length > 0.0 ? glm::vec3(n / length) : glm::vec3(0, 0, 1);
-            image.coverage[texel] = 1.0f;
-          }
+      const glm::dvec2 c = g(centroid);
+      if (c.x >= 0.0 && c.x <= 1.0 && c.y >= 0.0 && c.y <= 1.0) {
+        chosen = &g;
+        break;
       }
     }
-    // Image uv of every corner: one copy per face (orbifold: the copy holding the centroid).
-    for (size_t local = 0; local < chart.faces.size(); ++local) {
-      const glm::dvec2* uv = &chart.corner_uv[3 * local];
-      const ChartTransform* chosen = &copies[0];
-      const glm::dvec2 centroid = (uv[0] + uv[1] + uv[2]) / 3.0;
-      for (const ChartTransform& g : copies) {
-        const glm::dvec2 c = g(centroid);
-        if (c.x >= 0.0 && c.x <= 1.0 && c.y >= 0.0 && c.y <= 1.0) {
-          chosen = &g;
-          break;
-        }
-      }
-      for (int k = 0; k < 3; ++k)
-        face_uv[3 * size_t(chart.faces[local]) + k] =
-            glm::vec2(to_texels((*chosen)(uv[k])) / double(size));
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec2 texels = glm::dvec2(rect.x, rect.y) + (*chosen)(uv[k]) * double(rect.size);
+      face_uv[3 * size_t(chart.faces[local]) + k] = glm::vec2(texels / double(size));
     }
   }
+}
 
-  // Padding. The first ring around the charts extrapolates the surface linearly (2 p1 - p2
-  // along each direction with two covered texels, averaged, clamped to the box), so a bilinear
-  // lookup between a chart's last texel centre and its edge follows the surface instead of
-  // stopping at the last texel; further texels take the values of the nearest ring texel
-  // (breadth-first over 4-neighbours, in texel order, so the result is deterministic).
+/// The first ring around the charts extrapolates the surface linearly (2 p1 - p2 along each
+/// direction with two covered texels, averaged, clamped to the box), so a bilinear lookup
+/// between a chart's last texel centre and its edge follows the surface instead of stopping at
+/// the last texel. Returns the ring's texels.
+std::deque<size_t> extrapolate_first_ring(GeometryImage& image, const Box& box) {
+  const int size = image.size;
   const int di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};
   auto covered = [&](int i, int j) {
     return i >= 0 && j >= 0 && i < size && j < size &&
            image.coverage[size_t(j) * size_t(size) + size_t(i)] > 0.0f;
   };
-  std::vector<char> filled(texels, 0);
-  std::deque<size_t> queue;
-  for (size_t texel = 0; texel < texels; ++texel)
-    filled[texel] = image.coverage[texel] > 0.0f;
-  for (size_t texel = 0; texel < texels; ++texel) {
-    if (filled[texel])
+  std::deque<size_t> ring;
+  for (size_t texel = 0; texel < image.coverage.size(); ++texel) {
+    if (image.coverage[texel] > 0.0f)
       continue;
     const int i = int(texel % size_t(size)), j = int(texel / size_t(size));
     glm::vec3 position(0.0f), normal(0.0f);
@@ -186,8 +175,20 @@ void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& n
       image.position[texel] = image.position[nearest];
       image.normal[texel] = image.normal[nearest];
     }
-    queue.push_back(texel);
+    ring.push_back(texel);
   }
+  return ring;
+}
+
+/// Padding: the first ring extrapolated, further texels the values of the nearest ring texel
+/// (breadth-first over 4-neighbours, in texel order, so the result is deterministic).
+void pad_image(GeometryImage& image, const Box& box) {
+  const int size = image.size;
+  const int di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};
+  std::vector<char> filled(image.coverage.size(), 0);
+  for (size_t texel = 0; texel < filled.size(); ++texel)
+    filled[texel] = image.coverage[texel] > 0.0f;
+  std::deque<size_t> queue = extrapolate_first_ring(image, box);
   for (size_t texel : queue)
     filled[texel] = 1;
   while (!queue.empty()) {
@@ -207,6 +208,39 @@ void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& n
       queue.push_back(neighbour);
     }
   }
+}
+
+}  // namespace
+
+void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
+                      const std::vector<RasterChart>& charts, int size, const Box& box,
+                      GeometryImage& image, std::vector<glm::vec2>& face_uv) {
+  const size_t texels = size_t(size) * size_t(size);
+  image.size = size;
+  image.position.assign(texels, glm::vec3(0.0f));
+  image.normal.assign(texels, glm::vec3(0.0f, 0.0f, 1.0f));
+  image.coverage.assign(texels, 0.0f);
+  face_uv.assign(3 * mesh.triangles.size(), glm::vec2(0.0f));
+  // Per texel, the smallest barycentric weight of the triangle that wrote it: the triangle that
+  // holds the centre most firmly wins (ties: the first).
+  std::vector<double> best(texels, -std::numeric_limits<double>::infinity());
+  for (const RasterChart& chart : charts) {
+    const ChartRect& rect = chart.rect;
+    const std::vector<ChartTransform> copies = chart_copies(chart);
+    auto to_texels = [&](glm::dvec2 uv) {
+      return glm::dvec2(rect.x, rect.y) + uv * double(rect.size);
+    };
+    for (const ChartTransform& g : copies) {
+      for (size_t local = 0; local < chart.faces.size(); ++local) {
+        const glm::dvec2 q[3] = {to_texels(g(chart.corner_uv[3 * local])),
+                                 to_texels(g(chart.corner_uv[3 * local + 1])),
+                                 to_texels(g(chart.corner_uv[3 * local + 2]))};
+        rasterize_triangle(mesh, normals, mesh.triangles[chart.faces[local]], q, rect, image, best);
+      }
+    }
+    chart_corner_uvs(chart, copies, size, face_uv);
+  }
+  pad_image(image, box);
 }
 
 }  // namespace gfield

@@ -7,32 +7,26 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "geometry/mesh_io.hpp"
+#include "geometry/parameterized_mesh.hpp"
 #include "gfield/atomic_file.hpp"
 #include "gfield/exr_io.hpp"
 #include "preprocess/cli/commands.hpp"
 #include "preprocess/geometry_image_build.hpp"
-#include "geometry/mesh_io.hpp"
-#include "geometry/parameterized_mesh.hpp"
 
 namespace gfield {
 
-void add_image_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "image",
-      "Build the geometry image of a mesh: repair, conformal parameterisation (orbifold for "
-      "closed\n"
-      "genus 0, cut graph + conformal disk otherwise, one chart per component), resampling at\n"
-      "texel centres. Writes OUT (.gimage.exr) and, beside it, the parameterised mesh\n"
-      "(.gimage.obj: v, vt = image uv, f v/vt). Prints the report (route, times, uv faults,\n"
-      "coverage, distortion, reconstruction error).");
-  struct Arguments {
-    std::string mesh, output, json;
-    int size = 512;
-    std::string method = "auto", components = "all", holes = "all-but-longest",
-                protrusions = "split";
-    bool no_measure = false;
-  };
-  auto args = std::make_shared<Arguments>();
+namespace {
+
+struct ImageArguments {
+  std::string mesh, output, json;
+  int size = 512;
+  std::string method = "auto", components = "all", holes = "all-but-longest", protrusions = "split";
+  bool no_measure = false;
+};
+
+/// The options of `gfield image`, bound to `args`.
+void add_image_options(CLI::App* cmd, const std::shared_ptr<ImageArguments>& args) {
   cmd->add_option("MESH", args->mesh, "mesh file (.obj, .ply, .off, .stl)")->required();
   cmd->add_option("-o,--output", args->output, "output geometry image (NAME.gimage.exr)")
       ->required();
@@ -62,53 +56,76 @@ void add_image_command(CLI::App& app) {
   cmd->add_option("--json", args->json, "also write the report as JSON to this file");
   cmd->add_flag("--no-measure", args->no_measure,
                 "skip distortion and reconstruction error (faster)");
-  cmd->callback([args] {
-    TriangleMesh mesh;
-    std::string error;
-    if (!load_mesh(args->mesh, mesh, error))
+}
+
+/// GeometryImageOptions from the command line's words.
+GeometryImageOptions image_options(const ImageArguments& args) {
+  GeometryImageOptions options;
+  options.size = args.size;
+  options.method = args.method == "orbifold" ? ParameterizationMethod::kOrbifold
+                   : args.method == "square" ? ParameterizationMethod::kSquare
+                                             : ParameterizationMethod::kAuto;
+  options.components =
+      args.components == "largest" ? ComponentSelection::kLargest : ComponentSelection::kAll;
+  options.holes = args.holes == "all"    ? HoleFilling::kAll
+                  : args.holes == "none" ? HoleFilling::kNone
+                                         : HoleFilling::kAllButLongest;
+  options.measure = !args.no_measure;
+  options.split_protrusions = args.protrusions == "split";
+  return options;
+}
+
+void run_image(const ImageArguments& args) {
+  TriangleMesh mesh;
+  std::string error;
+  if (!load_mesh(args.mesh, mesh, error))
+    throw CommandError(error);
+
+  const GeometryImageOptions options = image_options(args);
+
+  GeometryImage image;
+  ParameterizedMesh parameterized;
+  GeometryImageReport report;
+  if (!build_geometry_image(mesh, options, image, parameterized, report, error))
+    throw CommandError(args.mesh + ": " + error);
+  image.source = std::filesystem::path(args.mesh).filename().string();
+
+  const std::string obj = parameterized_mesh_path(args.output);
+  if (!save_parameterized_mesh(obj, parameterized, error))
+    throw CommandError(error);
+  if (!save_geometry_image(args.output, image, ExrPrecision::kFloat, error))
+    throw CommandError(error);
+
+  std::printf("mesh: %s\nimage: %s (%dx%d), uv mesh: %s\n%s", args.mesh.c_str(),
+              args.output.c_str(), image.size, image.size, obj.c_str(),
+              geometry_image_report_to_text(report).c_str());
+  if (!args.json.empty()) {
+    nlohmann::json j = geometry_image_report_to_json(report);
+    j["mesh"] = args.mesh;
+    j["image"] = args.output;
+    j["parameterized_mesh"] = obj;
+    j["size"] = image.size;
+    j["box"] = {{"min", {image.box.min.x, image.box.min.y, image.box.min.z}},
+                {"max", {image.box.max.x, image.box.max.y, image.box.max.z}}};
+    if (!write_text_file(args.json, j.dump(2) + "\n", error))
       throw CommandError(error);
+  }
+}
 
-    GeometryImageOptions options;
-    options.size = args->size;
-    options.method = args->method == "orbifold" ? ParameterizationMethod::kOrbifold
-                     : args->method == "square" ? ParameterizationMethod::kSquare
-                                                : ParameterizationMethod::kAuto;
-    options.components =
-        args->components == "largest" ? ComponentSelection::kLargest : ComponentSelection::kAll;
-    options.holes = args->holes == "all"    ? HoleFilling::kAll
-                    : args->holes == "none" ? HoleFilling::kNone
-                                            : HoleFilling::kAllButLongest;
-    options.measure = !args->no_measure;
-    options.split_protrusions = args->protrusions == "split";
+}  // namespace
 
-    GeometryImage image;
-    ParameterizedMesh parameterized;
-    GeometryImageReport report;
-    if (!build_geometry_image(mesh, options, image, parameterized, report, error))
-      throw CommandError(args->mesh + ": " + error);
-    image.source = std::filesystem::path(args->mesh).filename().string();
-
-    const std::string obj = parameterized_mesh_path(args->output);
-    if (!save_parameterized_mesh(obj, parameterized, error))
-      throw CommandError(error);
-    if (!save_geometry_image(args->output, image, ExrPrecision::kFloat, error))
-      throw CommandError(error);
-
-    std::printf("mesh: %s\nimage: %s (%dx%d), uv mesh: %s\n%s", args->mesh.c_str(),
-                args->output.c_str(), image.size, image.size, obj.c_str(),
-                geometry_image_report_to_text(report).c_str());
-    if (!args->json.empty()) {
-      nlohmann::json j = geometry_image_report_to_json(report);
-      j["mesh"] = args->mesh;
-      j["image"] = args->output;
-      j["parameterized_mesh"] = obj;
-      j["size"] = image.size;
-      j["box"] = {{"min", {image.box.min.x, image.box.min.y, image.box.min.z}},
-                  {"max", {image.box.max.x, image.box.max.y, image.box.max.z}}};
-      if (!write_text_file(args->json, j.dump(2) + "\n", error))
-        throw CommandError(error);
-    }
-  });
+void add_image_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "image",
+      "Build the geometry image of a mesh: repair, conformal parameterisation (orbifold for "
+      "closed\n"
+      "genus 0, cut graph + conformal disk otherwise, one chart per component), resampling at\n"
+      "texel centres. Writes OUT (.gimage.exr) and, beside it, the parameterised mesh\n"
+      "(.gimage.obj: v, vt = image uv, f v/vt). Prints the report (route, times, uv faults,\n"
+      "coverage, distortion, reconstruction error).");
+  auto args = std::make_shared<ImageArguments>();
+  add_image_options(cmd, args);
+  cmd->callback([args] { run_image(*args); });
 }
 
 }  // namespace gfield
