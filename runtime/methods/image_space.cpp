@@ -146,7 +146,8 @@ bool ImageSpaceRenderer::load(const Scene& scene, const std::filesystem::path& s
     image_pointers.push_back(&images[m]);
     const std::string path = parameterized_mesh_path(scene.meshes[m].geometry_image);
     const bool has_mesh = std::filesystem::exists(path);
-    if (has_mesh && !load_parameterized_mesh(path, raster[m], error))
+    if (has_mesh &&
+        !load_parameterized_mesh_of(images[m], scene.meshes[m].geometry_image, raster[m], error))
       return false;
     mesh_pointers.push_back(has_mesh ? &raster[m] : nullptr);
   }
