@@ -292,6 +292,22 @@ bool check_report(const std::string& report_path, const GeometryImage& image,
          check_same_build(report_path, id, image_path, image.build_id, error);
 }
 
+/// The field, image and parameterised mesh of `files`, all of one build (and the report where
+/// there is one), and the lookup over them.
+bool load_asset(const AssetFiles& files, GeometryField& field, GeometryImage& image,
+                ParameterizedMesh& pm, FieldLookup& lookup, std::string& error) {
+  if (!load_geometry_field(files.field, field, error) ||
+      !load_geometry_image(files.image, image, error) ||
+      !load_parameterized_mesh_of(image, files.image, pm, error)) {
+    return false;
+  }
+  if (!make_field_lookup(field, image, lookup, error)) {
+    error = files.field + ": does not match " + files.image + " (" + error + ")";
+    return false;
+  }
+  return check_report(files.report, image, files.image, error);
+}
+
 }  // namespace
 
 bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,
@@ -305,17 +321,8 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   GeometryField field;
   GeometryImage image;
   ParameterizedMesh pm;
-  if (!load_geometry_field(read.field, field, error) ||
-      !load_geometry_image(read.image, image, error) ||
-      !load_parameterized_mesh_of(image, read.image, pm, error)) {
-    return false;
-  }
   FieldLookup lookup;
-  if (!make_field_lookup(field, image, lookup, error)) {
-    error = read.field + ": does not match " + read.image + " (" + error + ")";
-    return false;
-  }
-  if (!check_report(read.report, image, read.image, error)) {
+  if (!load_asset(read, field, image, pm, lookup, error)) {
     return false;
   }
 
