@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "gfield/atomic_file.hpp"
+#include "gfield/build_id.hpp"
 
 namespace gfield {
 
@@ -55,6 +56,8 @@ bool save_parameterized_mesh(const std::string& filename, const ParameterizedMes
     return false;
   }
   std::fprintf(file, "# gfield parameterised mesh: v = mesh coordinates, vt = geometry-image uv\n");
+  if (!pm.build_id.empty())
+    std::fprintf(file, "# %s %s\n", kBuildIdAttribute, pm.build_id.c_str());
   for (const glm::dvec3& p : pm.mesh.positions)
     std::fprintf(file, "v %.9g %.9g %.9g\n", p.x, p.y, p.z);
   for (const glm::vec2& t : vts)
@@ -73,6 +76,17 @@ bool save_parameterized_mesh(const std::string& filename, const ParameterizedMes
 }
 
 namespace {
+
+/// The id of a `# gfield.buildId ID` comment line; false for any other line.
+bool parse_build_id_line(const std::string& line, std::string& build_id) {
+  const std::string prefix = std::string("# ") + kBuildIdAttribute + " ";
+  if (line.rfind(prefix, 0) != 0)
+    return false;
+  build_id = line.substr(prefix.size());
+  if (!build_id.empty() && build_id.back() == '\r')
+    build_id.pop_back();
+  return true;
+}
 
 /// Parses "a/b[/c]" into one-based (a, b); false if either is missing or not an integer.
 bool parse_corner(std::string_view token, long& v, long& vt) {
@@ -106,6 +120,8 @@ bool load_parameterized_mesh(const std::string& filename, ParameterizedMesh& pm,
   };
   while (std::getline(in, line)) {
     ++line_number;
+    if (parse_build_id_line(line, pm.build_id))
+      continue;
     if (line.rfind("v ", 0) == 0) {
       glm::dvec3 p;
       if (std::sscanf(line.c_str() + 2, "%lf %lf %lf", &p.x, &p.y, &p.z) != 3)
@@ -159,6 +175,29 @@ bool load_parameterized_mesh(const std::string& filename, ParameterizedMesh& pm,
     }
   }
   return true;
+}
+
+bool read_parameterized_mesh_build_id(const std::string& filename, std::string& build_id,
+                                      std::string& error) {
+  std::ifstream in(filename);
+  if (!in) {
+    error = filename + ": cannot open";
+    return false;
+  }
+  build_id.clear();
+  std::string line;
+  while (std::getline(in, line) && line.rfind('#', 0) == 0) {
+    if (parse_build_id_line(line, build_id))
+      break;
+  }
+  return true;
+}
+
+bool load_parameterized_mesh_of(const GeometryImage& image, const std::string& image_file,
+                                ParameterizedMesh& pm, std::string& error) {
+  const std::string filename = parameterized_mesh_path(image_file);
+  return load_parameterized_mesh(filename, pm, error) &&
+         check_same_build(filename, pm.build_id, image_file, image.build_id, error);
 }
 
 }  // namespace gfield

@@ -4,7 +4,8 @@
 // the hit interpolated from these corner uvs, so that the image returns the hit point at that uv.
 //
 // On disk: NAME.gimage.obj beside NAME.gimage.exr, an OBJ with `v` (mesh coordinates), `vt`
-// (geometry-image uv in [0,1]^2) and `f v/vt` triangles. Written and read by this module.
+// (geometry-image uv in [0,1]^2) and `f v/vt` triangles, and the build id in a comment line
+// `# gfield.buildId ID` (gfield/build_id.hpp). Written and read by this module.
 
 #include <string>
 #include <vector>
@@ -12,12 +13,14 @@
 #include <glm/glm.hpp>
 
 #include "geometry/mesh_io.hpp"
+#include "gfield/geometry_image.hpp"
 
 namespace gfield {
 
 struct ParameterizedMesh {
   TriangleMesh mesh;                 ///< V points, F triangles (mesh coordinates)
   std::vector<glm::vec2> corner_uv;  ///< 3F geometry-image uvs, corner c of triangle f at 3f + c
+  std::string build_id;              ///< the build's id, the image's (empty: none)
 };
 
 /// The uv file that belongs to an image file: "X.gimage.exr" -> "X.gimage.obj".
@@ -27,5 +30,16 @@ bool save_parameterized_mesh(const std::string& filename, const ParameterizedMes
                              std::string& error);
 bool load_parameterized_mesh(const std::string& filename, ParameterizedMesh& pm,
                              std::string& error);
+
+/// The build id of a parameterised mesh file, read from its leading comment lines only (empty:
+/// none). False with an error when the file cannot be read.
+bool read_parameterized_mesh_build_id(const std::string& filename, std::string& build_id,
+                                      std::string& error);
+
+/// Loads the parameterised mesh of `image` (read from `image_file`): the file beside it
+/// (parameterized_mesh_path), refused when its build id differs from the image's (an error naming
+/// both files).
+bool load_parameterized_mesh_of(const GeometryImage& image, const std::string& image_file,
+                                ParameterizedMesh& pm, std::string& error);
 
 }  // namespace gfield

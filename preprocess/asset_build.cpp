@@ -3,8 +3,10 @@
 #include <chrono>
 #include <filesystem>
 
-#include "gfield/atomic_file.hpp"
 #include "geometry/parameterized_mesh.hpp"
+#include "gfield/atomic_file.hpp"
+#include "preprocess/asset_files.hpp"
+#include "preprocess/asset_staging.hpp"
 #include "preprocess/topology.hpp"
 #include "preprocess/verify.hpp"
 
@@ -56,6 +58,7 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
     return false;
   }
   field.source = image.source;
+  field.build_id = image.build_id;
   start = std::chrono::steady_clock::now();
   if (!save_geometry_field(output, field, precision, error)) {
     return false;
@@ -66,36 +69,64 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
   return true;
 }
 
-std::string asset_image_path(const std::string& name) {
-  return name + ".gimage.exr";
-}
-std::string asset_field_path(const std::string& name) {
-  return name + ".gfield.exr";
-}
-std::string asset_report_path(const std::string& name) {
-  return name + ".report.json";
+nlohmann::json image_options_to_json(const GeometryImageOptions& o) {
+  const char* methods[] = {"auto", "orbifold", "square"};
+  const char* holes[] = {"all-but-longest", "all", "none"};
+  return {{"size", o.size},
+          {"method", methods[int(o.method)]},
+          {"components", o.components == ComponentSelection::kLargest ? "largest" : "all"},
+          {"holes", holes[int(o.holes)]},
+          {"gutter", o.gutter},
+          {"split_protrusions", o.split_protrusions},
+          {"max_split_depth", o.max_split_depth},
+          {"measure", o.measure},
+          {"error_samples", o.error_samples},
+          {"seed", o.seed}};
 }
 
-bool asset_up_to_date(const std::string& mesh_path, const std::string& name) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto mesh_time = fs::last_write_time(mesh_path, ec);
-  if (ec) {
+nlohmann::json asset_options_to_json(const AssetOptions& o) {
+  return {{"image", image_options_to_json(o.image)},
+          {"samples_per_side", o.samples_per_side},
+          {"field_precision", o.field_precision == ExrPrecision::kHalf ? "half" : "float"},
+          {"verify_rays", o.verify_rays}};
+}
+
+bool asset_build_inputs(const std::string& mesh_path, const AssetOptions& options,
+                        BuildInputs& inputs, std::string& error) {
+  return hash_build_inputs(mesh_path, asset_options_to_json(options), inputs, error);
+}
+
+namespace {
+
+/// The geometry image and its parameterised mesh of `mesh` into the staged files.
+bool write_image_files(const TriangleMesh& mesh, const std::string& mesh_path,
+                       const AssetOptions& options, const std::string& build_id,
+                       const AssetFiles& staged, GeometryImage& image, ParameterizedMesh& pm,
+                       nlohmann::json& report, std::string& error) {
+  GeometryImageReport image_report;
+  if (!build_geometry_image(mesh, options.image, image, pm, image_report, error)) {
+    error = mesh_path + ": " + error;
     return false;
   }
-  const std::string image = asset_image_path(name);
-  for (const std::string& path :
-       {image, parameterized_mesh_path(image), asset_field_path(name), asset_report_path(name)}) {
-    const auto time = fs::last_write_time(path, ec);
-    if (ec || time < mesh_time) {
-      return false;
-    }
+  image.source = std::filesystem::path(mesh_path).filename().string();
+  image.build_id = build_id;
+  pm.build_id = build_id;
+  const auto start = std::chrono::steady_clock::now();
+  if (!save_parameterized_mesh(staged.parameterized_mesh, pm, error) ||
+      !save_geometry_image(staged.image, image, ExrPrecision::kFloat, error)) {
+    return false;
   }
+  report["geometry_image"] = geometry_image_report_to_json(image_report);
+  report["geometry_image"]["size"] = image.size;
+  report["geometry_image"]["write_seconds"] = seconds_since(start);
+  report["box"] = box_to_json(image.box);
   return true;
 }
 
+}  // namespace
+
 bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
-                 nlohmann::json& report, std::string& error) {
+                 const BuildInputs& inputs, nlohmann::json& report, std::string& error) {
   const auto start = std::chrono::steady_clock::now();
   if (options.samples_per_side < kMinSamplesPerSide ||
       options.samples_per_side > kMaxSamplesPerSide) {
@@ -105,34 +136,27 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
   if (!load_mesh(mesh_path, mesh, error)) {
     return false;
   }
+  AssetStaging staging;
+  if (!staging.open(name, error)) {
+    return false;
+  }
+  const AssetFiles& staged = staging.staged();
+  const AssetFiles files = asset_files(name);
   report = nlohmann::json::object();
   report["mesh"] = std::filesystem::path(mesh_path).filename().string();
   report["source_path"] = std::filesystem::absolute(mesh_path).string();
+  report["build_id"] = inputs.build_id;
+  report["inputs"] = inputs.record;
   report["topology"] = topology_to_json(analyze_topology(mesh));
 
   GeometryImage image;
   ParameterizedMesh pm;
-  GeometryImageReport image_report;
-  if (!build_geometry_image(mesh, options.image, image, pm, image_report, error)) {
-    error = mesh_path + ": " + error;
+  if (!write_image_files(mesh, mesh_path, options, inputs.build_id, staged, image, pm, report,
+                         error)) {
     return false;
   }
-  image.source = std::filesystem::path(mesh_path).filename().string();
-  const std::string image_path = asset_image_path(name);
-  const std::string field_path = asset_field_path(name);
-  auto write_start = std::chrono::steady_clock::now();
-  if (!save_parameterized_mesh(parameterized_mesh_path(image_path), pm, error) ||
-      !save_geometry_image(image_path, image, ExrPrecision::kFloat, error)) {
-    return false;
-  }
-  const double image_write_seconds = seconds_since(write_start);
-  report["geometry_image"] = geometry_image_report_to_json(image_report);
-  report["geometry_image"]["size"] = image.size;
-  report["geometry_image"]["write_seconds"] = image_write_seconds;
-  report["box"] = box_to_json(image.box);
-
   FieldFileReport field_report;
-  if (!write_field_file(image, pm, options.samples_per_side, options.field_precision, field_path,
+  if (!write_field_file(image, pm, options.samples_per_side, options.field_precision, staged.field,
                         field_report, error)) {
     return false;
   }
@@ -145,19 +169,19 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
     verify.rays = options.verify_rays;
     verify.original = mesh_path;
     nlohmann::json accuracy;
-    if (!verify_asset(name, verify, accuracy, error)) {
+    if (!verify_asset_files(staged, name, verify, accuracy, error)) {
       return false;
     }
     report["accuracy"] = std::move(accuracy);
   }
   std::error_code ec;
-  report["files"] = {{"geometry_image", image_path},
-                     {"parameterized_mesh", parameterized_mesh_path(image_path)},
-                     {"geometry_field", field_path},
-                     {"geometry_image_bytes", size_t(std::filesystem::file_size(image_path, ec))},
+  report["files"] = {{"geometry_image", files.image},
+                     {"parameterized_mesh", files.parameterized_mesh},
+                     {"geometry_field", files.field},
+                     {"geometry_image_bytes", size_t(std::filesystem::file_size(staged.image, ec))},
                      {"geometry_field_bytes", field_report.file_bytes}};
   report["seconds"] = seconds_since(start);
-  return write_text_file(asset_report_path(name), report.dump(2) + "\n", error);
+  return write_text_file(staged.report, report.dump(2) + "\n", error) && staging.publish(error);
 }
 
 }  // namespace gfield

@@ -1,12 +1,14 @@
 #pragma once
 // Whole assets: mesh file -> NAME.gimage.exr + NAME.gimage.obj + NAME.gfield.exr +
-// NAME.report.json (the `gfield field`, `gfield build` and `gfield batch` commands).
+// NAME.report.json (the `gfield field`, `gfield build` and `gfield batch` commands). The files of
+// one asset: asset_files.hpp.
 
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "gfield/exr_io.hpp"
+#include "preprocess/build_inputs.hpp"
 #include "preprocess/field_build.hpp"
 #include "preprocess/geometry_image_build.hpp"
 
@@ -25,7 +27,8 @@ struct FieldFileReport {
 nlohmann::json field_file_report_to_json(const FieldFileReport& report);
 
 /// Casts the field of `pm` (the parameterised mesh of `image`) with N samples per side in the
-/// image's box and writes it to `output` (atomically). The field's source is the image's.
+/// image's box and writes it to `output` (atomically). The field's source and build id are the
+/// image's.
 /// False with an error "FILE: problem" (N out of range or too large for memory included).
 bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, int samples_per_side,
                       ExrPrecision precision, const std::string& output, FieldFileReport& report,
@@ -38,18 +41,20 @@ struct AssetOptions {
   size_t verify_rays = 100000;  ///< rays per family of the report's accuracy (0: skip)
 };
 
-/// The four output files of asset `name` (a path without extension: DIR/NAME).
-std::string asset_image_path(const std::string& name);
-std::string asset_field_path(const std::string& name);
-std::string asset_report_path(const std::string& name);
+/// Every geometry-image option, as hashed into build ids (`gfield image`, `gfield build`).
+nlohmann::json image_options_to_json(const GeometryImageOptions& options);
+/// Every option of an asset build that changes an output (its build id's "options").
+nlohmann::json asset_options_to_json(const AssetOptions& options);
 
-/// True when all outputs of `name` exist and are newer than `mesh_path`.
-bool asset_up_to_date(const std::string& mesh_path, const std::string& name);
+/// The inputs of building `mesh_path` with `options` and their build id (build_inputs.hpp).
+bool asset_build_inputs(const std::string& mesh_path, const AssetOptions& options,
+                        BuildInputs& inputs, std::string& error);
 
-/// Builds asset `name` from `mesh_path`: topology, geometry image, field, accuracy; writes the
-/// files (each atomically, the report last) and returns the report. False with an error
-/// "FILE: problem"; files written before a failure stay, the report is not written.
+/// Builds asset `name` (DIR/NAME) from `mesh_path` whose inputs are `inputs`: topology, geometry
+/// image, field, accuracy. All four files carry inputs.build_id and are written into a staging
+/// folder, then published together (asset_staging.hpp); the report records the build id and the
+/// hashed inputs. False with an error "FILE: problem", and the old asset untouched.
 bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
-                 nlohmann::json& report, std::string& error);
+                 const BuildInputs& inputs, nlohmann::json& report, std::string& error);
 
 }  // namespace gfield

@@ -5,9 +5,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include "geometry/parameterized_mesh.hpp"
 #include "gfield/exr_io.hpp"
 #include "preprocess/embree_mesh.hpp"
-#include "geometry/parameterized_mesh.hpp"
 
 namespace gfield {
 
@@ -53,7 +53,7 @@ bool write_thickness_file(const std::string& name, ThicknessStats& stats, std::s
   if (!load_geometry_image(image_path, image, error))
     return false;
   ParameterizedMesh pm;
-  if (!load_parameterized_mesh(parameterized_mesh_path(image_path), pm, error))
+  if (!load_parameterized_mesh_of(image, image_path, pm, error))
     return false;
   ThicknessMap map;
   if (!compute_thickness(image, pm.mesh, map, stats, error))

@@ -12,9 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gfield/exr_io.hpp"
 #include "geometry/outward_normals.hpp"
 #include "geometry/parameterized_mesh.hpp"
+#include "gfield/build_id.hpp"
+#include "gfield/exr_io.hpp"
 
 namespace gfield {
 namespace {
@@ -251,15 +252,15 @@ AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
 
 namespace {
 
-/// The original mesh file of asset NAME: the option, NAME.report.json's "source_path", or the
-/// image's source as a path (as given, or beside the asset). Empty when none exists.
-std::string find_original(const std::string& name, const VerifyOptions& options,
-                          const std::string& source) {
+/// The original mesh file of asset NAME: the option, the report's "source_path", or the image's
+/// source as a path (as given, or beside the asset). Empty when none exists.
+std::string find_original(const std::string& name, const std::string& report_path,
+                          const VerifyOptions& options, const std::string& source) {
   namespace fs = std::filesystem;
   if (!options.original.empty()) {
     return options.original;
   }
-  std::ifstream report_file(name + ".report.json");
+  std::ifstream report_file(report_path);
   if (report_file) {
     const nlohmann::json report = nlohmann::json::parse(report_file, nullptr, false);
     if (report.is_object() && report.contains("source_path") && report["source_path"].is_string() &&
@@ -279,24 +280,49 @@ std::string find_original(const std::string& name, const VerifyOptions& options,
   return {};
 }
 
+/// The report beside the asset, where there is one, must be of the image's build.
+bool check_report(const std::string& report_path, const GeometryImage& image,
+                  const std::string& image_path, std::string& error) {
+  std::error_code ec;
+  if (!std::filesystem::exists(report_path, ec)) {
+    return true;
+  }
+  std::string id;
+  return read_report_build_id(report_path, id, error) &&
+         check_same_build(report_path, id, image_path, image.build_id, error);
+}
+
+/// The field, image and parameterised mesh of `files`, all of one build (and the report where
+/// there is one), and the lookup over them.
+bool load_asset(const AssetFiles& files, GeometryField& field, GeometryImage& image,
+                ParameterizedMesh& pm, FieldLookup& lookup, std::string& error) {
+  if (!load_geometry_field(files.field, field, error) ||
+      !load_geometry_image(files.image, image, error) ||
+      !load_parameterized_mesh_of(image, files.image, pm, error)) {
+    return false;
+  }
+  if (!make_field_lookup(field, image, lookup, error)) {
+    error = files.field + ": does not match " + files.image + " (" + error + ")";
+    return false;
+  }
+  return check_report(files.report, image, files.image, error);
+}
+
 }  // namespace
 
 bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,
                   std::string& error) {
-  const std::string field_path = name + ".gfield.exr";
-  const std::string image_path = name + ".gimage.exr";
-  const std::string mesh_path = parameterized_mesh_path(image_path);
+  return verify_asset_files(asset_files(name), name, options, report, error);
+}
+
+bool verify_asset_files(const AssetFiles& read, const std::string& name,
+                        const VerifyOptions& options, nlohmann::json& report, std::string& error) {
+  const AssetFiles shown = asset_files(name);
   GeometryField field;
   GeometryImage image;
   ParameterizedMesh pm;
-  if (!load_geometry_field(field_path, field, error) ||
-      !load_geometry_image(image_path, image, error) ||
-      !load_parameterized_mesh(mesh_path, pm, error)) {
-    return false;
-  }
   FieldLookup lookup;
-  if (!make_field_lookup(field, image, lookup, error)) {
-    error = field_path + ": " + error;
+  if (!load_asset(read, field, image, pm, lookup, error)) {
     return false;
   }
 
@@ -306,8 +332,8 @@ bool verify_asset(const std::string& name, const VerifyOptions& options, nlohman
     TriangleMesh mesh;
   };
   std::vector<Reference> references;
-  references.push_back({"built", mesh_path, pm.mesh});
-  const std::string original = find_original(name, options, image.source);
+  references.push_back({"built", shown.parameterized_mesh, pm.mesh});
+  const std::string original = find_original(name, read.report, options, image.source);
   if (!original.empty()) {
     Reference r{"original", original, {}};
     if (!load_mesh(original, r.mesh, error)) {
@@ -345,7 +371,7 @@ bool verify_asset(const std::string& name, const VerifyOptions& options, nlohman
 
   report = nlohmann::json::object();
   report["name"] = name;
-  report["field"] = field_path;
+  report["field"] = shown.field;
   report["samples_per_side"] = field.samples_per_side;
   report["image_size"] = image.size;
   report["source"] = image.source;

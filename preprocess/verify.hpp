@@ -9,6 +9,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "gfield/field_lookup.hpp"
+#include "preprocess/asset_files.hpp"
 #include "preprocess/embree_mesh.hpp"
 
 namespace gfield {
@@ -62,9 +63,13 @@ struct VerifyOptions {
 
 /// Verifies the asset NAME (NAME.gfield.exr, NAME.gimage.exr, NAME.gimage.obj) against the mesh
 /// it was built from and, where found, against the original file. The report: see
-/// docs/geometry-field.md. False with an error "FILE: problem".
+/// docs/geometry-field.md. False with an error "FILE: problem", also when the files (and
+/// NAME.report.json, where present) are of different builds (gfield/build_id.hpp).
 bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,
                   std::string& error);
+/// The same for the files `read` (a build's staged files), reported as asset NAME's.
+bool verify_asset_files(const AssetFiles& read, const std::string& name,
+                        const VerifyOptions& options, nlohmann::json& report, std::string& error);
 
 /// The report as readable text (one table per reference mesh).
 std::string verify_report_to_text(const nlohmann::json& report);

@@ -271,7 +271,7 @@ bool GpuAssets::load_parameterized_meshes(const Scene& scene, std::string& error
     const std::string path = parameterized_mesh_path(scene.meshes[m].geometry_image);
     if (std::filesystem::exists(path)) {
       ParameterizedMesh pm;
-      if (!load_parameterized_mesh(path, pm, error))
+      if (!load_parameterized_mesh_of(images_[m], scene.meshes[m].geometry_image, pm, error))
         return false;
       parameterized_vertices(pm, vertices, indices);
     } else {

@@ -9,6 +9,9 @@ packages=(
   libglfw3-dev libglm-dev libepoxy-dev libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libimgui-dev libcli11-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libbenchmark-dev xvfb
+  # the Slurm test (tests/slurm/): a one-node cluster; Debian's packages start no daemon
+  # where there is no systemd (the test starts its own on 127.0.0.1)
+  slurmctld slurmd slurm-client munge jq
 )
 
 missing=()

@@ -25,11 +25,23 @@ struct Slot {
 std::array<Slot, kSlots> g_slots;
 std::atomic<unsigned> g_counter{0};
 std::once_flag g_handlers_installed;
+std::atomic<bool> g_deferring{false};  ///< SignalsDeferred alive
+std::atomic<int> g_deferred{0};        ///< the signal that arrived meanwhile
 
 extern "C" void remove_temporaries_and_reraise(int signal_number) {
+  if (g_deferring.load()) {
+    int none = 0;
+    g_deferred.compare_exchange_strong(none, signal_number);
+    return;
+  }
   for (Slot& slot : g_slots) {
     if (slot.used.load()) {
       ::unlink(slot.path);
+    }
+  }
+  for (Slot& slot : g_slots) {
+    if (slot.used.load()) {
+      ::rmdir(slot.path);
     }
   }
   std::signal(signal_number, SIG_DFL);
@@ -61,22 +73,44 @@ int register_slot(const std::filesystem::path& p) {
   return -1;
 }
 
+std::filesystem::path temporary_name(const std::filesystem::path& target) {
+  std::filesystem::path path = target;
+  path += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(g_counter++);
+  return path;
+}
+
 }  // namespace
 
-TemporaryFile::TemporaryFile(std::filesystem::path target) : target_(std::move(target)) {
+RemovedOnSignal::RemovedOnSignal(const std::filesystem::path& path) {
   std::call_once(g_handlers_installed, install_handlers);
-  temporary_ = target_;
-  temporary_ += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(g_counter++);
-  slot_ = register_slot(temporary_);
+  slot_ = register_slot(path);
 }
+
+RemovedOnSignal::~RemovedOnSignal() {
+  if (slot_ >= 0) {
+    g_slots[slot_].used.store(false);
+  }
+}
+
+SignalsDeferred::SignalsDeferred() {
+  std::call_once(g_handlers_installed, install_handlers);
+  g_deferring.store(true);
+}
+
+SignalsDeferred::~SignalsDeferred() {
+  g_deferring.store(false);
+  if (const int s = g_deferred.exchange(0); s != 0) {
+    std::raise(s);
+  }
+}
+
+TemporaryFile::TemporaryFile(std::filesystem::path target)
+    : target_(std::move(target)), temporary_(temporary_name(target_)), on_signal_(temporary_) {}
 
 TemporaryFile::~TemporaryFile() {
   if (!committed_) {
     std::error_code ec;
     std::filesystem::remove(temporary_, ec);
-  }
-  if (slot_ >= 0) {
-    g_slots[slot_].used.store(false);
   }
 }
 

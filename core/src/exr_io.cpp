@@ -21,6 +21,7 @@
 #include <thread>
 
 #include "gfield/atomic_file.hpp"
+#include "gfield/build_id.hpp"
 
 namespace gfield {
 
@@ -33,7 +34,12 @@ constexpr int kMaxSamplesPerSide = 64;
 
 void use_all_cores() {
   static std::once_flag once;
-  std::call_once(once, [] { Imf::setGlobalThreadCount(int(std::thread::hardware_concurrency())); });
+  // An application that sized OpenEXR's pool itself (gfield --threads) keeps its size.
+  std::call_once(once, [] {
+    if (Imf::globalThreadCount() == 0) {
+      Imf::setGlobalThreadCount(int(std::thread::hardware_concurrency()));
+    }
+  });
 }
 
 Imf::PixelType pixel_type(ExrPrecision precision) {
@@ -48,7 +54,7 @@ glm::vec3 to_glm(const Imath::V3f& v) {
 }
 
 Imf::Header make_header(int width, int height, const char* tag, const Box& box,
-                        const std::string& source) {
+                        const std::string& source, const std::string& build_id) {
   Imf::Header header(width, height);
   header.compression() = Imf::ZIP_COMPRESSION;
   header.insert("gfield.format", Imf::StringAttribute(tag));
@@ -56,6 +62,9 @@ Imf::Header make_header(int width, int height, const char* tag, const Box& box,
   header.insert("gfield.boxMin", Imf::V3fAttribute(to_imath(box.min)));
   header.insert("gfield.boxMax", Imf::V3fAttribute(to_imath(box.max)));
   header.insert("gfield.source", Imf::StringAttribute(source));
+  if (!build_id.empty()) {
+    header.insert(kBuildIdAttribute, Imf::StringAttribute(build_id));
+  }
   return header;
 }
 
@@ -132,6 +141,8 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
   }
   const auto* source = h.findTypedAttribute<Imf::StringAttribute>("gfield.source");
   out.source = source ? source->value() : std::string();
+  const auto* build_id = h.findTypedAttribute<Imf::StringAttribute>(kBuildIdAttribute);
+  out.build_id = build_id ? build_id->value() : std::string();
   const auto* samples = h.findTypedAttribute<Imf::IntAttribute>("gfield.samplesPerSide");
   out.samples_per_side = samples ? samples->value() : 0;
   const Imath::Box2i dw = h.dataWindow();
@@ -212,7 +223,8 @@ bool save_geometry_image(const std::string& filename, const GeometryImage& image
         filename + ": geometry image arrays do not match its size " + std::to_string(image.size);
     return false;
   }
-  Imf::Header header = make_header(image.size, image.size, kImageTag, image.box, image.source);
+  Imf::Header header =
+      make_header(image.size, image.size, kImageTag, image.box, image.source, image.build_id);
   const Imf::PixelType type = pixel_type(precision);
   const float* p = &image.position[0].x;
   const float* n = &image.normal[0].x;
@@ -249,6 +261,7 @@ bool load_geometry_image(const std::string& filename, GeometryImage& image, std:
   out.size = header.width;
   out.box = header.box;
   out.source = header.source;
+  out.build_id = header.build_id;
   const size_t texels = size_t(out.size) * size_t(out.size);
   out.position.resize(texels);
   out.normal.resize(texels);
@@ -293,7 +306,7 @@ bool save_geometry_field(const std::string& filename, const GeometryField& field
     error = filename + ": geometry field table does not match N = " + std::to_string(n);
     return false;
   }
-  Imf::Header header = make_header(side, side, kFieldTag, field.box, field.source);
+  Imf::Header header = make_header(side, side, kFieldTag, field.box, field.source, field.build_id);
   header.insert("gfield.samplesPerSide", Imf::IntAttribute(n));
   // zlib level 1 (docs/geometry-field.md): a 3456^2 half table writes ~30% faster than at the
   // default level 4 for ~7% more bytes; RLE is faster still but ~55% larger.
@@ -331,6 +344,7 @@ bool load_geometry_field(const std::string& filename, GeometryField& field, std:
   out.samples_per_side = n;
   out.box = header.box;
   out.source = header.source;
+  out.build_id = header.build_id;
   out.uv.resize(size_t(side) * size_t(side));
   const Imath::Box2i dw = file->header().dataWindow();
   const ptrdiff_t origin = ptrdiff_t(dw.min.y) * side + dw.min.x;

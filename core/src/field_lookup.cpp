@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "gfield/build_id.hpp"
+
 namespace gfield {
 namespace {
 
@@ -94,6 +96,10 @@ bool make_field_lookup(const GeometryField& field, const GeometryImage& image, F
   if (field.source != image.source) {
     error = "the geometry field was built from '" + field.source +
             "' but the geometry image from '" + image.source + "'";
+    return false;
+  }
+  if (!check_same_build("the geometry field", field.build_id, "the geometry image", image.build_id,
+                        error)) {
     return false;
   }
   lookup.field = &field;

@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "preprocess/asset_staging.hpp"
 #include "preprocess/cli/asset_options.hpp"
 #include "preprocess/cli/commands.hpp"
+#include "preprocess/thread_limit.hpp"
 
 namespace gfield {
 
@@ -15,27 +17,45 @@ void add_build_command(CLI::App& app) {
       "build",
       "Build a whole asset from a mesh: NAME.gimage.exr + NAME.gimage.obj (geometry image and\n"
       "its parameterised mesh), NAME.gfield.exr (geometry field) and NAME.report.json\n"
-      "(topology, route, times, sizes, accuracy against exact casts).");
+      "(topology, route, times, sizes, accuracy against exact casts), all carrying one build id.\n"
+      "The files are written into a staging folder and replace the old asset together, or not\n"
+      "at all; staging folders of killed builds in DIR are removed first.");
   auto mesh = std::make_shared<std::string>();
   auto name = std::make_shared<std::string>();
+  auto threads = std::make_shared<int>(0);
   auto args = std::make_shared<AssetArguments>();
   cmd->add_option("MESH", *mesh, "mesh file (.obj, .ply, .off, .stl)")->required();
   cmd->add_option("-o,--output", *name, "output path without extension (DIR/NAME)")->required();
+  cmd->add_option("--threads", *threads, "threads (0: all cores)")
+      ->check(CLI::Range(0, 4096))
+      ->capture_default_str();
   add_asset_options(cmd, args);
-  cmd->callback([mesh, name, args] {
+  cmd->callback([mesh, name, threads, args] {
+    const ThreadLimit limit(*threads);
+    const AssetOptions options = asset_options(*args);
+    BuildInputs inputs;
+    std::string error;
+    if (!asset_build_inputs(*mesh, options, inputs, error)) {
+      throw CommandError(error);
+    }
     const std::filesystem::path dir = std::filesystem::path(*name).parent_path();
     std::error_code ec;
     if (!dir.empty()) {
       std::filesystem::create_directories(dir, ec);
     }
+    if (const size_t stale = remove_stale_staging(dir.empty() ? "." : dir.string()); stale > 0) {
+      std::printf("removed %zu staging folders of killed builds in %s\n", stale,
+                  dir.empty() ? "." : dir.c_str());
+    }
     nlohmann::json report;
-    std::string error;
-    if (!build_asset(*mesh, *name, asset_options(*args), report, error)) {
+    if (!build_asset(*mesh, *name, options, inputs, report, error)) {
       throw CommandError(error);
     }
-    std::printf("%s: %s\nwrote %s.{gimage.exr,gimage.obj,gfield.exr,report.json} in %.2f s\n",
-                mesh->c_str(), asset_summary(report).c_str(), name->c_str(),
-                report["seconds"].get<double>());
+    std::printf(
+        "%s: %s\nwrote %s.{gimage.exr,gimage.obj,gfield.exr,report.json} in %.2f s "
+        "(build %s)\n",
+        mesh->c_str(), asset_summary(report).c_str(), name->c_str(),
+        report["seconds"].get<double>(), inputs.build_id.c_str());
   });
 }
 

@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "geometry/parameterized_mesh.hpp"
 #include "gfield/exr_io.hpp"
 #include "preprocess/asset_build.hpp"
 #include "preprocess/cli/commands.hpp"
-#include "geometry/parameterized_mesh.hpp"
 
 namespace gfield {
 
@@ -59,7 +59,7 @@ void add_field_command(CLI::App& app) {
     ParameterizedMesh pm;
     const std::string obj = parameterized_mesh_path(args->image);
     if (!load_geometry_image(args->image, image, error) ||
-        !load_parameterized_mesh(obj, pm, error)) {
+        !load_parameterized_mesh_of(image, args->image, pm, error)) {
       throw CommandError(error);
     }
     glm::vec3 lo(3.0e38f);

@@ -11,6 +11,7 @@
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/atomic_file.hpp"
 #include "gfield/exr_io.hpp"
+#include "preprocess/asset_build.hpp"
 #include "preprocess/cli/commands.hpp"
 #include "preprocess/geometry_image_build.hpp"
 
@@ -89,6 +90,11 @@ void run_image(const ImageArguments& args) {
   if (!build_geometry_image(mesh, options, image, parameterized, report, error))
     throw CommandError(args.mesh + ": " + error);
   image.source = std::filesystem::path(args.mesh).filename().string();
+  BuildInputs inputs;
+  if (!hash_build_inputs(args.mesh, image_options_to_json(options), inputs, error))
+    throw CommandError(error);
+  image.build_id = inputs.build_id;
+  parameterized.build_id = inputs.build_id;
 
   const std::string obj = parameterized_mesh_path(args.output);
   if (!save_parameterized_mesh(obj, parameterized, error))

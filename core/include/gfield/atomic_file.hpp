@@ -1,12 +1,35 @@
 #pragma once
 // Output files appear whole or not at all: write to a temporary path beside the target, then
 // rename. The temporary file is removed if the writer fails, the object goes out of scope
-// without commit(), or the process is interrupted by SIGINT/SIGTERM.
+// without commit(), or the process is interrupted by SIGINT/SIGTERM/SIGHUP.
 
 #include <filesystem>
 #include <string>
 
 namespace gfield {
+
+/// Registers `path` for removal if SIGINT, SIGTERM or SIGHUP ends the process while this object
+/// lives: files are unlinked first, then folders (removed when empty by then).
+class RemovedOnSignal {
+ public:
+  explicit RemovedOnSignal(const std::filesystem::path& path);
+  ~RemovedOnSignal();
+  RemovedOnSignal(const RemovedOnSignal&) = delete;
+  RemovedOnSignal& operator=(const RemovedOnSignal&) = delete;
+
+ private:
+  int slot_ = -1;
+};
+
+/// While this object lives, SIGINT, SIGTERM and SIGHUP wait: the first one that arrives is raised
+/// again when it goes out of scope (a group of renames that must not stop half-way).
+class SignalsDeferred {
+ public:
+  SignalsDeferred();
+  ~SignalsDeferred();
+  SignalsDeferred(const SignalsDeferred&) = delete;
+  SignalsDeferred& operator=(const SignalsDeferred&) = delete;
+};
 
 class TemporaryFile {
  public:
@@ -24,7 +47,7 @@ class TemporaryFile {
  private:
   std::filesystem::path target_;
   std::filesystem::path temporary_;
-  int slot_ = -1;
+  RemovedOnSignal on_signal_;
   bool committed_ = false;
 };
 

@@ -26,7 +26,8 @@ bool save_geometry_field(const std::string& filename, const GeometryField& field
 bool load_geometry_field(const std::string& filename, GeometryField& field, std::string& error);
 
 /// Reads only the header of a gfield EXR: format tag ("geometry-image"/"geometry-field"), box,
-/// source and samples per side (0 for images). For matching a field with its image cheaply.
+/// source, build id and samples per side (0 for images). For matching a field with its image
+/// cheaply.
 struct ExrAssetHeader {
   std::string format;
   int version = 0;
@@ -34,6 +35,7 @@ struct ExrAssetHeader {
   int height = 0;
   Box box;
   std::string source;
+  std::string build_id;  ///< gfield.buildId (gfield/build_id.hpp); empty when absent
   int samples_per_side = 0;
 };
 bool load_asset_header(const std::string& filename, ExrAssetHeader& header, std::string& error);

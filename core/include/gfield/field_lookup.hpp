@@ -49,7 +49,7 @@ struct FieldLookup {
 };
 
 /// Pairs a field with its image. False with an error when they do not belong together (different
-/// box or source), or when either is empty or inconsistent (table size, image size < 2).
+/// box, source or build id), or when either is empty or inconsistent (table size, image size < 2).
 bool make_field_lookup(const GeometryField& field, const GeometryImage& image, FieldLookup& lookup,
                        std::string& error);
 

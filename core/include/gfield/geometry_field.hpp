@@ -21,6 +21,7 @@ struct GeometryField {
   int samples_per_side = 0;   ///< N, samples per side of each cube face
   Box box;                    ///< the box that maps to the unit cube (mesh coordinates)
   std::string source;         ///< mesh file name the field was built from
+  std::string build_id;       ///< the build's id, the image's (gfield/build_id.hpp); empty: none
   std::vector<glm::vec2> uv;  ///< (6N^2)^2 geometry-image uvs, index entry * 6N^2 + exit
 };
 

@@ -16,6 +16,7 @@ struct GeometryImage {
   int size = 0;                     ///< n, texels per side
   Box box;                          ///< the box that maps to the unit cube (mesh coordinates)
   std::string source;               ///< mesh file name the image was built from
+  std::string build_id;             ///< the build's id (gfield/build_id.hpp); empty: none
   std::vector<glm::vec3> position;  ///< n*n surface points, mesh coordinates
   std::vector<glm::vec3> normal;    ///< n*n unit normals
   std::vector<float> coverage;      ///< n*n: 1 inside the parameterised surface, 0 in padding

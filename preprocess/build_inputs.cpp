@@ -1,0 +1,106 @@
+#include "preprocess/build_inputs.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "gfield/content_hash.hpp"
+
+namespace gfield {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Scheme of the hashed record; bump when what it holds changes meaning.
+constexpr int kBuildIdScheme = 1;
+
+/// MTL keys whose last token names a texture file.
+constexpr const char* kTextureKeys[] = {"map_Ka", "map_Kd",   "map_Ks", "map_Ke", "map_Ns",
+                                        "map_d",  "map_bump", "bump",   "disp",   "decal",
+                                        "refl",   "norm",     "map_Pr", "map_Pm", "map_Ps"};
+
+/// The whitespace-separated tokens of `line`.
+std::vector<std::string> tokens(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> out;
+  for (std::string t; in >> t;) {
+    out.push_back(t);
+  }
+  return out;
+}
+
+bool is_texture_key(const std::string& key) {
+  return std::find_if(std::begin(kTextureKeys), std::end(kTextureKeys),
+                      [&](const char* k) { return key == k; }) != std::end(kTextureKeys);
+}
+
+/// Texture maps named by the MTL file `mtl` (paths relative to its folder, then to ours).
+void add_material_maps(const fs::path& mtl, std::vector<std::string>& files) {
+  std::ifstream in(mtl);
+  for (std::string line; std::getline(in, line);) {
+    const std::vector<std::string> t = tokens(line);
+    if (t.size() >= 2 && is_texture_key(t[0])) {
+      files.push_back((mtl.parent_path() / t.back()).string());
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> mesh_texture_files(const std::string& mesh_path) {
+  std::string ext = fs::path(mesh_path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  std::vector<std::string> files;
+  if (ext != ".obj") {
+    return files;
+  }
+  std::ifstream in(mesh_path);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("mtllib", 0) != 0) {
+      continue;
+    }
+    const std::vector<std::string> t = tokens(line);
+    for (size_t i = 1; i < t.size(); ++i) {
+      const fs::path mtl = fs::path(mesh_path).parent_path() / t[i];
+      files.push_back(mtl.string());
+      add_material_maps(mtl, files);
+    }
+  }
+  return files;
+}
+
+bool hash_build_inputs(const std::string& mesh_path, const nlohmann::json& options,
+                       BuildInputs& inputs, std::string& error) {
+  std::error_code ec;
+  if (!fs::is_regular_file(mesh_path, ec)) {
+    error = mesh_path + ": no such mesh file";
+    return false;
+  }
+  std::string mesh_hash;
+  if (!sha256_file(mesh_path, mesh_hash, error)) {
+    return false;
+  }
+  nlohmann::json textures = nlohmann::json::array();
+  const fs::path mesh_folder = fs::path(mesh_path).parent_path();
+  for (const std::string& file : mesh_texture_files(mesh_path)) {
+    std::string hash;
+    std::string ignored;
+    const bool found = fs::is_regular_file(file, ec) && sha256_file(file, hash, ignored);
+    textures.push_back({{"file", fs::path(file).lexically_relative(mesh_folder).string()},
+                        {"sha256", found ? nlohmann::json(hash) : nlohmann::json()}});
+  }
+  inputs.record = {{"scheme", kBuildIdScheme},
+                   {"gfield", GFIELD_VERSION},
+                   {"mesh",
+                    {{"file", fs::path(mesh_path).filename().string()},
+                     {"bytes", fs::file_size(mesh_path, ec)},
+                     {"sha256", mesh_hash}}},
+                   {"textures", std::move(textures)},
+                   {"options", options}};
+  inputs.build_id = sha256_hex(inputs.record.dump()).substr(0, kBuildIdDigits);
+  return true;
+}
+
+}  // namespace gfield
