@@ -45,13 +45,18 @@ bool cylinder_displace(const GlassCylinder& cylinder, CylinderPath path, glm::ve
   return ok;
 }
 
-GlassPlate glass_plate(const SceneObject& object) {
+GlassPlate glass_plate(const SceneObject& object, int pair) {
   const glm::dmat4 to_world = object_to_world(object.transform);
-  const double half = 0.5 * double(object.shape.thickness);
-  const glm::dvec3 front(to_world * glm::dvec4(0.0, 0.0, half, 1.0));
-  const glm::dvec3 back(to_world * glm::dvec4(0.0, 0.0, -half, 1.0));
+  const int axis = pair == 0 ? 2 : pair - 1;
+  const glm::dvec3 size(object.shape.size.x, object.shape.size.y, object.shape.thickness);
+  glm::dvec4 offset(0.0);
+  offset[axis] = 0.5 * size[axis];
+  const glm::dvec3 front(to_world * (glm::dvec4(0.0, 0.0, 0.0, 1.0) + offset));
+  const glm::dvec3 back(to_world * (glm::dvec4(0.0, 0.0, 0.0, 1.0) - offset));
+  glm::dvec3 axis_vector(0.0);
+  axis_vector[axis] = 1.0;
   const glm::dvec3 normal =
-      glm::normalize(glm::transpose(glm::inverse(glm::dmat3(to_world))) * glm::dvec3(0, 0, 1));
+      glm::normalize(glm::transpose(glm::inverse(glm::dmat3(to_world))) * axis_vector);
   GlassPlate plate;
   plate.centre = glm::vec3(0.5 * (front + back));
   plate.normal = glm::vec3(normal);

@@ -271,7 +271,7 @@ void GlassMethod::set_class_uniforms(int refraction_class) {
   int kind = 0;
   if (refraction_class >= 1 && refraction_class <= 3) {
     kind = 1;
-    const GlassPlate plate = slab_plate(glass, refraction_class - 1);
+    const GlassPlate plate = glass_plate(glass, refraction_class - 1);
     glUniform3fv(u("u_plate_centre"), 1, &plate.centre.x);
     glUniform3fv(u("u_plate_normal"), 1, &plate.normal.x);
     glUniform1f(u("u_plate_thickness"), plate.thickness);

@@ -190,28 +190,6 @@ int glass_class(ShapeType shape, const std::vector<int>& codes, bool trace_verge
   return -1;
 }
 
-GlassPlate slab_plate(const SceneObject& object, int pair) {
-  if (pair == 0)
-    return glass_plate(object);
-  const int axis = pair == 1 ? 0 : 1;
-  const glm::dmat4 to_world = object_to_world(object.transform);
-  const double half = 0.5 * (axis == 0 ? object.shape.size.x : object.shape.size.y);
-  glm::dvec4 offset(0.0);
-  offset[axis] = half;
-  const glm::dvec3 a(to_world * (glm::dvec4(0, 0, 0, 1) + offset));
-  const glm::dvec3 b(to_world * (glm::dvec4(0, 0, 0, 1) - offset));
-  glm::dvec3 axis_vector(0.0);
-  axis_vector[axis] = 1.0;
-  const glm::dvec3 normal =
-      glm::normalize(glm::transpose(glm::inverse(glm::dmat3(to_world))) * axis_vector);
-  GlassPlate plate;
-  plate.centre = glm::vec3(0.5 * (a + b));
-  plate.normal = glm::vec3(normal);
-  plate.thickness = float(std::abs(glm::dot(a - b, normal)));
-  plate.ior = object.material.ior;
-  return plate;
-}
-
 std::vector<int> classes_present(const SceneObject& glass, const Camera& camera, float aspect,
                                  bool trace_verge) {
   // The straight eye lines of a grid of pixels against the exact glass: the same codes as the

@@ -41,9 +41,6 @@ GlassSoup glass_triangles(const SceneObject& object);
 /// -1 for a pattern the displacement does not model (traced per pixel there).
 int glass_class(ShapeType shape, const std::vector<int>& codes, bool trace_verge);
 
-/// The plate of a slab's face pair `pair` (0: the Z faces, 1: X, 2: Y).
-GlassPlate slab_plate(const SceneObject& object, int pair);
-
 /// The classes a frame of `camera` (aspect width / height) needs: those of the straight eye
 /// lines of a grid of 128 rows of pixels against the exact glass, class 0 always, ascending.
 std::vector<int> classes_present(const SceneObject& glass, const Camera& camera, float aspect,

@@ -73,8 +73,9 @@ CylinderPathPoints cylinder_path(const GlassCylinder& cylinder, CylinderPath pat
 bool cylinder_displace(const GlassCylinder& cylinder, CylinderPath path, glm::vec3 eye,
                        glm::vec3 vertex, glm::vec3& seen);
 
-/// The plate of a scene object of shape "slab" (any transform: the faces stay parallel).
-GlassPlate glass_plate(const SceneObject& object);
+/// The plate of a scene object of shape "slab" (any transform: the faces stay parallel) between
+/// its pair of faces `pair`: 0 the Z faces (the plate's thickness), 1 the X faces, 2 the Y faces.
+GlassPlate glass_plate(const SceneObject& object, int pair = 0);
 
 /// The cylinder of a scene object of shape "hollow-cylinder" and its object -> world map. False
 /// with an error when the transform's scale is not uniform (the walls would not be circular).
