@@ -14,12 +14,13 @@
 #include <limits>
 #include <mutex>
 
-#include "gfield/environment.hpp"
-#include "gfield/optics.hpp"
 #include "geometry/analytic_primitives.hpp"
-#include "preprocess/embree_mesh.hpp"
 #include "geometry/mesh_io.hpp"
 #include "geometry/outward_normals.hpp"
+#include "gfield/environment.hpp"
+#include "gfield/limits.hpp"
+#include "gfield/optics.hpp"
+#include "preprocess/embree_mesh.hpp"
 
 namespace gfield {
 namespace {
@@ -92,6 +93,50 @@ bool overlaps(const TracerRay& ray, glm::dvec3 lo, glm::dvec3 hi, double t_max) 
 
 glm::dvec3 to_d(glm::vec3 v) {
   return glm::dvec3(v);
+}
+
+double max_abs(glm::dvec3 v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+/// Checks that every ray Embree sees stays far inside its limits (|origin| <= 1.8e18): each mesh
+/// object within +-kMaxCoordinate in world coordinates, and the whole scene (objects, camera,
+/// point lights) within +-kMaxCoordinate in the coordinates of each mesh object, where Embree
+/// intersects its instances. Analytic objects were checked when the scene was read. False with
+/// "SCENE: objects[I] (MESH): problem".
+bool check_reach(const Scene& scene, const std::vector<ObjectRecord>& objects, std::string& error) {
+  double scene_reach = max_abs(glm::dvec3(scene.camera.position));
+  for (const Light& light : scene.lights) {
+    scene_reach = std::max(scene_reach, max_abs(glm::dvec3(light.position)));
+  }
+  const auto fail = [&](size_t i, const std::string& what) {
+    error = scene.filename + ": objects[" + std::to_string(i) + "] (" +
+            scene.meshes[size_t(objects[i].object.shape.mesh)].file + "): " + what;
+    return false;
+  };
+  char text[160];
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const double reach = std::max(max_abs(objects[i].world_lo), max_abs(objects[i].world_hi));
+    scene_reach = std::max(scene_reach, reach);
+    if (objects[i].object.shape.type == ShapeType::kMesh && reach > kMaxCoordinate) {
+      std::snprintf(text, sizeof(text),
+                    "reaches %.3g in world coordinates after its transform (limit 1e15)", reach);
+      return fail(i, text);
+    }
+  }
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const Transform& t = objects[i].object.transform;
+    const double scale = std::min({t.scale.x, t.scale.y, t.scale.z});
+    const double reach =
+        (std::sqrt(3.0) * scene_reach + glm::length(glm::dvec3(t.translate))) / scale;
+    if (objects[i].object.shape.type == ShapeType::kMesh && reach > kMaxCoordinate) {
+      std::snprintf(text, sizeof(text),
+                    "at scale %g the scene reaches %.3g in the mesh's own coordinates (limit 1e15)",
+                    scale, reach);
+      return fail(i, text);
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -282,6 +327,8 @@ struct ReferenceTracer::Impl {
       }
       objects.push_back(std::move(r));
     }
+    if (!check_reach(scene, objects, error))
+      return false;
     rtcCommitScene(top);
     if (const RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE) {
       error = scene.filename + ": Embree scene build failed (error " + std::to_string(int(e)) + ")";

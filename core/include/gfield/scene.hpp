@@ -60,6 +60,11 @@ struct Transform {
 };
 glm::dmat4 object_to_world(const Transform& transform);
 
+/// Object-space bounds of an analytic shape (zero for meshes: their bounds come from the file).
+void shape_bounds(const Shape& shape, glm::dvec3& lo, glm::dvec3& hi);
+/// The largest |world coordinate| that the object-space box [lo, hi] reaches under `transform`.
+double world_reach(const Transform& transform, glm::dvec3 lo, glm::dvec3 hi);
+
 enum class MaterialType { kDiffuse, kMirror, kDielectric };
 enum class TextureType { kNone, kChecker, kColorChart };
 
@@ -121,7 +126,11 @@ struct Scene {
 
 /// Reads and validates a scene file. False with "FILE:LINE:COLUMN: what: problem" for malformed
 /// JSON, unknown keys, wrong types, unknown material/shape/preset names, missing files, negative
-/// or zero sizes, singular transforms, index <= 0, a dielectric on a quad, a degenerate camera.
+/// or zero sizes, index <= 0, a dielectric on a quad, a degenerate camera, and values out of
+/// range (docs/scenes.md, "Limits"): any number beyond +-1e15, colours and intensities outside
+/// [0, 1e6], scale factors outside [1e-6, 1e6], an analytic shape reaching beyond +-1e15 after
+/// its transform, more than kMaxSceneObjects objects or kMaxSceneLights lights, JSON nested
+/// deeper than kMaxJsonDepth, a file above kMaxSceneFileBytes.
 bool load_scene(const std::string& filename, Scene& scene, std::string& error);
 
 /// Points every mesh of `scene` at the assets found in folder `dir` (DIR/NAME.gimage.exr and
