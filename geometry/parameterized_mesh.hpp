@@ -4,7 +4,8 @@
 // the hit interpolated from these corner uvs, so that the image returns the hit point at that uv.
 //
 // On disk: NAME.gimage.obj beside NAME.gimage.exr, an OBJ with `v` (mesh coordinates), `vt`
-// (geometry-image uv in [0,1]^2) and `f v/vt` triangles. Written and read by this module.
+// (geometry-image uv in [0,1]^2) and `f v/vt` triangles, and a line "#gfield-counts V T F"
+// (comment to other OBJ readers) before them. Written and read by this module.
 
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "geometry/mesh_io.hpp"
+#include "gfield/box.hpp"
 
 namespace gfield {
 
@@ -25,7 +27,17 @@ std::string parameterized_mesh_path(const std::string& geometry_image_path);
 
 bool save_parameterized_mesh(const std::string& filename, const ParameterizedMesh& pm,
                              std::string& error);
+/// False with a one-line "FILE[:LINE]: problem" for a missing, empty or malformed file, one
+/// whose last line has no end or whose v, vt, f lines disagree with its counts line (truncated;
+/// files without a counts line, of older builds, are read without that check), coordinates
+/// that are not finite or beyond kMaxCoordinate, uvs outside [-1, 2]^2 (a corner of a triangle
+/// crossing an orbifold chart's border may lie outside [0,1]^2), indices out of range (read
+/// as 64-bit values), faces that are not triangles, or no faces.
 bool load_parameterized_mesh(const std::string& filename, ParameterizedMesh& pm,
                              std::string& error);
+
+/// True when every vertex of `pm` (as a float) lies in `box`: a parameterised mesh and a
+/// geometry image (or field) of one build always do.
+bool mesh_inside_box(const ParameterizedMesh& pm, const Box& box);
 
 }  // namespace gfield
