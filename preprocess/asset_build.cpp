@@ -3,8 +3,9 @@
 #include <chrono>
 #include <filesystem>
 
-#include "gfield/atomic_file.hpp"
 #include "geometry/parameterized_mesh.hpp"
+#include "gfield/atomic_file.hpp"
+#include "gfield/printable.hpp"
 #include "preprocess/topology.hpp"
 #include "preprocess/verify.hpp"
 
@@ -106,8 +107,8 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
     return false;
   }
   report = nlohmann::json::object();
-  report["mesh"] = std::filesystem::path(mesh_path).filename().string();
-  report["source_path"] = std::filesystem::absolute(mesh_path).string();
+  report["mesh"] = printable(std::filesystem::path(mesh_path).filename().string());
+  report["source_path"] = printable(std::filesystem::absolute(mesh_path).string());
   report["topology"] = topology_to_json(analyze_topology(mesh));
 
   GeometryImage image;
@@ -151,9 +152,9 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
     report["accuracy"] = std::move(accuracy);
   }
   std::error_code ec;
-  report["files"] = {{"geometry_image", image_path},
-                     {"parameterized_mesh", parameterized_mesh_path(image_path)},
-                     {"geometry_field", field_path},
+  report["files"] = {{"geometry_image", printable(image_path)},
+                     {"parameterized_mesh", printable(parameterized_mesh_path(image_path))},
+                     {"geometry_field", printable(field_path)},
                      {"geometry_image_bytes", size_t(std::filesystem::file_size(image_path, ec))},
                      {"geometry_field_bytes", field_report.file_bytes}};
   report["seconds"] = seconds_since(start);

@@ -5,9 +5,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include "geometry/parameterized_mesh.hpp"
 #include "gfield/exr_io.hpp"
 #include "preprocess/embree_mesh.hpp"
-#include "geometry/parameterized_mesh.hpp"
 
 namespace gfield {
 
@@ -53,8 +53,14 @@ bool write_thickness_file(const std::string& name, ThicknessStats& stats, std::s
   if (!load_geometry_image(image_path, image, error))
     return false;
   ParameterizedMesh pm;
-  if (!load_parameterized_mesh(parameterized_mesh_path(image_path), pm, error))
+  const std::string mesh_path = parameterized_mesh_path(image_path);
+  if (!load_parameterized_mesh(mesh_path, pm, error))
     return false;
+  if (!mesh_inside_box(pm, image.box)) {
+    error = mesh_path + ": the mesh does not lie inside the geometry image's box (" + image_path +
+            "): they do not belong together";
+    return false;
+  }
   ThicknessMap map;
   if (!compute_thickness(image, pm.mesh, map, stats, error))
     return false;

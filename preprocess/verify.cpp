@@ -12,9 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gfield/exr_io.hpp"
 #include "geometry/outward_normals.hpp"
 #include "geometry/parameterized_mesh.hpp"
+#include "gfield/exr_io.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 namespace {
@@ -294,6 +295,11 @@ bool verify_asset(const std::string& name, const VerifyOptions& options, nlohman
       !load_parameterized_mesh(mesh_path, pm, error)) {
     return false;
   }
+  if (!mesh_inside_box(pm, image.box)) {
+    error = mesh_path + ": the mesh does not lie inside the geometry image's box (" + image_path +
+            "): they do not belong together";
+    return false;
+  }
   FieldLookup lookup;
   if (!make_field_lookup(field, image, lookup, error)) {
     error = field_path + ": " + error;
@@ -344,11 +350,11 @@ bool verify_asset(const std::string& name, const VerifyOptions& options, nlohman
   }
 
   report = nlohmann::json::object();
-  report["name"] = name;
-  report["field"] = field_path;
+  report["name"] = printable(name);
+  report["field"] = printable(field_path);
   report["samples_per_side"] = field.samples_per_side;
   report["image_size"] = image.size;
-  report["source"] = image.source;
+  report["source"] = printable(image.source);
   report["rays_per_family"] = options.rays;
   report["seed"] = options.seed;
   report["references"] = nlohmann::json::array();
@@ -360,7 +366,7 @@ bool verify_asset(const std::string& name, const VerifyOptions& options, nlohman
     }
     nlohmann::json r;
     r["mesh"] = reference.label;
-    r["path"] = reference.path;
+    r["path"] = printable(reference.path);
     r["table"] = accuracy_to_json(
         verify_table(field, image, embree, reference.mesh, options.rays, options.seed + 2));
     const Exact exact(embree, reference.mesh);

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "gfield/image.hpp"
+#include "gfield/printable.hpp"
 #include "gfield/scene.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/methods/glass_cli.hpp"
@@ -30,7 +31,7 @@ bool parse_size(const std::string& text, int& width, int& height) {
 }
 
 int fail(const std::string& message, int code = 2) {
-  std::fprintf(stderr, "gfield-view: %s\n", message.c_str());
+  std::fprintf(stderr, "gfield-view: %s\n", printable(message).c_str());
   return code;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "gfield/printable.hpp"
 #include "preprocess/cli/asset_options.hpp"
 #include "preprocess/cli/commands.hpp"
 
@@ -34,7 +35,7 @@ void add_build_command(CLI::App& app) {
       throw CommandError(error);
     }
     std::printf("%s: %s\nwrote %s.{gimage.exr,gimage.obj,gfield.exr,report.json} in %.2f s\n",
-                mesh->c_str(), asset_summary(report).c_str(), name->c_str(),
+                printable(*mesh).c_str(), asset_summary(report).c_str(), printable(*name).c_str(),
                 report["seconds"].get<double>());
   });
 }
