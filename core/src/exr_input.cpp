@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gfield/limits.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 namespace {
@@ -149,11 +150,12 @@ bool read_layout(const std::string& bytes, std::uint64_t file_size, ExrLayout& l
     std::uint32_t size = 0;
     if (!in.string(type) || !in.value(size) || size > file_size - in.position() ||
         in.position() + std::uint64_t(size) > bytes.size()) {
-      what = "truncated or corrupt header (attribute '" + name + "' does not fit in the file)";
+      what = "truncated or corrupt header (attribute '" + printable(name) +
+             "' does not fit in the file)";
       return false;
     }
     if (!read_attribute(in, name, type, size, layout)) {
-      what = "corrupt header attribute '" + name + "' of type '" + type + "'";
+      what = "corrupt header attribute '" + printable(name) + "' of type '" + printable(type) + "'";
       return false;
     }
   }
@@ -193,11 +195,13 @@ bool check_layout(const ExrLayout& l, std::uint64_t file_size, int max_width, in
              ((std::uint64_t(height) + l.tile_y - 1) / l.tile_y);
   }
   std::uint64_t pixel_bytes = 0;
-  for (const auto& [name, c] : l.channels) {
+  for (const auto& channel : l.channels) {
+    const std::string& name = channel.first;  // (clang 14 lambdas cannot capture a binding)
+    const ExrLayout::Channel& c = channel.second;
     const bool is_wanted =
         std::any_of(wanted.begin(), wanted.end(), [&](const char* w) { return name == w; });
     if (is_wanted && (c.x_sampling != 1 || c.y_sampling != 1)) {
-      what = "channel '" + name + "' is subsampled";
+      what = "channel '" + printable(name) + "' is subsampled";
       return false;
     }
     const std::uint64_t columns = std::uint64_t((width + c.x_sampling - 1) / c.x_sampling);
@@ -216,9 +220,7 @@ bool check_layout(const ExrLayout& l, std::uint64_t file_size, int max_width, in
 }  // namespace
 
 std::string exr_exception_text(const std::exception& e) {
-  std::string what = e.what();
-  std::replace(what.begin(), what.end(), '\n', ' ');
-  return what;
+  return printable(e.what());
 }
 
 bool open_exr_input(const std::string& filename, int max_width, int max_height,

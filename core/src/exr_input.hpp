@@ -22,7 +22,7 @@ bool open_exr_input(const std::string& filename, int max_width, int max_height,
                     std::initializer_list<const char*> channels,
                     std::unique_ptr<Imf::InputFile>& file, std::string& error);
 
-/// An OpenEXR exception's text on one line.
+/// An OpenEXR exception's text on one line (printable.hpp).
 std::string exr_exception_text(const std::exception& e);
 
 }  // namespace gfield

@@ -22,6 +22,7 @@
 #include "exr_input.hpp"
 #include "gfield/atomic_file.hpp"
 #include "gfield/limits.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 
@@ -150,7 +151,8 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
 bool check_format(const std::string& filename, const ExrAssetHeader& header, const char* tag,
                   std::string& error) {
   if (header.format != tag) {
-    error = filename + ": wrong format tag '" + header.format + "' (expected '" + tag + "')";
+    error =
+        filename + ": wrong format tag '" + printable(header.format) + "' (expected '" + tag + "')";
     return false;
   }
   if (header.version != kFormatVersion) {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "gfield/printable.hpp"
+
 namespace gfield {
 namespace {
 
@@ -92,8 +94,8 @@ bool make_field_lookup(const GeometryField& field, const GeometryImage& image, F
     return false;
   }
   if (field.source != image.source) {
-    error = "the geometry field was built from '" + field.source +
-            "' but the geometry image from '" + image.source + "'";
+    error = "the geometry field was built from '" + printable(field.source) +
+            "' but the geometry image from '" + printable(image.source) + "'";
     return false;
   }
   lookup.field = &field;

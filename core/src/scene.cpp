@@ -17,6 +17,7 @@
 #include "gfield/limits.hpp"
 #include "gfield/located_json.hpp"
 #include "gfield/optics.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 namespace fs = std::filesystem;
@@ -747,7 +748,7 @@ bool parse_scene(const std::string& text, const std::string& filename, Scene& sc
   LocatedJson document;
   std::string parse_error;
   if (!parse_located_json(text, document, parse_error)) {
-    error = filename + ":" + parse_error;
+    error = filename + ":" + printable(parse_error);
     return false;
   }
   Scene result;
@@ -759,7 +760,7 @@ bool parse_scene(const std::string& text, const std::string& filename, Scene& sc
     const JsonLocation where = document.at(e.pointer);
     const std::string path = readable_path(e.pointer);
     error = filename + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
-            ": " + (path.empty() ? "" : path + ": ") + e.message;
+            ": " + printable((path.empty() ? "" : path + ": ") + e.message);
     return false;
   }
   scene = std::move(result);
