@@ -161,9 +161,9 @@ bool read_line(std::string_view line, ParameterizedMesh& pm, std::vector<glm::ve
     if (!read_numbers(words, values, 3, what)) {
       return false;
     }
-    if (std::abs(values[0]) > kMaxCoordinate || std::abs(values[1]) > kMaxCoordinate ||
-        std::abs(values[2]) > kMaxCoordinate) {
-      what = "vertex coordinate beyond the limit of 1e15";
+    if (std::abs(values[0]) > kMaxAssetCoordinate || std::abs(values[1]) > kMaxAssetCoordinate ||
+        std::abs(values[2]) > kMaxAssetCoordinate) {
+      what = "vertex coordinate beyond the limit of 1e16";
       return false;
     }
     pm.mesh.positions.emplace_back(values[0], values[1], values[2]);

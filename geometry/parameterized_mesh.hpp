@@ -30,7 +30,7 @@ bool save_parameterized_mesh(const std::string& filename, const ParameterizedMes
 /// False with a one-line "FILE[:LINE]: problem" for a missing, empty or malformed file, one
 /// whose last line has no end or whose v, vt, f lines disagree with its counts line (truncated;
 /// files without a counts line, of older builds, are read without that check), coordinates
-/// that are not finite or beyond kMaxCoordinate, uvs outside [-1, 2]^2 (a corner of a triangle
+/// that are not finite or beyond kMaxAssetCoordinate, uvs outside [-1, 2]^2 (a corner of a triangle
 /// crossing an orbifold chart's border may lie outside [0,1]^2), indices out of range (read
 /// as 64-bit values), faces that are not triangles, or no faces.
 bool load_parameterized_mesh(const std::string& filename, ParameterizedMesh& pm,

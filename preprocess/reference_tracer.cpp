@@ -95,45 +95,42 @@ glm::dvec3 to_d(glm::vec3 v) {
   return glm::dvec3(v);
 }
 
-double max_abs(glm::dvec3 v) {
-  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-}
-
 /// Checks that every ray Embree sees stays far inside its limits (|origin| <= 1.8e18): each mesh
-/// object within +-kMaxCoordinate in world coordinates, and the whole scene (objects, camera,
-/// point lights) within +-kMaxCoordinate in the coordinates of each mesh object, where Embree
-/// intersects its instances. Analytic objects were checked when the scene was read. False with
-/// "SCENE: objects[I] (MESH): problem".
+/// object within +-kMaxCoordinate in world coordinates, and the scene's box (camera, point
+/// lights, objects) within +-kMaxAssetCoordinate in the coordinates of each mesh object, where
+/// Embree intersects its instances. Analytic objects were checked when the scene was read. False
+/// with "SCENE: objects[I] (MESH): problem".
 bool check_reach(const Scene& scene, const std::vector<ObjectRecord>& objects, std::string& error) {
-  double scene_reach = max_abs(glm::dvec3(scene.camera.position));
+  glm::dvec3 lo(scene.camera.position), hi(scene.camera.position);
   for (const Light& light : scene.lights) {
-    scene_reach = std::max(scene_reach, max_abs(glm::dvec3(light.position)));
-  }
-  const auto fail = [&](size_t i, const std::string& what) {
-    error = scene.filename + ": objects[" + std::to_string(i) + "] (" +
-            scene.meshes[size_t(objects[i].object.shape.mesh)].file + "): " + what;
-    return false;
-  };
-  char text[160];
-  for (size_t i = 0; i < objects.size(); ++i) {
-    const double reach = std::max(max_abs(objects[i].world_lo), max_abs(objects[i].world_hi));
-    scene_reach = std::max(scene_reach, reach);
-    if (objects[i].object.shape.type == ShapeType::kMesh && reach > kMaxCoordinate) {
-      std::snprintf(text, sizeof(text),
-                    "reaches %.3g in world coordinates after its transform (limit 1e15)", reach);
-      return fail(i, text);
+    if (light.type == LightType::kPoint) {
+      lo = glm::min(lo, glm::dvec3(light.position));
+      hi = glm::max(hi, glm::dvec3(light.position));
     }
   }
-  for (size_t i = 0; i < objects.size(); ++i) {
-    const Transform& t = objects[i].object.transform;
-    const double scale = std::min({t.scale.x, t.scale.y, t.scale.z});
-    const double reach =
-        (std::sqrt(3.0) * scene_reach + glm::length(glm::dvec3(t.translate))) / scale;
-    if (objects[i].object.shape.type == ShapeType::kMesh && reach > kMaxCoordinate) {
+  for (const ObjectRecord& r : objects) {
+    lo = glm::min(lo, r.world_lo);
+    hi = glm::max(hi, r.world_hi);
+  }
+  // World coordinates first: a mesh far out makes the scene's box large for every other mesh.
+  char text[160];
+  for (int pass = 0; pass < 2; ++pass) {
+    for (size_t i = 0; i < objects.size(); ++i) {
+      const ObjectRecord& r = objects[i];
+      const double reach = pass == 0 ? box_reach(glm::dmat4(1.0), r.world_lo, r.world_hi)
+                                     : box_reach(r.to_object, lo, hi);
+      if (r.object.shape.type != ShapeType::kMesh ||
+          reach <= (pass == 0 ? kMaxCoordinate : kMaxAssetCoordinate)) {
+        continue;
+      }
       std::snprintf(text, sizeof(text),
-                    "at scale %g the scene reaches %.3g in the mesh's own coordinates (limit 1e15)",
-                    scale, reach);
-      return fail(i, text);
+                    pass == 0 ? "reaches %.3g in world coordinates after its transform (limit 1e15)"
+                              : "the scene reaches %.3g in the mesh's own coordinates (limit "
+                                "1e16: a scale too small for the scene's extent)",
+                    reach);
+      error = scene.filename + ": objects[" + std::to_string(i) + "] (" +
+              scene.meshes[size_t(r.object.shape.mesh)].file + "): " + text;
+      return false;
     }
   }
   return true;

@@ -128,14 +128,14 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
     return false;
   }
   out.box = {to_glm(box_min->value()), to_glm(box_max->value())};
-  const float limit = float(kMaxCoordinate);
+  const float limit = float(kMaxAssetCoordinate);
   if (!glm::all(glm::isfinite(out.box.min)) || !glm::all(glm::isfinite(out.box.max)) ||
       !glm::all(glm::lessThan(out.box.min, out.box.max)) ||
       glm::any(glm::greaterThan(glm::abs(out.box.min), glm::vec3(limit))) ||
       glm::any(glm::greaterThan(glm::abs(out.box.max), glm::vec3(limit)))) {
     error = filename +
             ": invalid box (gfield.boxMin must be below gfield.boxMax, both finite and "
-            "within +-1e15)";
+            "within +-1e16)";
     return false;
   }
   const auto* source = h.findTypedAttribute<Imf::StringAttribute>("gfield.source");
@@ -145,6 +145,27 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
   const Imath::Box2i dw = h.dataWindow();
   out.width = dw.max.x - dw.min.x + 1;
   out.height = dw.max.y - dw.min.y + 1;
+  return true;
+}
+
+/// Positions finite and within kMaxAssetCoordinate, normal components within
+/// kMaxNormalComponent, coverage in [0, 1].
+bool check_texels(const std::string& filename, const GeometryImage& image, std::string& error) {
+  const glm::vec3 limit(static_cast<float>(kMaxAssetCoordinate));
+  const glm::vec3 normal_limit(static_cast<float>(kMaxNormalComponent));
+  for (size_t t = 0; t < image.position.size(); ++t) {
+    const float a = image.coverage[t];
+    if (!glm::all(glm::lessThanEqual(glm::abs(image.position[t]), limit)) ||
+        !glm::all(glm::lessThanEqual(glm::abs(image.normal[t]), normal_limit)) ||
+        !(a >= 0.0f && a <= 1.0f)) {
+      error = filename +
+              ": position, normal or coverage not finite or out of range (positions within "
+              "+-1e16, normal components within +-2, coverage in [0,1]) at texel (" +
+              std::to_string(t % size_t(image.size)) + ", " +
+              std::to_string(t / size_t(image.size)) + ")";
+      return false;
+    }
+  }
   return true;
 }
 
@@ -263,18 +284,8 @@ bool load_geometry_image(const std::string& filename, GeometryImage& image, std:
   if (!read_pixels(filename, *file, fb, error)) {
     return false;
   }
-  const glm::vec3 limit(static_cast<float>(kMaxCoordinate));
-  for (size_t t = 0; t < texels; ++t) {
-    const float a = out.coverage[t];
-    if (!glm::all(glm::isfinite(out.position[t])) || !glm::all(glm::isfinite(out.normal[t])) ||
-        glm::any(glm::greaterThan(glm::abs(out.position[t]), limit)) || !(a >= 0.0f && a <= 1.0f)) {
-      error = filename +
-              ": position, normal or coverage not finite or out of range (positions "
-              "within +-1e15, coverage in [0,1]) at texel (" +
-              std::to_string(t % size_t(out.size)) + ", " + std::to_string(t / size_t(out.size)) +
-              ")";
-      return false;
-    }
+  if (!check_texels(filename, out, error)) {
+    return false;
   }
   image = std::move(out);
   return true;

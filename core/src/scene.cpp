@@ -590,7 +590,7 @@ SceneObject read_object(const Reader& r, const std::string& p, Scene& scene) {
   if (s.type != ShapeType::kMesh) {  // a mesh's reach is known once its file is read
     glm::dvec3 lo, hi;
     shape_bounds(s, lo, hi);
-    const double reach = world_reach(o.transform, lo, hi);
+    const double reach = box_reach(object_to_world(o.transform), lo, hi);
     if (reach > kMaxCoordinate) {
       throw SceneError{p, "reaches " + Reader::fmt(reach) +
                               " in world coordinates after its transform (limit 1e15)"};
@@ -698,12 +698,11 @@ void shape_bounds(const Shape& shape, glm::dvec3& lo, glm::dvec3& hi) {
   hi = half;
 }
 
-double world_reach(const Transform& transform, glm::dvec3 lo, glm::dvec3 hi) {
-  const glm::dmat4 to_world = object_to_world(transform);
+double box_reach(const glm::dmat4& m, glm::dvec3 lo, glm::dvec3 hi) {
   double reach = 0.0;
   for (int c = 0; c < 8; ++c) {
     const glm::dvec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-    const glm::dvec3 w = glm::dvec3(to_world * glm::dvec4(corner, 1.0));
+    const glm::dvec3 w = glm::dvec3(m * glm::dvec4(corner, 1.0));
     reach = std::max({reach, std::abs(w.x), std::abs(w.y), std::abs(w.z)});
   }
   return reach;

@@ -99,10 +99,10 @@ bool read_thickness_header(const std::string& filename, const Imf::Header& heade
     map.box.max = {hi->value().x, hi->value().y, hi->value().z};
   if (const auto* source = header.findTypedAttribute<Imf::StringAttribute>("gfield.source"))
     map.source = source->value();
-  const glm::vec3 limit(static_cast<float>(kMaxCoordinate));
+  const glm::vec3 limit(static_cast<float>(kMaxAssetCoordinate));
   if (!glm::all(glm::lessThanEqual(glm::abs(map.box.min), limit)) ||
       !glm::all(glm::lessThanEqual(glm::abs(map.box.max), limit))) {
-    error = filename + ": gfield.boxMin/boxMax not finite or beyond +-1e15";
+    error = filename + ": gfield.boxMin/boxMax not finite or beyond +-1e16";
     return false;
   }
   return true;
@@ -134,9 +134,9 @@ bool load_thickness_map(const std::string& filename, ThicknessMap& map, std::str
     return false;
   }
   for (size_t t = 0; t < out.distance.size(); ++t) {
-    if (!(out.distance[t] >= 0.0f && out.distance[t] <= float(kMaxCoordinate))) {
+    if (!(out.distance[t] >= 0.0f && out.distance[t] <= float(kMaxAssetDistance))) {
       error = filename + ": distance " + std::to_string(out.distance[t]) + " at texel " +
-              std::to_string(t) + " is not in [0, 1e15]";
+              std::to_string(t) + " is not in [0, 1e17]";
       return false;
     }
   }

@@ -22,7 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
               "arrays do not match the size");
   for (size_t t = 0; t < texels; ++t) {
     for (int k = 0; k < 3; ++k) {
-      fuzz::check(std::abs(image.position[t][k]) <= kMaxCoordinate, "a position out of range");
+      fuzz::check(std::abs(image.position[t][k]) <= kMaxAssetCoordinate, "a position out of range");
     }
   }
   fuzz::check(glm::all(glm::lessThan(image.box.min, image.box.max)), "an empty box");

@@ -28,7 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
   }
   for (const glm::dvec3& p : pm.mesh.positions) {
     for (int k = 0; k < 3; ++k) {
-      fuzz::check(std::abs(p[k]) <= kMaxCoordinate, "a coordinate out of range");
+      fuzz::check(std::abs(p[k]) <= kMaxAssetCoordinate, "a coordinate out of range");
     }
   }
   return 0;

@@ -24,7 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
                 "a mesh object without its mesh");
     glm::dvec3 lo, hi;
     shape_bounds(o.shape, lo, hi);
-    fuzz::check(world_reach(o.transform, lo, hi) <= kMaxCoordinate, "an object out of range");
+    fuzz::check(box_reach(object_to_world(o.transform), lo, hi) <= kMaxCoordinate,
+                "an object out of range");
   }
   const glm::vec3 forward = scene.camera.target - scene.camera.position;
   fuzz::check(glm::length(forward) > 0.0f && std::isfinite(glm::length(forward)),

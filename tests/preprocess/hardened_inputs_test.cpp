@@ -192,6 +192,28 @@ TEST_F(HardenedInputs, AbsurdSceneTransformsNeverReachEmbree) {
   }
 }
 
+TEST_F(HardenedInputs, MeshesAtTheCoordinateLimitBuildAssetsThatReadBack) {
+  // `gfield image` on a mesh scaled by 1e30 used to write a file gfield could not read: now such a
+  // mesh is refused, and one at the limit (+-1e15) gives an asset (its box padded beyond 1e15)
+  // that verify, thickness and render take.
+  const fs::path dir = kDir / "limit";
+  fs::create_directories(dir);
+  std::ofstream(dir / "big.obj") << "v -1e15 -1e15 -1e15\nv 1e15 -1e15 -1e15\nv -1e15 1e15 -1e15\n"
+                                    "v -1e15 -1e15 1e15\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+  const std::string name = (dir / "big").string();
+  for (const std::string& command :
+       {"build " + name + ".obj -o " + name + " --size 8 --samples 4 --verify-rays 100",
+        "verify " + name + " --rays 100", "thickness " + name}) {
+    const CliRun run = run_cli(command);
+    EXPECT_EQ(run.exit_code, 0) << command << "\n" << run.err;
+  }
+  std::ofstream(dir / "big.json") << R"({"camera": {"position": [0, 0, 9e14], "target": [0, 0, 0]},
+    "objects": [{"shape": "mesh", "file": "big.obj", "material": {"type": "mirror"}}]})";
+  const CliRun render = run_cli("render " + (dir / "big.json").string() + " -o " +
+                                (dir / "big.png").string() + " --size 8x8 -q");
+  EXPECT_EQ(render.exit_code, 0) << render.err;
+}
+
 TEST_F(HardenedInputs, FileNamesThatAreNotUtf8AreEscaped) {
   const fs::path dir = kDir / "names";
   fs::create_directories(dir);

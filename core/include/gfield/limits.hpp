@@ -14,6 +14,13 @@ namespace gfield {
 /// float range, and far inside the |origin| <= 1.8e18 that Embree's ray checks allow, so that no
 /// ray gfield casts with Embree is invalid.
 inline constexpr double kMaxCoordinate = 1e15;
+/// Largest |coordinate| in a gfield asset: boxes, geometry-image positions, parameterised meshes
+/// (a mesh within kMaxCoordinate gets a box padded by a percent of its diagonal, within this).
+/// Distances of thickness maps are at most kMaxAssetDistance.
+inline constexpr double kMaxAssetCoordinate = 1e16;
+inline constexpr double kMaxAssetDistance = 1e17;
+/// Geometry-image normals are unit vectors: each component within +-kMaxNormalComponent.
+inline constexpr double kMaxNormalComponent = 2.0;
 
 /// Mesh files (OBJ, PLY, OFF, STL): bytes, vertices, triangles after fan triangulation, corners of
 /// one polygon.

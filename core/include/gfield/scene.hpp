@@ -62,8 +62,9 @@ glm::dmat4 object_to_world(const Transform& transform);
 
 /// Object-space bounds of an analytic shape (zero for meshes: their bounds come from the file).
 void shape_bounds(const Shape& shape, glm::dvec3& lo, glm::dvec3& hi);
-/// The largest |world coordinate| that the object-space box [lo, hi] reaches under `transform`.
-double world_reach(const Transform& transform, glm::dvec3 lo, glm::dvec3 hi);
+/// The largest |coordinate| of the box [lo, hi] mapped by the affine `m` (reached at a corner):
+/// an object's reach in world coordinates is box_reach(object_to_world(t), lo, hi).
+double box_reach(const glm::dmat4& m, glm::dvec3 lo, glm::dvec3 hi);
 
 enum class MaterialType { kDiffuse, kMirror, kDielectric };
 enum class TextureType { kNone, kChecker, kColorChart };
