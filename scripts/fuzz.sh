@@ -3,7 +3,7 @@
 # build-fuzz/, then for each target (all, or the ones named) replays its regressions and seeds and
 # fuzzes it from the seeds, one target at a time at nice 19. Settings (environment):
 #   GFIELD_FUZZ_SECONDS  fuzzing time per target (default 20)
-#   GFIELD_FUZZ_RUNS     stop a target after this many executions instead (default: no limit)
+#   GFIELD_FUZZ_RUNS     also stop a target after this many executions (default: no limit)
 #   GFIELD_FUZZ_TIMEOUT  seconds one input may take before it counts as a hang (default 10)
 #   GFIELD_FUZZ_CORPUS   folder that keeps each target's grown corpus (TARGET/ below it) between
 #                        runs (default: a temporary folder, removed at the end)
@@ -32,7 +32,7 @@ if [ -z "$corpus_root" ]; then
 fi
 limit=(-max_total_time="${GFIELD_FUZZ_SECONDS:-20}")
 if [ -n "${GFIELD_FUZZ_RUNS:-}" ]; then
-  limit=(-runs="$GFIELD_FUZZ_RUNS")
+  limit+=(-runs="$GFIELD_FUZZ_RUNS")
 fi
 for t in "${targets[@]}"; do
   fuzzer=build-fuzz/tests/fuzz/fuzz_$t
@@ -55,6 +55,8 @@ for t in "${targets[@]}"; do
     echo "fuzz: $t found an input that breaks it (in $artifacts/)" >&2
     exit 1
   }
-  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$artifacts/log.txt")
-  echo "$t: $runs executions in $(($(date +%s) - start)) s, corpus $(ls "$corpus_root/$t" | wc -l) files"
+  stat() { sed -n "s/^stat::$1: *//p" "$artifacts/log.txt"; }
+  echo "$t: $(stat number_of_executed_units) executions in $(($(date +%s) - start)) s," \
+    "slowest input $(stat slowest_unit_time_sec) s, peak RSS $(stat peak_rss_mb) MB," \
+    "corpus $(find "$corpus_root/$t" -type f | wc -l) files"
 done

@@ -1,8 +1,8 @@
 // Replays inputs through a fuzz target's entry point without libFuzzer (the normal gcc build):
 // `fuzz_replay_X PATH...` runs LLVMFuzzerTestOneInput on every file of each PATH (a file or a
-// folder, recursively, in name order) and prints how long the slowest took. Exit 0 when all ran;
-// a broken contract aborts (fuzz_support.hpp); an input taking longer than --max-seconds S
-// (default 10) fails the run.
+// folder, recursively, in name order) and prints how long the slowest took, overall and among
+// inputs of at most 1 KB. Exit 0 when all ran; a broken contract aborts (fuzz_support.hpp); an
+// input taking longer than --max-seconds S (default 10) fails the run.
 
 #include <algorithm>
 #include <chrono>
@@ -52,8 +52,8 @@ int main(int argc, char** argv) {
     const std::vector<std::filesystem::path> found = inputs_of(arg);
     files.insert(files.end(), found.begin(), found.end());
   }
-  double slowest = 0.0;
-  std::string slowest_name;
+  double slowest = 0.0, slowest_small = 0.0;
+  std::string slowest_name, slowest_small_name;
   for (const std::filesystem::path& file : files) {
     std::ifstream in(file, std::ios::binary);
     const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), {});
@@ -65,9 +65,14 @@ int main(int argc, char** argv) {
       slowest = seconds;
       slowest_name = file.string();
     }
+    if (bytes.size() <= 1024 && seconds > slowest_small) {
+      slowest_small = seconds;
+      slowest_small_name = file.string();
+    }
   }
-  std::printf("replayed %zu inputs; slowest %.3f s (%s)\n", files.size(), slowest,
-              slowest_name.c_str());
+  std::printf("replayed %zu inputs; slowest %.4f s (%s); of those <= 1 KB %.4f s (%s)\n",
+              files.size(), slowest, slowest_name.c_str(), slowest_small,
+              slowest_small_name.c_str());
   if (files.empty() || slowest > max_seconds) {
     std::fprintf(stderr, "fuzz_replay: %s\n",
                  files.empty() ? "no inputs" : "an input took longer than --max-seconds");
