@@ -203,30 +203,4 @@ bool intersect_shape(const Shape& shape, glm::dvec3 o, glm::dvec3 d, double t_mi
   return true;
 }
 
-void shape_bounds(const Shape& shape, glm::dvec3& lo, glm::dvec3& hi) {
-  glm::dvec3 half(0.0);
-  switch (shape.type) {
-    case ShapeType::kMesh:
-      break;
-    case ShapeType::kSphere:
-      half = glm::dvec3(shape.radius);
-      break;
-    case ShapeType::kQuad:
-      half = glm::dvec3(0.5 * shape.size.x, 0.5 * shape.size.y, 0.0);
-      break;
-    case ShapeType::kBox:
-      half = 0.5 * glm::dvec3(shape.size);
-      break;
-    case ShapeType::kSlab:
-      half = 0.5 * glm::dvec3(shape.size.x, shape.size.y, shape.thickness);
-      break;
-    case ShapeType::kCylinder:
-    case ShapeType::kHollowCylinder:
-      half = glm::dvec3(shape.radius, 0.5 * shape.height, shape.radius);
-      break;
-  }
-  lo = -half;
-  hi = half;
-}
-
 }  // namespace gfield

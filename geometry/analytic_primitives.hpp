@@ -21,7 +21,4 @@ struct PrimitiveHit {
 bool intersect_shape(const Shape& shape, glm::dvec3 origin, glm::dvec3 direction, double t_min,
                      double t_max, PrimitiveHit& hit);
 
-/// Object-space bounds of an analytic shape.
-void shape_bounds(const Shape& shape, glm::dvec3& lo, glm::dvec3& hi);
-
 }  // namespace gfield

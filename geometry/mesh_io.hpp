@@ -1,7 +1,10 @@
 #pragma once
-// Triangle meshes read from OBJ, PLY, OFF and STL files through OpenMesh's readers.
-// Polygons are fan-triangulated; the soup is kept as read (no welding, no repair), so that the
-// topology report describes the file itself.
+// Triangle meshes read from OBJ, PLY (ASCII and binary), OFF and STL (ASCII and binary) files by
+// the project's own readers (mesh_readers.hpp), which check every count, index and coordinate
+// against the file and the limits of gfield/limits.hpp before trusting it. Polygons are
+// fan-triangulated; the soup is kept as read (no welding, no repair; STL corners at identical
+// positions become one vertex), so that the topology report describes the file itself.
+// Coordinates are read as 32-bit floats.
 
 #include <string>
 #include <vector>
@@ -23,9 +26,11 @@ struct MeshLoadStats {
   size_t triangulated = 0;  ///< of those, polygons with more than 3 corners (fan-triangulated)
 };
 
-/// Reads `filename` (.obj, .ply, .off, .stl; case-insensitive extension). False with an error
-/// "FILE: problem" for a missing/unreadable/empty file, an unknown extension, a file with 0
-/// faces, non-finite coordinates or face indices out of range.
+/// Reads `filename` (.obj, .ply, .off, .stl; case-insensitive extension). False with a one-line
+/// error "FILE[:LINE]: problem" for a missing/unreadable/empty file or one above kMaxMeshFileBytes,
+/// an unknown extension, a malformed or truncated file, a header whose counts the file cannot
+/// hold, a face with fewer than 3 or more than kMaxPolygonCorners corners, a file with 0 faces,
+/// a coordinate that is not finite or beyond kMaxCoordinate (1e15), face indices out of range.
 bool load_mesh(const std::string& filename, TriangleMesh& mesh, std::string& error,
                MeshLoadStats* stats = nullptr);
 

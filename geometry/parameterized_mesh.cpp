@@ -3,7 +3,6 @@
 #include "geometry/parameterized_mesh.hpp"
 
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -11,10 +10,22 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "geometry/text_scan.hpp"
 #include "gfield/atomic_file.hpp"
 #include "gfield/build_id.hpp"
+#include "gfield/file_read.hpp"
+#include "gfield/limits.hpp"
 
 namespace gfield {
+namespace {
+/// The line that promises what the file holds, "#gfield-counts V T F" (v, vt and f lines; an
+/// OBJ comment to other readers), so that a file cut short at a line end is an error too.
+constexpr const char* kCountsTag = "#gfield-counts";
+/// Corner uvs lie in [0,1]^2 but for the corners of triangles that cross the border of an
+/// orbifold chart's square (their centroid is inside): never further out than this.
+constexpr double kMinUv = -1.0;
+constexpr double kMaxUv = 2.0;
+}  // namespace
 
 std::string parameterized_mesh_path(const std::string& geometry_image_path) {
   const std::string suffix = ".exr";
@@ -56,6 +67,8 @@ bool save_parameterized_mesh(const std::string& filename, const ParameterizedMes
     return false;
   }
   std::fprintf(file, "# gfield parameterised mesh: v = mesh coordinates, vt = geometry-image uv\n");
+  std::fprintf(file, "%s %zu %zu %zu\n", kCountsTag, pm.mesh.positions.size(), vts.size(),
+               pm.mesh.triangles.size());
   if (!pm.build_id.empty())
     std::fprintf(file, "# %s %s\n", kBuildIdAttribute, pm.build_id.c_str());
   for (const glm::dvec3& p : pm.mesh.positions)
@@ -88,94 +101,180 @@ bool parse_build_id_line(const std::string& line, std::string& build_id) {
   return true;
 }
 
-/// Parses "a/b[/c]" into one-based (a, b); false if either is missing or not an integer.
-bool parse_corner(std::string_view token, long& v, long& vt) {
-  const size_t slash = token.find('/');
-  if (slash == std::string_view::npos)
+/// What a file holds, counted while reading, and the counts its header line promises.
+struct Counts {
+  std::int64_t vertices = 0, uvs = 0, triangles = 0;
+};
+
+bool read_counts(text::Words& words, Counts& counts, std::string& what) {
+  std::string_view v, t, f;
+  if (!words.next(v) || !words.next(t) || !words.next(f) ||
+      !text::parse_int64(v, counts.vertices) || !text::parse_int64(t, counts.uvs) ||
+      !text::parse_int64(f, counts.triangles) || !words.empty()) {
+    what = "malformed counts line (expected \"" + std::string(kCountsTag) +
+           " VERTICES UVS TRIANGLES\")";
     return false;
-  const std::string_view a = token.substr(0, slash);
-  std::string_view b = token.substr(slash + 1);
-  b = b.substr(0, b.find('/'));
-  return std::from_chars(a.data(), a.data() + a.size(), v).ec == std::errc() &&
-         std::from_chars(b.data(), b.data() + b.size(), vt).ec == std::errc();
+  }
+  return true;
+}
+
+bool read_numbers(text::Words& words, double* values, int count, std::string& what) {
+  std::string_view word;
+  for (int k = 0; k < count; ++k) {
+    if (!words.next(word) || !text::parse_double(word, values[k]) || !std::isfinite(values[k])) {
+      what = word.empty() ? "expected " + std::to_string(count) + " numbers"
+                          : text::quoted(word) + " is not a finite number";
+      return false;
+    }
+  }
+  if (words.next(word)) {
+    what = "unexpected " + text::quoted(word) + " after " + std::to_string(count) + " numbers";
+    return false;
+  }
+  return true;
+}
+
+/// A triangle "f v/vt v/vt v/vt" (a "/vn" after each is ignored): 0-based indices, each checked
+/// against the 64-bit range [1, limit] before it is converted.
+bool read_face(text::Words& words, glm::ivec3& v, glm::ivec3& t, std::string& what) {
+  std::string_view word;
+  for (int c = 0; c < 3; ++c) {
+    std::int64_t a = 0, b = 0;
+    const bool got = words.next(word);
+    const size_t slash = word.find('/');
+    const size_t second = word.find('/', slash == std::string_view::npos ? word.size() : slash + 1);
+    const bool ok = got && slash != std::string_view::npos &&
+                    text::parse_int64(word.substr(0, slash), a) &&
+                    text::parse_int64(word.substr(slash + 1, second - slash - 1), b);
+    if (!ok) {
+      what = "faces must be triangles written as v/vt (found " + text::quoted(word) + ")";
+      return false;
+    }
+    if (a < 1 || a > kMaxMeshVertices || b < 1 || b > kMaxMeshVertices) {
+      what =
+          "face index " + std::to_string(a < 1 || a > kMaxMeshVertices ? a : b) + " out of range";
+      return false;
+    }
+    v[c] = int(a - 1);
+    t[c] = int(b - 1);
+  }
+  if (words.next(word)) {
+    what = "faces must be triangles written as v/vt (a fourth corner " + text::quoted(word) + ")";
+    return false;
+  }
+  return true;
+}
+
+/// One statement; `vts` and `vt_triangles` collect the uvs and each triangle's uv indices.
+bool read_line(std::string_view line, ParameterizedMesh& pm, std::vector<glm::vec2>& vts,
+               std::vector<glm::ivec3>& vt_triangles, Counts& promised, std::string& what) {
+  text::Words words(line);
+  std::string_view first;
+  words.next(first);
+  double values[3];
+  if (first == "v") {
+    if (!read_numbers(words, values, 3, what)) {
+      return false;
+    }
+    if (std::abs(values[0]) > kMaxAssetCoordinate || std::abs(values[1]) > kMaxAssetCoordinate ||
+        std::abs(values[2]) > kMaxAssetCoordinate) {
+      what = "vertex coordinate beyond the limit of 1e16";
+      return false;
+    }
+    pm.mesh.positions.emplace_back(values[0], values[1], values[2]);
+  } else if (first == "vt") {
+    if (!read_numbers(words, values, 2, what)) {
+      return false;
+    }
+    if (values[0] < kMinUv || values[0] > kMaxUv || values[1] < kMinUv || values[1] > kMaxUv) {
+      what = "uv (" + std::to_string(values[0]) + ", " + std::to_string(values[1]) +
+             ") outside [-1, 2]^2";
+      return false;
+    }
+    vts.emplace_back(float(values[0]), float(values[1]));
+  } else if (first == "f") {
+    glm::ivec3 v, t;
+    if (!read_face(words, v, t, what)) {
+      return false;
+    }
+    pm.mesh.triangles.push_back(v);
+    vt_triangles.push_back(t);
+  } else if (first == kCountsTag) {
+    return read_counts(words, promised, what);
+  } else if (first == "#") {
+    std::string_view key, id;
+    if (words.next(key) && key == kBuildIdAttribute && words.next(id))
+      pm.build_id = std::string(id);
+  }
+  return true;
 }
 
 }  // namespace
 
 bool load_parameterized_mesh(const std::string& filename, ParameterizedMesh& pm,
                              std::string& error) {
-  std::ifstream in(filename);
-  if (!in) {
-    error = filename + ": cannot open";
+  std::string data;
+  if (!read_file(filename, kMaxMeshFileBytes, data, error)) {
     return false;
   }
-  pm = {};
+  ParameterizedMesh out;
   std::vector<glm::vec2> vts;
   std::vector<glm::ivec3> vt_triangles;
-  std::string line;
-  size_t line_number = 0;
-  auto fail = [&](const std::string& what) {
-    error = filename + ":" + std::to_string(line_number) + ": " + what;
-    return false;
-  };
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (parse_build_id_line(line, pm.build_id))
-      continue;
-    if (line.rfind("v ", 0) == 0) {
-      glm::dvec3 p;
-      if (std::sscanf(line.c_str() + 2, "%lf %lf %lf", &p.x, &p.y, &p.z) != 3)
-        return fail("bad vertex");
-      pm.mesh.positions.push_back(p);
-    } else if (line.rfind("vt ", 0) == 0) {
-      glm::vec2 t;
-      if (std::sscanf(line.c_str() + 3, "%f %f", &t.x, &t.y) != 2)
-        return fail("bad uv");
-      vts.push_back(t);
-    } else if (line.rfind("f ", 0) == 0) {
-      std::string_view rest(line);
-      rest.remove_prefix(2);
-      glm::ivec3 v, t;
-      int corners = 0;
-      while (!rest.empty()) {
-        const size_t start = rest.find_first_not_of(" \t\r");
-        if (start == std::string_view::npos)
-          break;
-        rest.remove_prefix(start);
-        const size_t end = rest.find_first_of(" \t\r");
-        const std::string_view token = rest.substr(0, end);
-        rest.remove_prefix(end == std::string_view::npos ? rest.size() : end);
-        long a = 0, b = 0;
-        if (corners == 3 || !parse_corner(token, a, b))
-          return fail("faces must be triangles written as v/vt");
-        v[corners] = int(a - 1);
-        t[corners] = int(b - 1);
-        ++corners;
-      }
-      if (corners != 3)
-        return fail("faces must be triangles written as v/vt");
-      pm.mesh.triangles.push_back(v);
-      vt_triangles.push_back(t);
+  Counts promised{-1, -1, -1};
+  text::Lines lines(data);
+  std::string_view line;
+  std::string what;
+  while (lines.next(line)) {
+    if (!read_line(line, out, vts, vt_triangles, promised, what)) {
+      error = filename + ":" + std::to_string(lines.number()) + ": " + what;
+      return false;
     }
   }
-  if (pm.mesh.triangles.empty()) {
+  const Counts found{std::int64_t(out.mesh.positions.size()), std::int64_t(vts.size()),
+                     std::int64_t(out.mesh.triangles.size())};
+  if (!lines.line_ended() && !data.empty()) {
+    error = filename + ": truncated (the last line has no end)";
+    return false;
+  }
+  if (promised.vertices >= 0 && (promised.vertices != found.vertices || promised.uvs != found.uvs ||
+                                 promised.triangles != found.triangles)) {
+    error = filename + ": truncated or corrupt: " + std::to_string(found.vertices) + " v, " +
+            std::to_string(found.uvs) + " vt, " + std::to_string(found.triangles) +
+            " f, but the counts line says " + std::to_string(promised.vertices) + ", " +
+            std::to_string(promised.uvs) + ", " + std::to_string(promised.triangles);
+    return false;
+  }
+  if (out.mesh.triangles.empty()) {
     error = filename + ": no faces";
     return false;
   }
-  pm.corner_uv.resize(3 * pm.mesh.triangles.size());
-  for (size_t f = 0; f < pm.mesh.triangles.size(); ++f) {
+  out.corner_uv.resize(3 * out.mesh.triangles.size());
+  for (size_t f = 0; f < out.mesh.triangles.size(); ++f) {
     for (int c = 0; c < 3; ++c) {
-      const int v = pm.mesh.triangles[f][c];
+      const int v = out.mesh.triangles[f][c];
       const int t = vt_triangles[f][c];
-      if (v < 0 || size_t(v) >= pm.mesh.positions.size() || t < 0 || size_t(t) >= vts.size()) {
-        error = filename + ": face " + std::to_string(f) + " has an index out of range";
+      if (size_t(v) >= out.mesh.positions.size() || size_t(t) >= vts.size()) {
+        error = filename + ": face " + std::to_string(f) + " has an index out of range (" +
+                std::to_string(found.vertices) + " v, " + std::to_string(found.uvs) + " vt)";
         return false;
       }
-      pm.corner_uv[3 * f + c] = vts[t];
+      out.corner_uv[3 * f + size_t(c)] = vts[size_t(t)];
+    }
+  }
+  pm = std::move(out);
+  return true;
+}
+
+bool mesh_inside_box(const ParameterizedMesh& pm, const Box& box) {
+  for (const glm::dvec3& p : pm.mesh.positions) {
+    const glm::vec3 q(p);
+    if (glm::any(glm::lessThan(q, box.min)) || glm::any(glm::greaterThan(q, box.max))) {
+      return false;
     }
   }
   return true;
 }
+
 
 bool read_parameterized_mesh_build_id(const std::string& filename, std::string& build_id,
                                       std::string& error) {

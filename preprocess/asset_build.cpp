@@ -5,6 +5,7 @@
 
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/atomic_file.hpp"
+#include "gfield/printable.hpp"
 #include "preprocess/asset_files.hpp"
 #include "preprocess/asset_staging.hpp"
 #include "preprocess/topology.hpp"
@@ -143,8 +144,8 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
   const AssetFiles& staged = staging.staged();
   const AssetFiles files = asset_files(name);
   report = nlohmann::json::object();
-  report["mesh"] = std::filesystem::path(mesh_path).filename().string();
-  report["source_path"] = std::filesystem::absolute(mesh_path).string();
+  report["mesh"] = printable(std::filesystem::path(mesh_path).filename().string());
+  report["source_path"] = printable(std::filesystem::absolute(mesh_path).string());
   report["build_id"] = inputs.build_id;
   report["inputs"] = inputs.record;
   report["topology"] = topology_to_json(analyze_topology(mesh));
@@ -175,9 +176,9 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
     report["accuracy"] = std::move(accuracy);
   }
   std::error_code ec;
-  report["files"] = {{"geometry_image", files.image},
-                     {"parameterized_mesh", files.parameterized_mesh},
-                     {"geometry_field", files.field},
+  report["files"] = {{"geometry_image", printable(files.image)},
+                     {"parameterized_mesh", printable(files.parameterized_mesh)},
+                     {"geometry_field", printable(files.field)},
                      {"geometry_image_bytes", size_t(std::filesystem::file_size(staged.image, ec))},
                      {"geometry_field_bytes", field_report.file_bytes}};
   report["seconds"] = seconds_since(start);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "gfield/content_hash.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 namespace {
@@ -88,13 +89,14 @@ bool hash_build_inputs(const std::string& mesh_path, const nlohmann::json& optio
     std::string hash;
     std::string ignored;
     const bool found = fs::is_regular_file(file, ec) && sha256_file(file, hash, ignored);
-    textures.push_back({{"file", fs::path(file).lexically_relative(mesh_folder).string()},
-                        {"sha256", found ? nlohmann::json(hash) : nlohmann::json()}});
+    textures.push_back(
+        {{"file", printable(fs::path(file).lexically_relative(mesh_folder).string())},
+         {"sha256", found ? nlohmann::json(hash) : nlohmann::json()}});
   }
   inputs.record = {{"scheme", kBuildIdScheme},
                    {"gfield", GFIELD_VERSION},
                    {"mesh",
-                    {{"file", fs::path(mesh_path).filename().string()},
+                    {{"file", printable(fs::path(mesh_path).filename().string())},
                      {"bytes", fs::file_size(mesh_path, ec)},
                      {"sha256", mesh_hash}}},
                    {"textures", std::move(textures)},

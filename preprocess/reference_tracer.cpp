@@ -14,12 +14,13 @@
 #include <limits>
 #include <mutex>
 
-#include "gfield/environment.hpp"
-#include "gfield/optics.hpp"
 #include "geometry/analytic_primitives.hpp"
-#include "preprocess/embree_mesh.hpp"
 #include "geometry/mesh_io.hpp"
 #include "geometry/outward_normals.hpp"
+#include "gfield/environment.hpp"
+#include "gfield/limits.hpp"
+#include "gfield/optics.hpp"
+#include "preprocess/embree_mesh.hpp"
 
 namespace gfield {
 namespace {
@@ -92,6 +93,47 @@ bool overlaps(const TracerRay& ray, glm::dvec3 lo, glm::dvec3 hi, double t_max) 
 
 glm::dvec3 to_d(glm::vec3 v) {
   return glm::dvec3(v);
+}
+
+/// Checks that every ray Embree sees stays far inside its limits (|origin| <= 1.8e18): each mesh
+/// object within +-kMaxCoordinate in world coordinates, and the scene's box (camera, point
+/// lights, objects) within +-kMaxAssetCoordinate in the coordinates of each mesh object, where
+/// Embree intersects its instances. Analytic objects were checked when the scene was read. False
+/// with "SCENE: objects[I] (MESH): problem".
+bool check_reach(const Scene& scene, const std::vector<ObjectRecord>& objects, std::string& error) {
+  glm::dvec3 lo(scene.camera.position), hi(scene.camera.position);
+  for (const Light& light : scene.lights) {
+    if (light.type == LightType::kPoint) {
+      lo = glm::min(lo, glm::dvec3(light.position));
+      hi = glm::max(hi, glm::dvec3(light.position));
+    }
+  }
+  for (const ObjectRecord& r : objects) {
+    lo = glm::min(lo, r.world_lo);
+    hi = glm::max(hi, r.world_hi);
+  }
+  // World coordinates first: a mesh far out makes the scene's box large for every other mesh.
+  char text[160];
+  for (int pass = 0; pass < 2; ++pass) {
+    for (size_t i = 0; i < objects.size(); ++i) {
+      const ObjectRecord& r = objects[i];
+      const double reach = pass == 0 ? box_reach(glm::dmat4(1.0), r.world_lo, r.world_hi)
+                                     : box_reach(r.to_object, lo, hi);
+      if (r.object.shape.type != ShapeType::kMesh ||
+          reach <= (pass == 0 ? kMaxCoordinate : kMaxAssetCoordinate)) {
+        continue;
+      }
+      std::snprintf(text, sizeof(text),
+                    pass == 0 ? "reaches %.3g in world coordinates after its transform (limit 1e15)"
+                              : "the scene reaches %.3g in the mesh's own coordinates (limit "
+                                "1e16: a scale too small for the scene's extent)",
+                    reach);
+      error = scene.filename + ": objects[" + std::to_string(i) + "] (" +
+              scene.meshes[size_t(r.object.shape.mesh)].file + "): " + text;
+      return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -282,6 +324,8 @@ struct ReferenceTracer::Impl {
       }
       objects.push_back(std::move(r));
     }
+    if (!check_reach(scene, objects, error))
+      return false;
     rtcCommitScene(top);
     if (const RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE) {
       error = scene.filename + ": Embree scene build failed (error " + std::to_string(int(e)) + ")";

@@ -53,8 +53,14 @@ bool write_thickness_file(const std::string& name, ThicknessStats& stats, std::s
   if (!load_geometry_image(image_path, image, error))
     return false;
   ParameterizedMesh pm;
+  const std::string mesh_path = parameterized_mesh_path(image_path);
   if (!load_parameterized_mesh_of(image, image_path, pm, error))
     return false;
+  if (!mesh_inside_box(pm, image.box)) {
+    error = mesh_path + ": the mesh does not lie inside the geometry image's box (" + image_path +
+            "): they do not belong together";
+    return false;
+  }
   ThicknessMap map;
   if (!compute_thickness(image, pm.mesh, map, stats, error))
     return false;

@@ -16,6 +16,7 @@
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/build_id.hpp"
 #include "gfield/exr_io.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 namespace {
@@ -301,6 +302,11 @@ bool load_asset(const AssetFiles& files, GeometryField& field, GeometryImage& im
       !load_parameterized_mesh_of(image, files.image, pm, error)) {
     return false;
   }
+  if (!mesh_inside_box(pm, image.box)) {
+    error = files.parameterized_mesh + ": the mesh does not lie inside the geometry image's box (" +
+            files.image + "): they do not belong together";
+    return false;
+  }
   if (!make_field_lookup(field, image, lookup, error)) {
     error = files.field + ": does not match " + files.image + " (" + error + ")";
     return false;
@@ -370,11 +376,11 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   }
 
   report = nlohmann::json::object();
-  report["name"] = name;
-  report["field"] = shown.field;
+  report["name"] = printable(name);
+  report["field"] = printable(shown.field);
   report["samples_per_side"] = field.samples_per_side;
   report["image_size"] = image.size;
-  report["source"] = image.source;
+  report["source"] = printable(image.source);
   report["rays_per_family"] = options.rays;
   report["seed"] = options.seed;
   report["references"] = nlohmann::json::array();
@@ -386,7 +392,7 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
     }
     nlohmann::json r;
     r["mesh"] = reference.label;
-    r["path"] = reference.path;
+    r["path"] = printable(reference.path);
     r["table"] = accuracy_to_json(
         verify_table(field, image, embree, reference.mesh, options.rays, options.seed + 2));
     const Exact exact(embree, reference.mesh);

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "gfield/image_metrics.hpp"
+#include "gfield/printable.hpp"
 #include "gfield/stopwatch.hpp"
 #include "runtime/gl_context.hpp"
 
@@ -11,7 +12,7 @@ namespace gfield {
 namespace {
 
 int fail(const std::string& message, int code = 2) {
-  std::fprintf(stderr, "gfield-view: %s\n", message.c_str());
+  std::fprintf(stderr, "gfield-view: %s\n", printable(message).c_str());
   return code;
 }
 

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "gfield/printable.hpp"
 #include "gfield/scene.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/headless.hpp"
@@ -31,7 +32,7 @@ bool parse_size(const std::string& text, int& width, int& height) {
 }
 
 int fail(const std::string& message) {
-  std::fprintf(stderr, "gfield-view: %s\n", message.c_str());
+  std::fprintf(stderr, "gfield-view: %s\n", printable(message).c_str());
   return 2;
 }
 

@@ -14,6 +14,7 @@
 
 #include "gfield/gpu_contract.hpp"
 #include "gfield/optics.hpp"
+#include "gfield/printable.hpp"
 #include "gfield/stopwatch.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/method_panel.hpp"
@@ -239,7 +240,7 @@ void check_shaders(ViewerState& s, Stopwatch& since_check) {
   const bool rebuilt = s.session->reload_shaders_if_changed(error);
   if (!error.empty()) {
     s.shader_error = error;
-    std::fprintf(stderr, "gfield-view: %s\n", error.c_str());
+    std::fprintf(stderr, "gfield-view: %s\n", printable(error).c_str());
   } else if (rebuilt) {
     s.shader_error.clear();
     s.message = "shaders reloaded";
@@ -444,7 +445,7 @@ int run_viewer(ViewSession& session, const Scene& scene, const std::filesystem::
       GlContext::create_window(int(float(width) * shrink) + kPanelWidth,
                                int(float(height) * shrink), "gfield-view " + scene.filename, error);
   if (!context) {
-    std::fprintf(stderr, "gfield-view: %s\n", error.c_str());
+    std::fprintf(stderr, "gfield-view: %s\n", printable(error).c_str());
     return kExitNoOpenGL;
   }
   const int code = view(session, scene, shader_dir, method, *context);
@@ -460,7 +461,7 @@ int view(ViewSession& session, const Scene& scene, const std::filesystem::path& 
   ShaderProgram present_program;
   if (!session.load(scene, shader_dir, error) || !session.select(method, error) ||
       !present_program.build(shader_dir, {"fullscreen.vert", "present.frag"}, "", error)) {
-    std::fprintf(stderr, "gfield-view: %s\n", error.c_str());
+    std::fprintf(stderr, "gfield-view: %s\n", printable(error).c_str());
     return 2;
   }
   GLFWwindow* window = context.window();

@@ -27,7 +27,7 @@ echo "== $deb ($(du -h "$deb" | cut -f1))"
 [ "$(dpkg-deb -f "$deb" Architecture)" = amd64 ] || fail "architecture"
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
-for p in libc6 libstdc++6 libembree3-3 libopenexr-3-1-30 libopenmesh1 libtbb12 libgmp10 \
+for p in libc6 libstdc++6 libembree3-3 libopenexr-3-1-30 libtbb12 libgmp10 \
   libglfw3 libepoxy0 libstb0 libegl1 libgl1 libgl1-mesa-dri; do
   [[ ", $depends," == *", $p "* || ", $depends," == *", $p,"* ]] || fail "Depends lacks $p"
 done

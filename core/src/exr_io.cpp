@@ -15,13 +15,15 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <filesystem>
 #include <memory>
 #include <mutex>
 #include <thread>
 
+#include "exr_input.hpp"
 #include "gfield/atomic_file.hpp"
 #include "gfield/build_id.hpp"
+#include "gfield/limits.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 
@@ -31,6 +33,7 @@ constexpr const char* kImageTag = "geometry-image";
 constexpr const char* kFieldTag = "geometry-field";
 constexpr int kMinSamplesPerSide = 1;
 constexpr int kMaxSamplesPerSide = 64;
+constexpr int kMaxFieldSide = 6 * kMaxSamplesPerSide * kMaxSamplesPerSide;
 
 void use_all_cores() {
   static std::once_flag once;
@@ -134,9 +137,14 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
     return false;
   }
   out.box = {to_glm(box_min->value()), to_glm(box_max->value())};
+  const float limit = float(kMaxAssetCoordinate);
   if (!glm::all(glm::isfinite(out.box.min)) || !glm::all(glm::isfinite(out.box.max)) ||
-      !glm::all(glm::lessThan(out.box.min, out.box.max))) {
-    error = filename + ": invalid box (gfield.boxMin must be finite and below gfield.boxMax)";
+      !glm::all(glm::lessThan(out.box.min, out.box.max)) ||
+      glm::any(glm::greaterThan(glm::abs(out.box.min), glm::vec3(limit))) ||
+      glm::any(glm::greaterThan(glm::abs(out.box.max), glm::vec3(limit)))) {
+    error = filename +
+            ": invalid box (gfield.boxMin must be below gfield.boxMax, both finite and "
+            "within +-1e16)";
     return false;
   }
   const auto* source = h.findTypedAttribute<Imf::StringAttribute>("gfield.source");
@@ -151,10 +159,32 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
   return true;
 }
 
+/// Positions finite and within kMaxAssetCoordinate, normal components within
+/// kMaxNormalComponent, coverage in [0, 1].
+bool check_texels(const std::string& filename, const GeometryImage& image, std::string& error) {
+  const glm::vec3 limit(static_cast<float>(kMaxAssetCoordinate));
+  const glm::vec3 normal_limit(static_cast<float>(kMaxNormalComponent));
+  for (size_t t = 0; t < image.position.size(); ++t) {
+    const float a = image.coverage[t];
+    if (!glm::all(glm::lessThanEqual(glm::abs(image.position[t]), limit)) ||
+        !glm::all(glm::lessThanEqual(glm::abs(image.normal[t]), normal_limit)) ||
+        !(a >= 0.0f && a <= 1.0f)) {
+      error = filename +
+              ": position, normal or coverage not finite or out of range (positions within "
+              "+-1e16, normal components within +-2, coverage in [0,1]) at texel (" +
+              std::to_string(t % size_t(image.size)) + ", " +
+              std::to_string(t / size_t(image.size)) + ")";
+      return false;
+    }
+  }
+  return true;
+}
+
 bool check_format(const std::string& filename, const ExrAssetHeader& header, const char* tag,
                   std::string& error) {
   if (header.format != tag) {
-    error = filename + ": wrong format tag '" + header.format + "' (expected '" + tag + "')";
+    error =
+        filename + ": wrong format tag '" + printable(header.format) + "' (expected '" + tag + "')";
     return false;
   }
   if (header.version != kFormatVersion) {
@@ -176,27 +206,11 @@ bool check_channels(const std::string& filename, const Imf::Header& h,
   return true;
 }
 
-std::string describe(const std::exception& e) {
-  std::string what = e.what();
-  std::replace(what.begin(), what.end(), '\n', ' ');
-  return what;
-}
-
-bool open_input(const std::string& filename, std::unique_ptr<Imf::InputFile>& file,
+bool open_input(const std::string& filename, int max_side,
+                std::initializer_list<const char*> channels, std::unique_ptr<Imf::InputFile>& file,
                 std::string& error) {
-  std::error_code ec;
-  if (!std::filesystem::exists(filename, ec)) {
-    error = filename + ": no such file";
-    return false;
-  }
   use_all_cores();
-  try {
-    file = std::make_unique<Imf::InputFile>(filename.c_str());
-  } catch (const std::exception& e) {
-    error = filename + ": not a readable OpenEXR file (" + describe(e) + ")";
-    return false;
-  }
-  return true;
+  return open_exr_input(filename, max_side, max_side, channels, file, error);
 }
 
 bool read_pixels(const std::string& filename, Imf::InputFile& file,
@@ -206,7 +220,7 @@ bool read_pixels(const std::string& filename, Imf::InputFile& file,
     file.setFrameBuffer(frame_buffer);
     file.readPixels(dw.min.y, dw.max.y);
   } catch (const std::exception& e) {
-    error = filename + ": truncated or corrupt pixel data (" + describe(e) + ")";
+    error = filename + ": truncated or corrupt pixel data (" + exr_exception_text(e) + ")";
     return false;
   }
   return true;
@@ -242,7 +256,8 @@ bool save_geometry_image(const std::string& filename, const GeometryImage& image
 
 bool load_geometry_image(const std::string& filename, GeometryImage& image, std::string& error) {
   std::unique_ptr<Imf::InputFile> file;
-  if (!open_input(filename, file, error)) {
+  if (!open_input(filename, kMaxGeometryImageSide, {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A"},
+                  file, error)) {
     return false;
   }
   ExrAssetHeader header;
@@ -282,13 +297,8 @@ bool load_geometry_image(const std::string& filename, GeometryImage& image, std:
   if (!read_pixels(filename, *file, fb, error)) {
     return false;
   }
-  for (size_t t = 0; t < texels; ++t) {
-    if (!glm::all(glm::isfinite(out.position[t])) || !glm::all(glm::isfinite(out.normal[t]))) {
-      error = filename + ": non-finite position or normal at texel (" +
-              std::to_string(t % size_t(out.size)) + ", " + std::to_string(t / size_t(out.size)) +
-              ")";
-      return false;
-    }
+  if (!check_texels(filename, out, error)) {
+    return false;
   }
   image = std::move(out);
   return true;
@@ -319,7 +329,7 @@ bool save_geometry_field(const std::string& filename, const GeometryField& field
 
 bool load_geometry_field(const std::string& filename, GeometryField& field, std::string& error) {
   std::unique_ptr<Imf::InputFile> file;
-  if (!open_input(filename, file, error)) {
+  if (!open_input(filename, kMaxFieldSide, {"U", "V"}, file, error)) {
     return false;
   }
   ExrAssetHeader header;
@@ -373,7 +383,7 @@ bool load_geometry_field(const std::string& filename, GeometryField& field, std:
 
 bool load_asset_header(const std::string& filename, ExrAssetHeader& header, std::string& error) {
   std::unique_ptr<Imf::InputFile> file;
-  if (!open_input(filename, file, error)) {
+  if (!open_input(filename, std::max(kMaxFieldSide, kMaxGeometryImageSide), {}, file, error)) {
     return false;
   }
   return read_header(filename, file->header(), header, error);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gfield/build_id.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 namespace {
@@ -94,8 +95,8 @@ bool make_field_lookup(const GeometryField& field, const GeometryImage& image, F
     return false;
   }
   if (field.source != image.source) {
-    error = "the geometry field was built from '" + field.source +
-            "' but the geometry image from '" + image.source + "'";
+    error = "the geometry field was built from '" + printable(field.source) +
+            "' but the geometry image from '" + printable(image.source) + "'";
     return false;
   }
   if (!check_same_build("the geometry field", field.build_id, "the geometry image", image.build_id,

@@ -17,11 +17,25 @@
 #include <filesystem>
 #include <memory>
 
+#include "exr_input.hpp"
 #include "gfield/atomic_file.hpp"
 #include "gfield/image.hpp"
+#include "gfield/limits.hpp"
 
 namespace gfield {
 namespace {
+
+/// Pictures of at most kMaxPictureSide per side and kMaxPicturePixels in all.
+bool check_pixel_count(const std::string& filename, int width, int height, std::string& error) {
+  if (width < 1 || height < 1 || width > kMaxPictureSide || height > kMaxPictureSide ||
+      std::int64_t(width) * height > kMaxPicturePixels) {
+    error = filename + ": " + std::to_string(width) + "x" + std::to_string(height) +
+            " pixels, more than the limit of " + std::to_string(kMaxPicturePixels) + " (" +
+            std::to_string(kMaxPictureSide) + " per side)";
+    return false;
+  }
+  return true;
+}
 
 std::string lower_extension(const std::string& filename) {
   std::string ext = std::filesystem::path(filename).extension().string();
@@ -31,17 +45,24 @@ std::string lower_extension(const std::string& filename) {
 }
 
 bool load_exr(const std::string& filename, Image& image, std::string& error) {
+  std::unique_ptr<Imf::InputFile> file;
+  if (!open_exr_input(filename, kMaxPictureSide, kMaxPictureSide, {"R", "G", "B", "Y"}, file,
+                      error)) {
+    return false;
+  }
   try {
-    Imf::InputFile file(filename.c_str());
-    const Imath::Box2i window = file.header().dataWindow();
+    const Imath::Box2i window = file->header().dataWindow();
     const int width = window.max.x - window.min.x + 1;
     const int height = window.max.y - window.min.y + 1;
-    const Imf::ChannelList& channels = file.header().channels();
+    const Imf::ChannelList& channels = file->header().channels();
     const bool rgb =
         channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
     const bool grey = channels.findChannel("Y") != nullptr;
     if (!rgb && !grey) {
       error = filename + ": EXR has neither R, G, B nor Y channels";
+      return false;
+    }
+    if (!check_pixel_count(filename, width, height, error)) {
       return false;
     }
     Image result(width, height);
@@ -57,17 +78,43 @@ bool load_exr(const std::string& filename, Image& image, std::string& error) {
       frame.insert(rgb ? names[c] : "Y",
                    Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xstride, ystride));
     }
-    file.setFrameBuffer(frame);
-    file.readPixels(window.min.y, window.max.y);
+    file->setFrameBuffer(frame);
+    file->readPixels(window.min.y, window.max.y);
     image = std::move(result);
     return true;
   } catch (const std::exception& e) {
-    error = filename + ": cannot read EXR: " + e.what();
+    error = filename + ": cannot read EXR: " + exr_exception_text(e);
     return false;
   }
 }
 
+/// Checks what a PNG or HDR header claims (stbi_info) against the limits and the file's size
+/// before stb_image allocates for it.
+bool check_stb_header(const std::string& filename, std::string& error) {
+  int width = 0, height = 0, components = 0;
+  if (!stbi_info(filename.c_str(), &width, &height, &components)) {
+    error = filename + ": cannot read image: " + stbi_failure_reason();
+    return false;
+  }
+  std::error_code ec;
+  const std::uint64_t file_size = std::filesystem::file_size(filename, ec);
+  const std::uint64_t raw = std::uint64_t(width) * std::uint64_t(height) * 3;
+  if (!check_pixel_count(filename, width, height, error)) {
+    return false;
+  }
+  if (ec || raw / kMaxCompressionRatio > file_size) {
+    error = filename + ": header claims " + std::to_string(width) + "x" + std::to_string(height) +
+            " pixels, more than the file's " + std::to_string(file_size) +
+            " bytes can hold (truncated or corrupt)";
+    return false;
+  }
+  return true;
+}
+
 bool load_stb(const std::string& filename, bool hdr, Image& image, std::string& error) {
+  if (!check_stb_header(filename, error)) {
+    return false;
+  }
   int width = 0, height = 0, components = 0;
   if (hdr) {
     std::unique_ptr<float, void (*)(void*)> data(

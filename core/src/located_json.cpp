@@ -2,14 +2,14 @@
 
 #include "gfield/located_json.hpp"
 
+#include "gfield/limits.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 
 namespace gfield {
 namespace {
-
-constexpr int kMaxDepth = 200;
 
 class Parser {
  public:
@@ -63,8 +63,8 @@ class Parser {
   }
 
   bool value(nlohmann::json& out, const std::string& pointer, int depth) {
-    if (depth > kMaxDepth)
-      return fail("nesting deeper than 200");
+    if (depth > kMaxJsonDepth)
+      return fail("nesting deeper than " + std::to_string(kMaxJsonDepth));
     if (pos_ >= text_.size())
       return fail("unexpected end of file, expected a value");
     out_.locations[pointer] = here();

@@ -6,22 +6,31 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <set>
 #include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "gfield/file_read.hpp"
 #include "gfield/image.hpp"
+#include "gfield/limits.hpp"
 #include "gfield/located_json.hpp"
 #include "gfield/optics.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 namespace fs = std::filesystem;
 namespace {
 
 using nlohmann::json;
+
+/// Colours, intensities and absorption coefficients: at most this (radiance stays far inside
+/// float range through any number of bounces' products).
+constexpr double kMaxRadiometric = 1e6;
+/// Scale factors of a transform: in [kMinScale, kMaxScale].
+constexpr double kMinScale = 1e-6;
+constexpr double kMaxScale = 1e6;
 
 /// A validation failure at a JSON pointer; turned into "FILE:LINE:COL: path: message".
 struct SceneError {
@@ -91,11 +100,15 @@ class Reader {
     }
   }
 
+  /// A number within +-kMaxCoordinate (every number of a scene is).
   double number(const std::string& pointer) const {
     const json& v = at(pointer);
     if (!v.is_number())
       throw SceneError{pointer, "expected a number"};
-    return v.get<double>();
+    const double d = v.get<double>();
+    if (std::abs(d) > kMaxCoordinate)
+      throw SceneError{pointer, "number " + fmt(d) + " is beyond the limit of 1e15"};
+    return d;
   }
   double number(const std::string& pointer, const char* key, double fallback) const {
     return has(pointer, key) ? number(json_pointer_child(pointer, key)) : fallback;
@@ -149,9 +162,33 @@ class Reader {
       return fallback;
     const std::string p = json_pointer_child(pointer, key);
     const glm::vec3 c = at(p).is_number() ? glm::vec3(float(number(p))) : vec3(p);
-    if (c.x < 0.0f || c.y < 0.0f || c.z < 0.0f)
-      throw SceneError{p, "colour components must be >= 0"};
+    check_color(p, c);
     return c;
+  }
+  /// Colour components in [0, kMaxRadiometric].
+  static void check_color(const std::string& pointer, glm::vec3 c) {
+    if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) ||
+        glm::any(glm::greaterThan(c, glm::vec3(float(kMaxRadiometric))))) {
+      throw SceneError{pointer, "colour components must be in [0, 1e6]"};
+    }
+  }
+  /// An intensity in [0, kMaxRadiometric] (default 1).
+  double intensity(const std::string& pointer) const {
+    const double v = number(pointer, "intensity", 1.0);
+    if (!(v >= 0.0 && v <= kMaxRadiometric))
+      throw SceneError{json_pointer_child(pointer, "intensity"), "must be in [0, 1e6]"};
+    return v;
+  }
+  /// An array of at most `max` elements.
+  const json& array(const std::string& pointer, size_t max) const {
+    const json& v = at(pointer);
+    if (!v.is_array())
+      throw SceneError{pointer, "expected an array"};
+    if (v.size() > max) {
+      throw SceneError{pointer, std::to_string(v.size()) + " elements, more than the limit of " +
+                                    std::to_string(max)};
+    }
+    return v;
   }
   /// A file path relative to the scene file; must exist.
   std::string file(const std::string& pointer) const {
@@ -204,10 +241,7 @@ EnvironmentDesc read_environment(const Reader& r, const std::string& p) {
   r.object(p, {"type", "color", "intensity", "file", "faces"});
   EnvironmentDesc e;
   const std::string type = r.string(p, "type", "studio");
-  e.intensity = float(r.number(p, "intensity", 1.0));
-  if (!(e.intensity >= 0.0f)) {
-    throw SceneError{json_pointer_child(p, "intensity"), "must be >= 0"};
-  }
+  e.intensity = float(r.intensity(p));
   auto forbid = [&](const char* key) {
     if (r.has(p, key)) {
       throw SceneError{
@@ -257,9 +291,7 @@ Light read_light(const Reader& r, const std::string& p) {
   Light l;
   const std::string type = r.string(json_pointer_child(p, "type"));
   l.color = r.color(p, "color", l.color);
-  l.intensity = float(r.number(p, "intensity", 1.0));
-  if (!(l.intensity >= 0.0f))
-    throw SceneError{json_pointer_child(p, "intensity"), "must be >= 0"};
+  l.intensity = float(r.intensity(p));
   if (type == "directional") {
     l.type = LightType::kDirectional;
     r.require(p, "direction");
@@ -335,9 +367,7 @@ Material read_material(const Reader& r, const std::string& p, ShapeType shape) {
       for (size_t i = 0; i < 2; ++i) {
         const std::string ci = json_pointer_child(cp, i);
         m.checker_colors[i] = r.at(ci).is_number() ? glm::vec3(float(r.number(ci))) : r.vec3(ci);
-        if (glm::any(glm::lessThan(m.checker_colors[i], glm::vec3(0.0f)))) {
-          throw SceneError{ci, "colour components must be >= 0"};
-        }
+        Reader::check_color(ci, m.checker_colors[i]);
       }
     }
     if (r.has(p, "scale")) {
@@ -401,15 +431,11 @@ Transform read_transform(const Reader& r, const std::string& p) {
   if (r.has(p, "scale")) {
     const std::string sp = json_pointer_child(p, "scale");
     t.scale = r.at(sp).is_number() ? glm::vec3(float(r.number(sp))) : r.vec3(sp);
-    if (!(t.scale.x > 0.0f && t.scale.y > 0.0f && t.scale.z > 0.0f)) {
-      throw SceneError{sp, "scale factors must be positive (mirroring and flattening are refused)"};
-    }
-  }
-  const glm::dmat4 m = object_to_world(t);
-  for (int c = 0; c < 4; ++c) {
-    for (int k = 0; k < 4; ++k) {
-      if (!std::isfinite(m[c][k]))
-        throw SceneError{p, "transform is not finite"};
+    const glm::vec3 lo{float(kMinScale)}, hi{float(kMaxScale)};
+    if (glm::any(glm::lessThan(t.scale, lo)) || glm::any(glm::greaterThan(t.scale, hi))) {
+      throw SceneError{sp,
+                       "scale factors must be in [1e-6, 1e6] (mirroring and flattening are "
+                       "refused)"};
     }
   }
   return t;
@@ -561,6 +587,15 @@ SceneObject read_object(const Reader& r, const std::string& p, Scene& scene) {
   }
   if (r.has(p, "transform"))
     o.transform = read_transform(r, json_pointer_child(p, "transform"));
+  if (s.type != ShapeType::kMesh) {  // a mesh's reach is known once its file is read
+    glm::dvec3 lo, hi;
+    shape_bounds(s, lo, hi);
+    const double reach = box_reach(object_to_world(o.transform), lo, hi);
+    if (reach > kMaxCoordinate) {
+      throw SceneError{p, "reaches " + Reader::fmt(reach) +
+                              " in world coordinates after its transform (limit 1e15)"};
+    }
+  }
   o.material = read_material(r, json_pointer_child(p, "material"), s.type);
   return o;
 }
@@ -580,16 +615,12 @@ void read_scene(const Reader& r, Scene& scene) {
     scene.environment = read_environment(r, "/environment");
   scene.ambient = r.color(root, "ambient", scene.ambient);
   if (r.has(root, "lights")) {
-    if (!r.at("/lights").is_array())
-      throw SceneError{"/lights", "expected an array"};
-    for (size_t i = 0; i < r.at("/lights").size(); ++i) {
+    for (size_t i = 0; i < r.array("/lights", kMaxSceneLights).size(); ++i) {
       scene.lights.push_back(read_light(r, json_pointer_child("/lights", i)));
     }
   }
   if (r.has(root, "objects")) {
-    if (!r.at("/objects").is_array())
-      throw SceneError{"/objects", "expected an array"};
-    for (size_t i = 0; i < r.at("/objects").size(); ++i) {
+    for (size_t i = 0; i < r.array("/objects", kMaxSceneObjects).size(); ++i) {
       scene.objects.push_back(read_object(r, json_pointer_child("/objects", i), scene));
     }
   }
@@ -641,6 +672,42 @@ glm::dmat4 object_to_world(const Transform& transform) {
   return glm::scale(m, glm::dvec3(transform.scale));
 }
 
+void shape_bounds(const Shape& shape, glm::dvec3& lo, glm::dvec3& hi) {
+  glm::dvec3 half(0.0);
+  switch (shape.type) {
+    case ShapeType::kMesh:
+      break;
+    case ShapeType::kSphere:
+      half = glm::dvec3(shape.radius);
+      break;
+    case ShapeType::kQuad:
+      half = glm::dvec3(0.5 * shape.size.x, 0.5 * shape.size.y, 0.0);
+      break;
+    case ShapeType::kBox:
+      half = 0.5 * glm::dvec3(shape.size);
+      break;
+    case ShapeType::kSlab:
+      half = 0.5 * glm::dvec3(shape.size.x, shape.size.y, shape.thickness);
+      break;
+    case ShapeType::kCylinder:
+    case ShapeType::kHollowCylinder:
+      half = glm::dvec3(shape.radius, 0.5 * shape.height, shape.radius);
+      break;
+  }
+  lo = -half;
+  hi = half;
+}
+
+double box_reach(const glm::dmat4& m, glm::dvec3 lo, glm::dvec3 hi) {
+  double reach = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const glm::dvec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+    const glm::dvec3 w = glm::dvec3(m * glm::dvec4(corner, 1.0));
+    reach = std::max({reach, std::abs(w.x), std::abs(w.y), std::abs(w.z)});
+  }
+  return reach;
+}
+
 glm::vec3 texture_albedo(const Material& material, glm::vec2 uv) {
   switch (material.texture) {
     case TextureType::kNone:
@@ -680,7 +747,7 @@ bool parse_scene(const std::string& text, const std::string& filename, Scene& sc
   LocatedJson document;
   std::string parse_error;
   if (!parse_located_json(text, document, parse_error)) {
-    error = filename + ":" + parse_error;
+    error = filename + ":" + printable(parse_error);
     return false;
   }
   Scene result;
@@ -692,7 +759,7 @@ bool parse_scene(const std::string& text, const std::string& filename, Scene& sc
     const JsonLocation where = document.at(e.pointer);
     const std::string path = readable_path(e.pointer);
     error = filename + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
-            ": " + (path.empty() ? "" : path + ": ") + e.message;
+            ": " + printable((path.empty() ? "" : path + ": ") + e.message);
     return false;
   }
   scene = std::move(result);
@@ -700,15 +767,10 @@ bool parse_scene(const std::string& text, const std::string& filename, Scene& sc
 }
 
 bool load_scene(const std::string& filename, Scene& scene, std::string& error) {
-  std::ifstream in(filename, std::ios::binary);
-  std::error_code ec;
-  if (!in || fs::is_directory(filename, ec)) {
-    error = filename + ": cannot open scene file";
+  std::string text;
+  if (!read_file(filename, kMaxSceneFileBytes, text, error))
     return false;
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse_scene(buffer.str(), filename, scene, error);
+  return parse_scene(text, filename, scene, error);
 }
 
 bool use_asset_folder(const std::string& dir, Scene& scene, std::string& error) {

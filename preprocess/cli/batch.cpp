@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "gfield/printable.hpp"
 #include "preprocess/asset_files.hpp"
 #include "preprocess/asset_staging.hpp"
 #include "preprocess/batch_manifest.hpp"
@@ -56,8 +57,8 @@ std::string host_name() {
 nlohmann::json run_mesh(const BatchMesh& m, const AssetOptions& options, bool force,
                         const TaskContext& task) {
   const auto started = std::chrono::system_clock::now();
-  nlohmann::json record = {{"mesh", m.mesh},
-                           {"asset", m.asset},
+  nlohmann::json record = {{"mesh", printable(m.mesh)},
+                           {"asset", printable(m.asset)},
                            {"shard", shard_label(task.shard)},
                            {"shard_index", task.shard.index},
                            {"shard_count", task.shard.count},
@@ -89,11 +90,12 @@ nlohmann::json run_mesh(const BatchMesh& m, const AssetOptions& options, bool fo
   record["build_id"] = inputs.build_id;
   if (!ok) {
     record["status"] = "failed";
-    record["error"] = error;
+    record["error"] = printable(error);
     return record;
   }
   const AssetFiles files = asset_files(m.asset);
-  record["outputs"] = {files.image, files.parameterized_mesh, files.field, files.report};
+  record["outputs"] = {printable(files.image), printable(files.parameterized_mesh),
+                       printable(files.field), printable(files.report)};
   record["accuracy"] = manifest_accuracy(report);
   if (record["status"] == "built") {
     record["summary"] = asset_summary(report);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "gfield/printable.hpp"
 #include "preprocess/asset_staging.hpp"
 #include "preprocess/cli/asset_options.hpp"
 #include "preprocess/cli/commands.hpp"
@@ -54,7 +55,7 @@ void add_build_command(CLI::App& app) {
     std::printf(
         "%s: %s\nwrote %s.{gimage.exr,gimage.obj,gfield.exr,report.json} in %.2f s "
         "(build %s)\n",
-        mesh->c_str(), asset_summary(report).c_str(), name->c_str(),
+        printable(*mesh).c_str(), asset_summary(report).c_str(), printable(*name).c_str(),
         report["seconds"].get<double>(), inputs.build_id.c_str());
   });
 }

@@ -62,14 +62,7 @@ void add_field_command(CLI::App& app) {
         !load_parameterized_mesh_of(image, args->image, pm, error)) {
       throw CommandError(error);
     }
-    glm::vec3 lo(3.0e38f);
-    glm::vec3 hi(-3.0e38f);
-    for (const glm::dvec3& p : pm.mesh.positions) {
-      lo = glm::min(lo, glm::vec3(p));
-      hi = glm::max(hi, glm::vec3(p));
-    }
-    if (!glm::all(glm::lessThanEqual(image.box.min, lo)) ||
-        !glm::all(glm::lessThanEqual(hi, image.box.max))) {
+    if (!mesh_inside_box(pm, image.box)) {
       throw CommandError(obj + ": the mesh does not lie inside the geometry image's box (" +
                          args->image + "): they do not belong together");
     }

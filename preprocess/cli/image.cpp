@@ -11,6 +11,7 @@
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/atomic_file.hpp"
 #include "gfield/exr_io.hpp"
+#include "gfield/printable.hpp"
 #include "preprocess/asset_build.hpp"
 #include "preprocess/cli/commands.hpp"
 #include "preprocess/geometry_image_build.hpp"
@@ -102,14 +103,14 @@ void run_image(const ImageArguments& args) {
   if (!save_geometry_image(args.output, image, ExrPrecision::kFloat, error))
     throw CommandError(error);
 
-  std::printf("mesh: %s\nimage: %s (%dx%d), uv mesh: %s\n%s", args.mesh.c_str(),
-              args.output.c_str(), image.size, image.size, obj.c_str(),
+  std::printf("mesh: %s\nimage: %s (%dx%d), uv mesh: %s\n%s", printable(args.mesh).c_str(),
+              printable(args.output).c_str(), image.size, image.size, printable(obj).c_str(),
               geometry_image_report_to_text(report).c_str());
   if (!args.json.empty()) {
     nlohmann::json j = geometry_image_report_to_json(report);
-    j["mesh"] = args.mesh;
-    j["image"] = args.output;
-    j["parameterized_mesh"] = obj;
+    j["mesh"] = printable(args.mesh);
+    j["image"] = printable(args.output);
+    j["parameterized_mesh"] = printable(obj);
     j["size"] = image.size;
     j["box"] = {{"min", {image.box.min.x, image.box.min.y, image.box.min.z}},
                 {"max", {image.box.max.x, image.box.max.y, image.box.max.z}}};

@@ -5,8 +5,9 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "preprocess/cli/commands.hpp"
 #include "geometry/mesh_io.hpp"
+#include "gfield/printable.hpp"
+#include "preprocess/cli/commands.hpp"
 #include "preprocess/topology.hpp"
 
 namespace gfield {
@@ -31,12 +32,12 @@ void add_info_command(CLI::App& app) {
     const TopologyReport report = analyze_topology(mesh);
     if (*as_json) {
       nlohmann::json j = topology_to_json(report);
-      j["file"] = *mesh_path;
+      j["file"] = printable(*mesh_path);
       j["polygons"] = stats.polygons;
       j["triangulated_polygons"] = stats.triangulated;
       std::printf("%s\n", j.dump(2).c_str());
     } else {
-      std::printf("mesh               %s\n", mesh_path->c_str());
+      std::printf("mesh               %s\n", printable(*mesh_path).c_str());
       if (stats.triangulated > 0) {
         std::printf("polygons           %zu (%zu with more than 3 corners, triangulated)\n",
                     stats.polygons, stats.triangulated);

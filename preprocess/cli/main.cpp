@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "gfield/printable.hpp"
 #include "preprocess/cli/commands.hpp"
 
 int main(int argc, char** argv) {
@@ -35,13 +36,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "gfield: %s (see gfield --help)\n", e.what());
+    std::fprintf(stderr, "gfield: %s (see gfield --help)\n", gfield::printable(e.what()).c_str());
     return 2;
   } catch (const gfield::CommandError& e) {
-    std::fprintf(stderr, "gfield: error: %s\n", e.what());
+    std::fprintf(stderr, "gfield: error: %s\n", gfield::printable(e.what()).c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "gfield: internal error: %s\n", e.what());
+    std::fprintf(stderr, "gfield: internal error: %s\n", gfield::printable(e.what()).c_str());
     return 1;
   }
   return 0;

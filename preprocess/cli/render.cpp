@@ -76,12 +76,12 @@ void run_render(const RenderArgs& args) {
       width > 65536 || height > 65536) {
     char message[512];
     std::snprintf(message, sizeof(message),
-                  "refusing %dx%d at %d spp: %.3g camera samples (limit %.3g), image %.2f GB "
+                  ": refusing %dx%d at %d spp: %.3g camera samples (limit %.3g), image %.2f GB "
                   "(limit %.1f GB), estimated %s on this machine",
                   width, height, options.samples_per_pixel, budget.camera_samples,
                   kMaxCameraSamples, budget.image_bytes / 1e9, kMaxImageBytes / 1e9,
                   human_seconds(budget.estimated_seconds).c_str());
-    throw CommandError(message);
+    throw CommandError(args.scene + message);
   }
   ReferenceTracer tracer;
   if (!tracer.build(scene, error))

@@ -202,7 +202,7 @@ TEST(Scene, ErrorsNameFileLineAndColumn) {
   expect_error(std::string("{") + kCamera +
                    ",\n\"objects\": [{\"shape\": \"sphere\", \"transform\": {\"scale\": [1, 0, "
                    "1]}, \"material\": {\"type\": \"mirror\"}}]}",
-               2, 56, "must be positive");
+               2, 56, "must be in [1e-6, 1e6]");
   // A dielectric quad bounds no volume.
   expect_error(std::string("{") + kCamera +
                    ",\n\"objects\": [{\"shape\": \"quad\", \"material\": {\"type\": "

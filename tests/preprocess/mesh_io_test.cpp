@@ -100,8 +100,11 @@ TEST(MeshIo, BadInputGivesOneLineErrors) {
   EXPECT_NE(load_error(write_temp("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"))
                 .find("NaN or infinite"),
             std::string::npos);
-  EXPECT_NE(load_error(write_temp("inf.off", "OFF\n3 1 0\n0 0 0\n1e39 0 0\n0 1 0\n3 0 1 2\n"))
+  EXPECT_NE(load_error(write_temp("inf.off", "OFF\n3 1 0\n0 0 0\ninf 0 0\n0 1 0\n3 0 1 2\n"))
                 .find("NaN or infinite"),
+            std::string::npos);
+  EXPECT_NE(load_error(write_temp("huge.off", "OFF\n3 1 0\n0 0 0\n1e39 0 0\n0 1 0\n3 0 1 2\n"))
+                .find("beyond the limit of 1e15"),
             std::string::npos);
   // Binary PLY holding triangle strips: parses, but has no faces.
   std::string strips =

@@ -26,8 +26,8 @@ struct LocatedJson {
 };
 
 /// Parses `text`. On failure returns false with `error` = "LINE:COLUMN: problem".
-/// Duplicate keys, non-finite numbers (e.g. 1e999), trailing text and nesting deeper than 200
-/// are errors.
+/// Duplicate keys, non-finite numbers (e.g. 1e999), trailing text and nesting deeper than
+/// kMaxJsonDepth (gfield/limits.hpp) are errors.
 bool parse_located_json(const std::string& text, LocatedJson& out, std::string& error);
 
 /// `pointer` + "/" + `key` with JSON pointer escaping (~ -> ~0, / -> ~1).

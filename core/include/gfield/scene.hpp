@@ -70,6 +70,12 @@ struct Transform {
 };
 glm::dmat4 object_to_world(const Transform& transform);
 
+/// Object-space bounds of an analytic shape (zero for meshes: their bounds come from the file).
+void shape_bounds(const Shape& shape, glm::dvec3& lo, glm::dvec3& hi);
+/// The largest |coordinate| of the box [lo, hi] mapped by the affine `m` (reached at a corner):
+/// an object's reach in world coordinates is box_reach(object_to_world(t), lo, hi).
+double box_reach(const glm::dmat4& m, glm::dvec3 lo, glm::dvec3 hi);
+
 /// Material and texture kinds; the numbers are the shaders' MATERIAL_* and TEXTURE_* codes.
 enum class MaterialType {
   kDiffuse = gpu::MATERIAL_DIFFUSE,
@@ -140,7 +146,11 @@ struct Scene {
 
 /// Reads and validates a scene file. False with "FILE:LINE:COLUMN: what: problem" for malformed
 /// JSON, unknown keys, wrong types, unknown material/shape/preset names, missing files, negative
-/// or zero sizes, singular transforms, index <= 0, a dielectric on a quad, a degenerate camera.
+/// or zero sizes, index <= 0, a dielectric on a quad, a degenerate camera, and values out of
+/// range (docs/scenes.md, "Limits"): any number beyond +-1e15, colours and intensities outside
+/// [0, 1e6], scale factors outside [1e-6, 1e6], an analytic shape reaching beyond +-1e15 after
+/// its transform, more than kMaxSceneObjects objects or kMaxSceneLights lights, JSON nested
+/// deeper than kMaxJsonDepth, a file above kMaxSceneFileBytes.
 bool load_scene(const std::string& filename, Scene& scene, std::string& error);
 
 /// Points every mesh of `scene` at the assets found in folder `dir` (DIR/NAME.gimage.exr and

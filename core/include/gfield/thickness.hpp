@@ -27,7 +27,9 @@ struct ThicknessMap {
 std::string thickness_path(const std::string& geometry_image_path);
 
 bool save_thickness_map(const std::string& filename, const ThicknessMap& map, std::string& error);
-/// False with "FILE: problem" (not a thickness map, wrong version, missing channel).
+/// False with "FILE: problem" (not a thickness map, wrong version, missing channel, larger than
+/// kMaxGeometryImageSide, a box beyond +-1e16, a distance not in [0, 1e17], a header claiming more
+/// than the file holds).
 bool load_thickness_map(const std::string& filename, ThicknessMap& map, std::string& error);
 
 }  // namespace gfield

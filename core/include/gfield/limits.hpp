@@ -1,0 +1,48 @@
+#pragma once
+// What gfield accepts from files (docs/formats.md, "Limits"). Every reader checks header counts
+// against these maxima and against the file's size before it allocates or loops, and checks the
+// numbers it reads against these ranges; anything outside is an error naming the file, the place
+// and the value.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace gfield {
+
+/// Largest |coordinate| accepted anywhere: mesh vertices, boxes, geometry-image positions, scene
+/// positions and sizes, and world bounds after an object's transform (scene units). Far inside
+/// float range, and far inside the |origin| <= 1.8e18 that Embree's ray checks allow, so that no
+/// ray gfield casts with Embree is invalid.
+inline constexpr double kMaxCoordinate = 1e15;
+/// Largest |coordinate| in a gfield asset: boxes, geometry-image positions, parameterised meshes
+/// (a mesh within kMaxCoordinate gets a box padded by a percent of its diagonal, within this).
+/// Distances of thickness maps are at most kMaxAssetDistance.
+inline constexpr double kMaxAssetCoordinate = 1e16;
+inline constexpr double kMaxAssetDistance = 1e17;
+/// Geometry-image normals are unit vectors: each component within +-kMaxNormalComponent.
+inline constexpr double kMaxNormalComponent = 2.0;
+
+/// Mesh files (OBJ, PLY, OFF, STL): bytes, vertices, triangles after fan triangulation, corners of
+/// one polygon.
+inline constexpr std::uint64_t kMaxMeshFileBytes = std::uint64_t(2) << 30;
+inline constexpr std::int64_t kMaxMeshVertices = 2'000'000'000;
+inline constexpr std::int64_t kMaxMeshTriangles = 2'000'000'000;
+inline constexpr std::int64_t kMaxPolygonCorners = 65'536;
+
+/// Geometry images (and thickness maps): n x n with n at most this.
+inline constexpr int kMaxGeometryImageSide = 8192;
+/// Pictures read as environment maps or compared (EXR, PNG, HDR): pixels per side and in all.
+inline constexpr int kMaxPictureSide = 65'536;
+inline constexpr std::int64_t kMaxPicturePixels = std::int64_t(1) << 28;
+/// A compressed image cannot hold more than this many bytes of pixels per byte of file (zlib's
+/// ratio is below 1,100; OpenEXR's other codecs and PNG's, HDR's RLE stay below it): a header
+/// claiming more pixels than its file can hold is refused before anything is allocated.
+inline constexpr std::uint64_t kMaxCompressionRatio = 1100;
+
+/// Scene files: bytes, objects, lights, JSON nesting.
+inline constexpr std::uint64_t kMaxSceneFileBytes = std::uint64_t(16) << 20;
+inline constexpr std::size_t kMaxSceneObjects = 10'000;
+inline constexpr std::size_t kMaxSceneLights = 1'000;
+inline constexpr int kMaxJsonDepth = 64;
+
+}  // namespace gfield

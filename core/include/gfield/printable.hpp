@@ -1,0 +1,15 @@
+#pragma once
+// Text that is safe to print on one line and to put in JSON: file names and messages may hold
+// bytes that are not UTF-8 (a file name is any bytes but '/' and NUL) or line breaks.
+
+#include <string>
+#include <string_view>
+
+namespace gfield {
+
+/// `text` with every byte that is not part of a valid UTF-8 sequence written as \xNN, and control
+/// characters as \n, \r, \t or \xNN: valid UTF-8 without line breaks, so one line of output and a
+/// string nlohmann::json can dump. Valid UTF-8 text without control characters comes back as is.
+std::string printable(std::string_view text);
+
+}  // namespace gfield
