@@ -56,12 +56,12 @@ glm::vec3 to_glm(const Imath::V3f& v) {
   return {v.x, v.y, v.z};
 }
 
-Imf::Header make_header(int width, int height, const char* tag, const Box& box,
+Imf::Header make_header(int width, int height, const char* tag, int version, const Box& box,
                         const std::string& source, const std::string& build_id) {
   Imf::Header header(width, height);
   header.compression() = Imf::ZIP_COMPRESSION;
   header.insert("gfield.format", Imf::StringAttribute(tag));
-  header.insert("gfield.version", Imf::IntAttribute(kFormatVersion));
+  header.insert("gfield.version", Imf::IntAttribute(version));
   header.insert("gfield.boxMin", Imf::V3fAttribute(to_imath(box.min)));
   header.insert("gfield.boxMax", Imf::V3fAttribute(to_imath(box.max)));
   header.insert("gfield.source", Imf::StringAttribute(source));
@@ -160,18 +160,23 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
 }
 
 /// Positions finite and within kMaxAssetCoordinate, normal components within
-/// kMaxNormalComponent, coverage in [0, 1].
+/// kMaxNormalComponent, coverage in [0, 1], albedo components in [0, kMaxColorComponent].
 bool check_texels(const std::string& filename, const GeometryImage& image, std::string& error) {
   const glm::vec3 limit(static_cast<float>(kMaxAssetCoordinate));
   const glm::vec3 normal_limit(static_cast<float>(kMaxNormalComponent));
+  const glm::vec3 color_limit(static_cast<float>(kMaxColorComponent));
   for (size_t t = 0; t < image.position.size(); ++t) {
     const float a = image.coverage[t];
+    const bool albedo_ok = image.albedo.empty() ||
+                           (glm::all(glm::greaterThanEqual(image.albedo[t], glm::vec3(0.0f))) &&
+                            glm::all(glm::lessThanEqual(image.albedo[t], color_limit)));
     if (!glm::all(glm::lessThanEqual(glm::abs(image.position[t]), limit)) ||
         !glm::all(glm::lessThanEqual(glm::abs(image.normal[t]), normal_limit)) ||
-        !(a >= 0.0f && a <= 1.0f)) {
+        !(a >= 0.0f && a <= 1.0f) || !albedo_ok) {
       error = filename +
-              ": position, normal or coverage not finite or out of range (positions within "
-              "+-1e16, normal components within +-2, coverage in [0,1]) at texel (" +
+              ": position, normal, coverage or albedo not finite or out of range (positions "
+              "within +-1e16, normal components within +-2, coverage in [0,1], albedo in "
+              "[0,1e6]) at texel (" +
               std::to_string(t % size_t(image.size)) + ", " +
               std::to_string(t / size_t(image.size)) + ")";
       return false;
@@ -180,16 +185,40 @@ bool check_texels(const std::string& filename, const GeometryImage& image, std::
   return true;
 }
 
+/// The format tag is `tag` and the version within [1, max_version].
 bool check_format(const std::string& filename, const ExrAssetHeader& header, const char* tag,
-                  std::string& error) {
+                  int max_version, std::string& error) {
   if (header.format != tag) {
     error =
         filename + ": wrong format tag '" + printable(header.format) + "' (expected '" + tag + "')";
     return false;
   }
-  if (header.version != kFormatVersion) {
+  if (header.version < 1 || header.version > max_version) {
+    std::string readable = std::to_string(max_version);
+    if (max_version > 1) {
+      readable.insert(0, "s 1 to ");
+    } else {
+      readable.insert(0, " ");
+    }
     error = filename + ": unsupported format version " + std::to_string(header.version) +
-            " (this build reads version " + std::to_string(kFormatVersion) + ")";
+            " (this build reads version" + readable + ")";
+    return false;
+  }
+  return true;
+}
+
+constexpr const char* kAlbedoChannels[3] = {"albedo.R", "albedo.G", "albedo.B"};
+
+/// Whether a geometry image's header holds albedo: all three channels (version 2), or none.
+bool albedo_channels(const std::string& filename, const Imf::Header& h, bool& present,
+                     std::string& error) {
+  int found = 0;
+  for (const char* name : kAlbedoChannels) {
+    found += h.channels().findChannel(name) != nullptr;
+  }
+  present = found == 3;
+  if (found != 0 && found != 3) {
+    error = filename + ": albedo needs all three channels albedo.R, albedo.G, albedo.B";
     return false;
   }
   return true;
@@ -237,8 +266,13 @@ bool save_geometry_image(const std::string& filename, const GeometryImage& image
         filename + ": geometry image arrays do not match its size " + std::to_string(image.size);
     return false;
   }
-  Imf::Header header =
-      make_header(image.size, image.size, kImageTag, image.box, image.source, image.build_id);
+  if (!image.albedo.empty() && image.albedo.size() != texels) {
+    error =
+        filename + ": geometry image albedo does not match its size " + std::to_string(image.size);
+    return false;
+  }
+  Imf::Header header = make_header(image.size, image.size, kImageTag, kGeometryImageVersion,
+                                   image.box, image.source, image.build_id);
   const Imf::PixelType type = pixel_type(precision);
   const float* p = &image.position[0].x;
   const float* n = &image.normal[0].x;
@@ -251,20 +285,34 @@ bool save_geometry_image(const std::string& filename, const GeometryImage& image
   out.add(header, "N.Y", type, n + 1, 3, texels, w);
   out.add(header, "N.Z", type, n + 2, 3, texels, w);
   out.add(header, "A", type, image.coverage.data(), 1, texels, w);
+  if (!image.albedo.empty()) {
+    const float* a = &image.albedo[0].x;
+    for (int c = 0; c < 3; ++c) {
+      out.add(header, kAlbedoChannels[c], type, a + c, 3, texels, w);
+    }
+  }
   return write_exr(filename, header, out.frame_buffer, image.size, error);
 }
 
 bool load_geometry_image(const std::string& filename, GeometryImage& image, std::string& error) {
   std::unique_ptr<Imf::InputFile> file;
-  if (!open_input(filename, kMaxGeometryImageSide, {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A"},
+  if (!open_input(filename, kMaxGeometryImageSide,
+                  {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A", kAlbedoChannels[0],
+                   kAlbedoChannels[1], kAlbedoChannels[2]},
                   file, error)) {
     return false;
   }
   ExrAssetHeader header;
+  bool albedo = false;
   if (!read_header(filename, file->header(), header, error) ||
-      !check_format(filename, header, kImageTag, error) ||
+      !check_format(filename, header, kImageTag, kGeometryImageVersion, error) ||
       !check_channels(filename, file->header(), {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A"},
-                      error)) {
+                      error) ||
+      !albedo_channels(filename, file->header(), albedo, error)) {
+    return false;
+  }
+  if (albedo && header.version < 2) {
+    error = filename + ": albedo channels in a version-1 geometry image";
     return false;
   }
   if (header.width != header.height || header.width < 2) {
@@ -294,6 +342,13 @@ bool load_geometry_image(const std::string& filename, GeometryImage& image, std:
   fb.insert("N.Y", float_slice(n + 1, 3, out.size));
   fb.insert("N.Z", float_slice(n + 2, 3, out.size));
   fb.insert("A", float_slice(out.coverage.data() - origin, 1, out.size));
+  if (albedo) {
+    out.albedo.resize(texels);
+    float* a = &out.albedo[0].x - origin * 3;
+    for (int c = 0; c < 3; ++c) {
+      fb.insert(kAlbedoChannels[c], float_slice(a + c, 3, out.size));
+    }
+  }
   if (!read_pixels(filename, *file, fb, error)) {
     return false;
   }
@@ -316,7 +371,8 @@ bool save_geometry_field(const std::string& filename, const GeometryField& field
     error = filename + ": geometry field table does not match N = " + std::to_string(n);
     return false;
   }
-  Imf::Header header = make_header(side, side, kFieldTag, field.box, field.source, field.build_id);
+  Imf::Header header =
+      make_header(side, side, kFieldTag, kFormatVersion, field.box, field.source, field.build_id);
   header.insert("gfield.samplesPerSide", Imf::IntAttribute(n));
   // zlib level 1 (docs/geometry-field.md): a 3456^2 half table writes ~30% faster than at the
   // default level 4 for ~7% more bytes; RLE is faster still but ~55% larger.
@@ -334,7 +390,7 @@ bool load_geometry_field(const std::string& filename, GeometryField& field, std:
   }
   ExrAssetHeader header;
   if (!read_header(filename, file->header(), header, error) ||
-      !check_format(filename, header, kFieldTag, error) ||
+      !check_format(filename, header, kFieldTag, kFormatVersion, error) ||
       !check_channels(filename, file->header(), {"U", "V"}, error)) {
     return false;
   }

@@ -34,4 +34,8 @@ glm::vec3 sample_normal(const GeometryImage& image, glm::vec2 uv) {
   return len > 0.0f ? n / len : n;
 }
 
+glm::vec3 sample_albedo(const GeometryImage& image, glm::vec2 uv) {
+  return image.albedo.empty() ? glm::vec3(1.0f) : bilinear(image.albedo, image.size, uv);
+}
+
 }  // namespace gfield

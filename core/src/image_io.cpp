@@ -15,10 +15,12 @@
 #include <cstdint>
 #include <exception>
 #include <filesystem>
+#include <limits>
 #include <memory>
 
 #include "exr_input.hpp"
 #include "gfield/atomic_file.hpp"
+#include "gfield/file_read.hpp"
 #include "gfield/image.hpp"
 #include "gfield/limits.hpp"
 
@@ -88,39 +90,40 @@ bool load_exr(const std::string& filename, Image& image, std::string& error) {
   }
 }
 
-/// Checks what a PNG or HDR header claims (stbi_info) against the limits and the file's size
-/// before stb_image allocates for it.
-bool check_stb_header(const std::string& filename, std::string& error) {
+/// Checks what a PNG, JPEG or HDR header claims (stbi_info) against the limits and the data's
+/// size before stb_image allocates for it.
+bool check_stb_header(const std::string& name, const stbi_uc* bytes, int size, std::string& error) {
   int width = 0, height = 0, components = 0;
-  if (!stbi_info(filename.c_str(), &width, &height, &components)) {
-    error = filename + ": cannot read image: " + stbi_failure_reason();
+  if (!stbi_info_from_memory(bytes, size, &width, &height, &components)) {
+    error = name + ": cannot read image: " + stbi_failure_reason();
     return false;
   }
-  std::error_code ec;
-  const std::uint64_t file_size = std::filesystem::file_size(filename, ec);
   const std::uint64_t raw = std::uint64_t(width) * std::uint64_t(height) * 3;
-  if (!check_pixel_count(filename, width, height, error)) {
+  if (!check_pixel_count(name, width, height, error)) {
     return false;
   }
-  if (ec || raw / kMaxCompressionRatio > file_size) {
-    error = filename + ": header claims " + std::to_string(width) + "x" + std::to_string(height) +
-            " pixels, more than the file's " + std::to_string(file_size) +
+  if (raw / kMaxCompressionRatio > std::uint64_t(size)) {
+    error = name + ": header claims " + std::to_string(width) + "x" + std::to_string(height) +
+            " pixels, more than the file's " + std::to_string(size) +
             " bytes can hold (truncated or corrupt)";
     return false;
   }
   return true;
 }
 
-bool load_stb(const std::string& filename, bool hdr, Image& image, std::string& error) {
-  if (!check_stb_header(filename, error)) {
+/// Decodes a PNG, JPEG or HDR held in memory (`name` for errors): 8 and 16-bit values are sRGB,
+/// converted to linear; HDR is linear already.
+bool decode_stb(const std::string& name, const stbi_uc* bytes, int size, Image& image,
+                std::string& error) {
+  if (!check_stb_header(name, bytes, size, error)) {
     return false;
   }
   int width = 0, height = 0, components = 0;
-  if (hdr) {
+  if (stbi_is_hdr_from_memory(bytes, size)) {
     std::unique_ptr<float, void (*)(void*)> data(
-        stbi_loadf(filename.c_str(), &width, &height, &components, 3), stbi_image_free);
+        stbi_loadf_from_memory(bytes, size, &width, &height, &components, 3), stbi_image_free);
     if (!data) {
-      error = filename + ": cannot read image: " + stbi_failure_reason();
+      error = name + ": cannot read image: " + stbi_failure_reason();
       return false;
     }
     Image result(width, height);
@@ -128,13 +131,13 @@ bool load_stb(const std::string& filename, bool hdr, Image& image, std::string& 
     image = std::move(result);
     return true;
   }
-  const bool sixteen = stbi_is_16_bit(filename.c_str());
+  const bool sixteen = stbi_is_16_bit_from_memory(bytes, size);
   Image result;
   if (sixteen) {
     std::unique_ptr<stbi_us, void (*)(void*)> data(
-        stbi_load_16(filename.c_str(), &width, &height, &components, 3), stbi_image_free);
+        stbi_load_16_from_memory(bytes, size, &width, &height, &components, 3), stbi_image_free);
     if (!data) {
-      error = filename + ": cannot read image: " + stbi_failure_reason();
+      error = name + ": cannot read image: " + stbi_failure_reason();
       return false;
     }
     result = Image(width, height);
@@ -144,9 +147,9 @@ bool load_stb(const std::string& filename, bool hdr, Image& image, std::string& 
     }
   } else {
     std::unique_ptr<stbi_uc, void (*)(void*)> data(
-        stbi_load(filename.c_str(), &width, &height, &components, 3), stbi_image_free);
+        stbi_load_from_memory(bytes, size, &width, &height, &components, 3), stbi_image_free);
     if (!data) {
-      error = filename + ": cannot read image: " + stbi_failure_reason();
+      error = name + ": cannot read image: " + stbi_failure_reason();
       return false;
     }
     float table[256];
@@ -161,6 +164,15 @@ bool load_stb(const std::string& filename, bool hdr, Image& image, std::string& 
   }
   image = std::move(result);
   return true;
+}
+
+bool load_stb(const std::string& filename, Image& image, std::string& error) {
+  std::string data;
+  if (!read_file(filename, kMaxPictureFileBytes, data, error)) {
+    return false;
+  }
+  return decode_image(filename, reinterpret_cast<const unsigned char*>(data.data()), data.size(),
+                      image, error);
 }
 
 bool save_exr(const std::string& path, const Image& image) {
@@ -180,7 +192,8 @@ bool save_exr(const std::string& path, const Image& image) {
   return true;
 }
 
-bool save_png(const std::string& path, const Image& image) {
+/// The pixels as 8-bit sRGB, clamped to [0, 1].
+std::vector<std::uint8_t> srgb_bytes(const Image& image) {
   std::vector<std::uint8_t> bytes(image.pixels.size() * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i) {
     for (int c = 0; c < 3; ++c) {
@@ -188,9 +201,18 @@ bool save_png(const std::string& path, const Image& image) {
       bytes[i * 3 + size_t(c)] = std::uint8_t(std::lround(v * 255.0f));
     }
   }
+  return bytes;
+}
+
+bool save_png(const std::string& path, const Image& image) {
+  const std::vector<std::uint8_t> bytes = srgb_bytes(image);
   stbi_write_png_compression_level = 1;
   return stbi_write_png(path.c_str(), image.width, image.height, 3, bytes.data(),
                         image.width * 3) != 0;
+}
+
+void append_bytes(void* context, void* data, int size) {
+  static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
 }
 
 }  // namespace
@@ -236,14 +258,34 @@ bool load_image(const std::string& filename, Image& image, std::string& error) {
   if (ext == ".exr") {
     return load_exr(filename, image, error);
   }
-  if (ext == ".hdr") {
-    return load_stb(filename, true, image, error);
+  if (ext == ".hdr" || ext == ".png" || ext == ".jpg" || ext == ".jpeg") {
+    return load_stb(filename, image, error);
   }
-  if (ext == ".png") {
-    return load_stb(filename, false, image, error);
-  }
-  error = filename + ": unknown image extension \"" + ext + "\" (expected .exr, .hdr or .png)";
+  error = filename + ": unknown image extension \"" + ext +
+          "\" (expected .exr, .hdr, .png, .jpg or .jpeg)";
   return false;
+}
+
+bool decode_image(const std::string& name, const unsigned char* bytes, size_t size, Image& image,
+                  std::string& error) {
+  if (size == 0) {
+    error = name + ": empty image data";
+    return false;
+  }
+  if (size > size_t(std::numeric_limits<int>::max())) {
+    error = name + ": image data of " + std::to_string(size) + " bytes (at most 2 GiB)";
+    return false;
+  }
+  return decode_stb(name, bytes, int(size), image, error);
+}
+
+bool encode_png(const Image& image, std::string& bytes) {
+  const std::vector<std::uint8_t> pixels = srgb_bytes(image);
+  bytes.clear();
+  stbi_write_png_compression_level = 9;
+  return image.width > 0 && image.height > 0 &&
+         stbi_write_png_to_func(append_bytes, &bytes, image.width, image.height, 3, pixels.data(),
+                                image.width * 3) != 0;
 }
 
 bool save_image(const std::string& filename, const Image& image, std::string& error) {

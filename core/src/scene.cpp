@@ -316,6 +316,35 @@ Light read_light(const Reader& r, const std::string& p) {
   return l;
 }
 
+/// The "texture" of a diffuse material: none, checker or color-chart on analytic shapes; mesh or
+/// none on meshes (default: none; the mesh's own base colour is chosen once the mesh is read).
+TextureType read_texture(const Reader& r, const std::string& p, ShapeType shape) {
+  const std::string texture = r.string(p, "texture", "none");
+  const std::string tp = json_pointer_child(p, "texture");
+  const bool mesh = shape == ShapeType::kMesh;
+  if (texture == "none") {
+    return TextureType::kNone;
+  }
+  if (texture == "mesh" && mesh) {
+    return TextureType::kMesh;
+  }
+  if (!mesh && texture == "checker") {
+    return TextureType::kChecker;
+  }
+  if (!mesh && texture == "color-chart") {
+    return TextureType::kColorChart;
+  }
+  if (texture == "mesh" || texture == "checker" || texture == "color-chart") {
+    throw SceneError{tp, mesh ? "a mesh takes \"mesh\" (its own texture, vertex or material "
+                                "colours) or \"none\"; procedural textures apply to analytic "
+                                "shapes"
+                              : "\"mesh\" applies to meshes (analytic shapes take none, "
+                                "checker or color-chart)"};
+  }
+  throw SceneError{tp, "unknown texture \"" + texture + "\" (expected " +
+                           (mesh ? "mesh or none" : "none, checker or color-chart") + ")"};
+}
+
 Material read_material(const Reader& r, const std::string& p, ShapeType shape) {
   r.object(p, {"type", "color", "texture", "colors", "scale", "tint", "ior", "absorption"});
   r.require(p, "type");
@@ -335,22 +364,9 @@ Material read_material(const Reader& r, const std::string& p, ShapeType shape) {
     m.type = MaterialType::kDiffuse;
     only({"color", "texture", "colors", "scale"});
     m.color = r.color(p, "color", m.color);
-    const std::string texture = r.string(p, "texture", "none");
-    if (texture == "none") {
-      m.texture = TextureType::kNone;
-    } else if (texture == "checker") {
-      m.texture = TextureType::kChecker;
-    } else if (texture == "color-chart") {
-      m.texture = TextureType::kColorChart;
-    } else {
-      throw SceneError{
-          json_pointer_child(p, "texture"),
-          "unknown texture \"" + texture + "\" (expected none, checker or color-chart)"};
-    }
-    if (m.texture != TextureType::kNone && shape == ShapeType::kMesh) {
-      throw SceneError{json_pointer_child(p, "texture"),
-                       "meshes have no texture coordinates: textures apply to analytic shapes"};
-    }
+    m.texture = read_texture(r, p, shape);
+    m.texture_by_mesh = shape == ShapeType::kMesh && !r.has(p, "texture");
+    m.default_color = !r.has(p, "color");
     if (m.texture != TextureType::kChecker) {
       for (const char* key : {"colors", "scale"}) {
         if (r.has(p, key)) {
@@ -467,11 +483,11 @@ SceneObject read_object(const Reader& r, const std::string& p, Scene& scene) {
   const auto found = std::find_if(std::begin(shapes), std::end(shapes),
                                   [&](const auto& s) { return shape == s.first; });
   if (found == std::end(shapes)) {
-    throw SceneError{
-        json_pointer_child(p, "shape"),
-        "unknown shape \"" + shape + "\" (expected " +
-            list_names({"mesh", "sphere", "quad", "box", "cylinder", "slab", "hollow-cylinder"}) +
-            ")"};
+    throw SceneError{json_pointer_child(p, "shape"),
+                     "unknown shape \"" + shape + "\" (expected " +
+                         list_names({"mesh", "sphere", "quad", "box", "cylinder", "slab",
+                                     "hollow-cylinder", "gltf"}) +
+                         ")"};
   }
   Shape& s = o.shape;
   s.type = found->second;
@@ -525,6 +541,7 @@ SceneObject read_object(const Reader& r, const std::string& p, Scene& scene) {
       const fs::path file = r.file(json_pointer_child(p, "file"));
       MeshAsset asset;
       asset.file = file.string();
+      asset.asset = file.stem().string();
       asset.geometry_image =
           r.has(p, "gimage") ? r.file(json_pointer_child(p, "gimage")) : beside(file, "gimage");
       asset.geometry_field =
@@ -600,6 +617,20 @@ SceneObject read_object(const Reader& r, const std::string& p, Scene& scene) {
   return o;
 }
 
+/// A glTF file included as one object: {"shape": "gltf", "file", "name"?, "transform"?}.
+SceneInclude read_include(const Reader& r, const std::string& p, size_t position) {
+  r.object(p, {"name", "shape", "file", "transform"});
+  r.require(p, "file");
+  SceneInclude include;
+  include.name = r.string(p, "name", "");
+  include.file = r.file(json_pointer_child(p, "file"));
+  if (r.has(p, "transform"))
+    include.transform = read_transform(r, json_pointer_child(p, "transform"));
+  include.position = position;
+  include.where = p;  // made "FILE:LINE:COLUMN: path" by parse_scene
+  return include;
+}
+
 void read_scene(const Reader& r, Scene& scene) {
   const std::string root;
   r.object(root, {"purpose", "camera", "image", "environment", "ambient", "lights", "objects"});
@@ -621,7 +652,13 @@ void read_scene(const Reader& r, Scene& scene) {
   }
   if (r.has(root, "objects")) {
     for (size_t i = 0; i < r.array("/objects", kMaxSceneObjects).size(); ++i) {
-      scene.objects.push_back(read_object(r, json_pointer_child("/objects", i), scene));
+      const std::string p = json_pointer_child("/objects", i);
+      const json& o = r.at(p);
+      if (o.is_object() && o.contains("shape") && o["shape"] == "gltf") {
+        scene.includes.push_back(read_include(r, p, scene.objects.size()));
+      } else {
+        scene.objects.push_back(read_object(r, p, scene));
+      }
     }
   }
 }
@@ -672,6 +709,39 @@ glm::dmat4 object_to_world(const Transform& transform) {
   return glm::scale(m, glm::dvec3(transform.scale));
 }
 
+bool transform_from_matrix(const glm::dmat4& matrix, Transform& transform, double& residual) {
+  const glm::dmat3 linear(matrix);
+  if (!(glm::determinant(linear) > 0.0)) {
+    return false;
+  }
+  // Scale = column lengths; rotation = the columns orthonormalised (Gram-Schmidt), so that a
+  // shear shows as a residual instead of a rotation that is not one.
+  glm::dvec3 scale(glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2]));
+  glm::dmat3 rotation;
+  rotation[0] = linear[0] / scale.x;
+  rotation[1] = glm::normalize(linear[1] - glm::dot(linear[1], rotation[0]) * rotation[0]);
+  rotation[2] = glm::cross(rotation[0], rotation[1]);
+  // R = Rz(z) Ry(y) Rx(x); element (row, column) is rotation[column][row].
+  const double sy = std::clamp(-rotation[0][2], -1.0, 1.0);
+  glm::dvec3 angles(0.0, std::asin(sy), 0.0);
+  if (std::abs(sy) < 1.0 - 1e-12) {
+    angles.x = std::atan2(rotation[1][2], rotation[2][2]);
+    angles.z = std::atan2(rotation[0][1], rotation[0][0]);
+  } else {
+    angles.z = std::atan2(-rotation[1][0], rotation[1][1]);
+  }
+  transform.translate = glm::vec3(matrix[3]);
+  transform.rotate_degrees = glm::vec3(glm::degrees(angles));
+  transform.scale = glm::vec3(scale);
+  const glm::dmat3 recomposed(object_to_world(transform));
+  residual = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    residual = std::max(residual, glm::length(recomposed[c] - linear[c]));
+  }
+  residual /= std::max({scale.x, scale.y, scale.z});
+  return true;
+}
+
 void shape_bounds(const Shape& shape, glm::dvec3& lo, glm::dvec3& hi) {
   glm::dvec3 half(0.0);
   switch (shape.type) {
@@ -711,6 +781,7 @@ double box_reach(const glm::dmat4& m, glm::dvec3 lo, glm::dvec3 hi) {
 glm::vec3 texture_albedo(const Material& material, glm::vec2 uv) {
   switch (material.texture) {
     case TextureType::kNone:
+    case TextureType::kMesh:  // the mesh's own base colour multiplies it (mesh_appearance.hpp)
       return material.color;
     case TextureType::kChecker: {
       const int cu = int(std::floor(uv.x * material.checker_scale.x));
@@ -762,6 +833,11 @@ bool parse_scene(const std::string& text, const std::string& filename, Scene& sc
             ": " + printable((path.empty() ? "" : path + ": ") + e.message);
     return false;
   }
+  for (SceneInclude& include : result.includes) {
+    const JsonLocation where = document.at(include.where);
+    include.where = filename + ":" + std::to_string(where.line) + ":" +
+                    std::to_string(where.column) + ": " + readable_path(include.where);
+  }
   scene = std::move(result);
   return true;
 }
@@ -780,7 +856,7 @@ bool use_asset_folder(const std::string& dir, Scene& scene, std::string& error) 
     return false;
   }
   for (MeshAsset& mesh : scene.meshes) {
-    const std::string stem = (fs::path(dir) / fs::path(mesh.file).stem()).string();
+    const std::string stem = (fs::path(dir) / mesh.asset).string();
     if (fs::is_regular_file(stem + ".gimage.exr", ec))
       mesh.geometry_image = stem + ".gimage.exr";
     if (fs::is_regular_file(stem + ".gfield.exr", ec))

@@ -32,6 +32,7 @@ GF_CONST int MATERIAL_DIELECTRIC = 2;
 GF_CONST int TEXTURE_NONE = 0;
 GF_CONST int TEXTURE_CHECKER = 1;
 GF_CONST int TEXTURE_COLOR_CHART = 2;
+GF_CONST int TEXTURE_MESH = 3;  // the mesh's own base colour (texture, vertex or material colours)
 
 // Environments (gfield::EnvironmentType).
 GF_CONST int ENV_STUDIO = 0;
@@ -64,6 +65,10 @@ GF_CONST int UNIT_PEEL_LAYERS = 15;    // glass: peeled layers 0..3 in units 15.
 GF_CONST int UNIT_CLASS_IMAGES = 19;   // glass: 2D array, one scene image per refraction class
 GF_CONST int UNIT_SHADOW_MAPS = 20;    // glass: 2D array shadow maps, layer = light
 GF_CONST int UNIT_FRAME = 21;          // the presented frame (viewer)
+GF_CONST int UNIT_GI_ALBEDO = 22;      // 2D array RGBA16F: geometry-image albedo (linear rgb)
+GF_CONST int UNIT_MESH_TEXTURES = 23;  // 2D array RGBA16F: the meshes' own textures (linear
+                                       // rgb, row 0 at v = 0), bilinear, repeating
+GF_CONST int UNIT_GBUFFER_ALBEDO = 24;  // rgb albedo of the first hit (diffuse surfaces)
 
 // One scene object (std430, 288 bytes).
 struct GpuObject {
@@ -78,7 +83,8 @@ struct GpuObject {
   vec4 box_min;     // object-space bounds (mesh: the asset's box, mesh coordinates)
   vec4 box_max;
   ivec4 kind;   // SHAPE_*, MATERIAL_*, TEXTURE_*, 0
-  ivec4 asset;  // mesh: layer, samples per side N, geometry-image size n, 0
+  ivec4 asset;  // mesh: layer, samples per side N, geometry-image size n, 1 when the geometry
+                // image holds albedo (UNIT_GI_ALBEDO) else 0
 };
 
 // One light (std430, 48 bytes).

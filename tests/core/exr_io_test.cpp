@@ -144,6 +144,38 @@ void expect_image_error(const std::string& path, const std::string& fragment) {
   EXPECT_NE(error.find(fragment), std::string::npos) << error;
 }
 
+// Format version 2: the optional albedo channels round-trip (HALF: 2^-11 relative); an image
+// without them loads with no albedo, and a version-1 file (written before albedo) still loads.
+TEST(ExrIo, GeometryImageAlbedoIsOptional) {
+  GeometryImage image = make_image(8);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (size_t t = 0; t < image.position.size(); ++t) {
+    image.albedo.push_back({u(rng), u(rng), u(rng)});
+  }
+  const std::string path = temp_path("albedo.gimage.exr");
+  std::string error;
+  for (const ExrPrecision precision : {ExrPrecision::kFloat, ExrPrecision::kHalf}) {
+    ASSERT_TRUE(save_geometry_image(path, image, precision, error)) << error;
+    GeometryImage back;
+    ASSERT_TRUE(load_geometry_image(path, back, error)) << error;
+    ASSERT_EQ(back.albedo.size(), image.albedo.size());
+    const float tolerance = precision == ExrPrecision::kHalf ? 5e-4f : 0.0f;
+    for (size_t t = 0; t < image.albedo.size(); ++t) {
+      ASSERT_NEAR(glm::length(back.albedo[t] - image.albedo[t]), 0.0f, tolerance);
+    }
+  }
+  image.albedo.clear();
+  ASSERT_TRUE(save_geometry_image(path, image, ExrPrecision::kFloat, error)) << error;
+  GeometryImage back;
+  ASSERT_TRUE(load_geometry_image(path, back, error)) << error;
+  EXPECT_TRUE(back.albedo.empty());
+  EXPECT_EQ(sample_albedo(back, glm::vec2(0.3f, 0.6f)), glm::vec3(1.0f));
+  write_raw(path, 8, 8, "geometry-image", 1, {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A"});
+  ASSERT_TRUE(load_geometry_image(path, back, error)) << error;
+  EXPECT_TRUE(back.albedo.empty());
+}
+
 TEST(ExrIo, RejectsBadGeometryImages) {
   const std::string path = temp_path("bad.gimage.exr");
   const auto all = {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A"};
@@ -153,8 +185,14 @@ TEST(ExrIo, RejectsBadGeometryImages) {
   expect_image_error(path, "missing channel 'A'");
   write_raw(path, 8, 8, "geometry-field", 1, all);
   expect_image_error(path, "wrong format tag");
-  write_raw(path, 8, 8, "geometry-image", 2, all);
-  expect_image_error(path, "unsupported format version 2");
+  write_raw(path, 8, 8, "geometry-image", 3, all);
+  expect_image_error(path, "unsupported format version 3");
+  write_raw(path, 8, 8, "geometry-image", 1,
+            {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A", "albedo.R", "albedo.G", "albedo.B"});
+  expect_image_error(path, "albedo channels in a version-1 geometry image");
+  write_raw(path, 8, 8, "geometry-image", 2,
+            {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A", "albedo.R", "albedo.G"});
+  expect_image_error(path, "albedo.B");
   write_raw(path, 8, 8, nullptr, 1, all);
   expect_image_error(path, "not a gfield asset");
   expect_image_error(temp_path("does-not-exist.exr"), "no such file");

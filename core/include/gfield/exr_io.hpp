@@ -1,5 +1,6 @@
 #pragma once
-// OpenEXR files of geometry images and geometry fields (DESIGN.md / docs/formats.md, version 1).
+// OpenEXR files of geometry images (format version 2: optional albedo channels; version 1 still
+// reads) and geometry fields (version 1) (docs/formats.md).
 // Loaders validate the header (format tag, version, size, channels) and return false with an
 // error "FILE: problem". Savers write a temporary file beside the target and rename it.
 
@@ -14,8 +15,10 @@ namespace gfield {
 /// normal and coverage channels of images and to the U, V channels of fields.
 enum class ExrPrecision { kHalf, kFloat };
 
-/// Format version written and accepted.
+/// Format version of geometry fields and thickness maps, written and accepted.
 inline constexpr int kFormatVersion = 1;
+/// Format version of geometry images written; versions 1 (no albedo) to this are read.
+inline constexpr int kGeometryImageVersion = 2;
 
 bool save_geometry_image(const std::string& filename, const GeometryImage& image,
                          ExrPrecision precision, std::string& error);

@@ -20,6 +20,10 @@ struct GeometryImage {
   std::vector<glm::vec3> position;  ///< n*n surface points, mesh coordinates
   std::vector<glm::vec3> normal;    ///< n*n unit normals
   std::vector<float> coverage;      ///< n*n: 1 inside the parameterised surface, 0 in padding
+  /// n*n linear RGB base colour of the surface (the mesh's texture, vertex colours or material
+  /// colours resampled; padding repeats the nearest chart texel); empty when the mesh carries
+  /// none.
+  std::vector<glm::vec3> albedo;
 };
 
 /// Texel index of column i, scanline j.
@@ -32,5 +36,7 @@ inline size_t texel_index(const GeometryImage& image, int i, int j) {
 glm::vec3 sample_position(const GeometryImage& image, glm::vec2 uv);
 /// Bilinear lookup of the normal at uv, renormalised.
 glm::vec3 sample_normal(const GeometryImage& image, glm::vec2 uv);
+/// Bilinear lookup of the albedo at uv; (1, 1, 1) when the image has none.
+glm::vec3 sample_albedo(const GeometryImage& image, glm::vec2 uv);
 
 }  // namespace gfield

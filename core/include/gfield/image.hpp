@@ -35,9 +35,18 @@ glm::vec3 sample_bilinear(const Image& image, float x, float y, bool wrap_x);
 float srgb_to_linear(float v);
 float linear_to_srgb(float v);
 
-/// Reads .exr (channels R, G, B; a single Y channel is grey), .hdr (Radiance RGBE) or .png (8/16
-/// bit, sRGB -> linear; alpha ignored; grey expands to RGB). False with "FILE: problem".
+/// Reads .exr (channels R, G, B; a single Y channel is grey), .hdr (Radiance RGBE), .png (8/16
+/// bit) or .jpg/.jpeg (8-bit sRGB -> linear; alpha ignored; grey expands to RGB), at most
+/// kMaxPictureFileBytes. False with "FILE: problem".
 bool load_image(const std::string& filename, Image& image, std::string& error);
+
+/// Decodes a PNG, JPEG or HDR image held in memory (an embedded glTF texture): as load_image;
+/// `name` stands for the data in errors ("NAME: problem").
+bool decode_image(const std::string& name, const unsigned char* bytes, size_t size, Image& image,
+                  std::string& error);
+
+/// `image` as PNG bytes (8-bit sRGB, as save_image writes it); false when the encoder fails.
+bool encode_png(const Image& image, std::string& bytes);
 
 /// Writes .exr (FLOAT R, G, B, ZIP compression) or .png (8-bit sRGB, zlib level 1) by the
 /// extension, atomically (temporary file + rename). False with "FILE: problem".

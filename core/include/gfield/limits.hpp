@@ -29,10 +29,28 @@ inline constexpr std::int64_t kMaxMeshVertices = 2'000'000'000;
 inline constexpr std::int64_t kMaxMeshTriangles = 2'000'000'000;
 inline constexpr std::int64_t kMaxPolygonCorners = 65'536;
 
+/// Texture coordinates of meshes (OBJ vt, PLY u v, glTF TEXCOORD_0): finite, within +-this
+/// (textures repeat; beyond it a float uv no longer resolves a texel of a 4096^2 texture).
+inline constexpr double kMaxTextureCoordinate = 1e4;
+/// Colours read from files (vertex and material colours, geometry-image albedo): each component
+/// finite and in [0, kMaxColorComponent].
+inline constexpr double kMaxColorComponent = 1e6;
+/// One mesh file's materials and textures (OBJ mtllib/usemtl, glTF materials and images), and
+/// the bytes of one material library (.mtl).
+inline constexpr std::size_t kMaxMeshMaterials = 65'536;
+inline constexpr std::size_t kMaxMeshTextures = 1'024;
+inline constexpr std::uint64_t kMaxMaterialLibraryBytes = std::uint64_t(16) << 20;
+
+/// glTF files (.gltf, .glb) and the buffers they name: bytes as for meshes (kMaxMeshFileBytes);
+/// nodes, meshes, primitives and every other array of the document at most kMaxGltfElements;
+/// the node hierarchy at most kMaxJsonDepth deep.
+inline constexpr std::size_t kMaxGltfElements = 1'000'000;
+
 /// Geometry images (and thickness maps): n x n with n at most this.
 inline constexpr int kMaxGeometryImageSide = 8192;
 /// Pictures read as environment maps or compared (EXR, PNG, HDR): pixels per side and in all.
 inline constexpr int kMaxPictureSide = 65'536;
+inline constexpr std::uint64_t kMaxPictureFileBytes = std::uint64_t(1) << 30;
 inline constexpr std::int64_t kMaxPicturePixels = std::int64_t(1) << 28;
 /// A compressed image cannot hold more than this many bytes of pixels per byte of file (zlib's
 /// ratio is below 1,100; OpenEXR's other codecs and PNG's, HDR's RLE stay below it): a header

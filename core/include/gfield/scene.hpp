@@ -69,6 +69,12 @@ struct Transform {
   glm::vec3 scale{1.0f};
 };
 glm::dmat4 object_to_world(const Transform& transform);
+/// The Transform of an affine `matrix` (no perspective): translation, rotation (degrees) and
+/// positive scale factors with object_to_world(result) ~ matrix. `residual` receives the largest
+/// difference of the recomposed matrix's linear part from `matrix`'s, relative to its largest
+/// column (0 without shear). False when the linear part is singular or mirrors (determinant
+/// <= 0).
+bool transform_from_matrix(const glm::dmat4& matrix, Transform& transform, double& residual);
 
 /// Object-space bounds of an analytic shape (zero for meshes: their bounds come from the file).
 void shape_bounds(const Shape& shape, glm::dvec3& lo, glm::dvec3& hi);
@@ -86,6 +92,7 @@ enum class TextureType {
   kNone = gpu::TEXTURE_NONE,
   kChecker = gpu::TEXTURE_CHECKER,
   kColorChart = gpu::TEXTURE_COLOR_CHART,
+  kMesh = gpu::TEXTURE_MESH,  ///< meshes: their own base colour (texture, vertex, material colours)
 };
 
 struct Material {
@@ -98,6 +105,11 @@ struct Material {
   float ior = 1.5f;               ///< dielectric: index of refraction (outside is air, 1)
   std::string ior_preset;         ///< the preset name when the file gave one
   glm::vec3 absorption{0.0f};     ///< dielectric: Beer–Lambert coefficient per scene unit
+  /// A diffuse mesh whose scene gave no "texture": kMesh when the mesh carries a base colour,
+  /// else kNone (decided once the mesh is read: geometry/scene_file.hpp).
+  bool texture_by_mesh = false;
+  /// The scene gave no "color": 1 with the mesh's own base colour, else 0.8.
+  bool default_color = false;
 };
 
 /// Albedo of a textured diffuse material at texture coordinates uv in [0,1]^2 (docs/scenes.md:
@@ -117,9 +129,13 @@ struct Light {
   float intensity = 1.0f;
 };
 
-/// One mesh file and its precomputed assets (empty path: not found / not given).
+/// One mesh file (for a glTF file: one mesh of it) and its precomputed assets (empty path: not
+/// found / not given).
 struct MeshAsset {
   std::string file;
+  std::string part;   ///< glTF: the mesh's index in the file, "#INDEX" ("" for other formats)
+  std::string asset;  ///< NAME of its assets NAME.gimage.exr, NAME.gfield.exr: the mesh file's
+                      ///< stem, for a glTF mesh "STEM.INDEX-MESHNAME" (gltf_scene.hpp)
   std::string geometry_image;  ///< NAME.gimage.exr beside the mesh, or named by the scene
   std::string geometry_field;  ///< NAME.gfield.exr beside the mesh, or named by the scene
 };
@@ -129,6 +145,17 @@ struct SceneObject {
   Shape shape;
   Transform transform;
   Material material;
+};
+
+/// A glTF file a JSON scene includes as one object (`"shape": "gltf"`): its meshes, placed by
+/// its nodes and then by `transform`, with their own materials (geometry/scene_file.hpp
+/// expands it into objects).
+struct SceneInclude {
+  std::string file;  ///< the glTF file (resolved)
+  std::string name;
+  Transform transform;
+  size_t position = 0;  ///< the objects it becomes go before Scene::objects[position]
+  std::string where;    ///< "SCENE:LINE:COLUMN: objects[I]", for messages
 };
 
 struct Scene {
@@ -142,6 +169,7 @@ struct Scene {
   std::vector<Light> lights;
   std::vector<MeshAsset> meshes;  ///< each file once; objects refer to it by index (instances)
   std::vector<SceneObject> objects;
+  std::vector<SceneInclude> includes;  ///< glTF files not expanded yet (core's parser only)
 };
 
 /// Reads and validates a scene file. False with "FILE:LINE:COLUMN: what: problem" for malformed
@@ -154,9 +182,9 @@ struct Scene {
 bool load_scene(const std::string& filename, Scene& scene, std::string& error);
 
 /// Points every mesh of `scene` at the assets found in folder `dir` (DIR/NAME.gimage.exr and
-/// DIR/NAME.gfield.exr for mesh file NAME.EXT, as `gfield build MESH -o DIR/NAME` writes them);
-/// those found there take precedence over the ones beside the mesh or named by the scene. False
-/// with "DIR: not a folder" when `dir` is not one.
+/// DIR/NAME.gfield.exr for MeshAsset::asset NAME, the stem of mesh file NAME.EXT, as `gfield
+/// build MESH -o DIR/NAME` writes them); those found there take precedence over the ones beside
+/// the mesh or named by the scene. False with "DIR: not a folder" when `dir` is not one.
 bool use_asset_folder(const std::string& dir, Scene& scene, std::string& error);
 
 /// The same from text; `filename` names the file in errors and is where relative paths start.
