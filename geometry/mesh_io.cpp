@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "geometry/gltf_mesh.hpp"
+#include "geometry/mesh_appearance.hpp"
 #include "geometry/mesh_readers.hpp"
 #include "gfield/atomic_file.hpp"
 #include "gfield/file_read.hpp"
@@ -21,10 +23,54 @@ std::string lower_extension(const std::string& filename) {
   return ext;
 }
 
+/// The appearance of what a reader of `filename` read: corner uvs from their indices, the
+/// materials with their libraries (OBJ) or the file's texture (PLY), the textures decoded.
+bool soup_appearance(const std::string& filename, MeshSoup& soup, MeshAppearance& appearance,
+                     std::vector<std::string>& warnings, std::string& error) {
+  appearance = MeshAppearance{};
+  appearance.corner_uv.reserve(soup.corner_uvs.size());
+  for (const std::int32_t index : soup.corner_uvs) {
+    appearance.corner_uv.push_back(index >= 0 ? soup.uvs[size_t(index)] : glm::vec2(0.0f));
+  }
+  if (!soup.libraries.empty() && !read_material_libraries(filename, soup, warnings, error)) {
+    return false;
+  }
+  const std::filesystem::path folder = std::filesystem::path(filename).parent_path();
+  if (soup.libraries.empty() && !soup.texture_files.empty()) {  // PLY: one texture for all
+    soup.texture_files.resize(1);
+    soup.texture_files[0] = (folder / soup.texture_files[0]).lexically_normal().string();
+    soup.materials = {{"TextureFile", glm::vec3(1.0f), 0}};
+    soup.face_material.assign(soup.mesh.triangles.size(), 0);
+  }
+  appearance.vertex_color = std::move(soup.vertex_color);
+  appearance.face_material = std::move(soup.face_material);
+  appearance.materials = std::move(soup.materials);
+  return load_texture_files(filename, soup.texture_files, appearance, warnings, error);
+}
+
 }  // namespace
+
+bool is_gltf_file(const std::string& filename) {
+  const std::string ext = lower_extension(filename);
+  return ext == ".gltf" || ext == ".glb";
+}
 
 bool load_mesh(const std::string& filename, TriangleMesh& mesh, std::string& error,
                MeshLoadStats* stats) {
+  std::vector<std::string> warnings;
+  return load_mesh(MeshSource{filename, ""}, mesh, nullptr, warnings, error, stats);
+}
+
+bool load_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* appearance,
+               std::vector<std::string>& warnings, std::string& error, MeshLoadStats* stats) {
+  const std::string& filename = source.file;
+  if (is_gltf_file(filename)) {
+    return load_gltf_mesh(source, mesh, appearance, warnings, error, stats);
+  }
+  if (!source.part.empty()) {
+    error = filename + ": --mesh " + source.part + " applies to glTF files only";
+    return false;
+  }
   const std::string ext = lower_extension(filename);
   using Reader = bool (*)(std::string_view, MeshSoup&, ReadFailure&);
   const Reader reader = ext == ".obj"   ? read_obj
@@ -33,7 +79,8 @@ bool load_mesh(const std::string& filename, TriangleMesh& mesh, std::string& err
                         : ext == ".stl" ? read_stl
                                         : nullptr;
   if (reader == nullptr) {
-    error = filename + ": unknown mesh extension '" + ext + "' (expected .obj, .ply, .off, .stl)";
+    error = filename + ": unknown mesh extension '" + ext +
+            "' (expected .obj, .ply, .off, .stl, .gltf, .glb)";
     return false;
   }
   std::string data;
@@ -53,6 +100,9 @@ bool load_mesh(const std::string& filename, TriangleMesh& mesh, std::string& err
   if (soup.mesh.triangles.empty()) {
     error = filename + ": no faces (" + std::to_string(soup.mesh.positions.size()) +
             " vertices read; triangle strips and point clouds are not supported)";
+    return false;
+  }
+  if (appearance != nullptr && !soup_appearance(filename, soup, *appearance, warnings, error)) {
     return false;
   }
   mesh = std::move(soup.mesh);

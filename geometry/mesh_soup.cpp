@@ -41,7 +41,8 @@ bool add_vertex(MeshSoup& soup, double x, double y, double z, std::string& what)
   return true;
 }
 
-bool add_polygon(MeshSoup& soup, std::span<const std::int64_t> corners, std::string& what) {
+bool add_polygon(MeshSoup& soup, std::span<const std::int64_t> corners, std::string& what,
+                 const PolygonAttributes& attributes) {
   if (corners.size() < 3) {
     what = "a face with " + std::to_string(corners.size()) + " corners (at least 3)";
     return false;
@@ -60,9 +61,57 @@ bool add_polygon(MeshSoup& soup, std::span<const std::int64_t> corners, std::str
   if (corners.size() > 3) {
     ++soup.stats.triangulated;
   }
+  // Attribute arrays start when the first face has the attribute: earlier faces get none.
+  const bool uvs = attributes.uvs.size() == corners.size();
+  if (uvs && soup.corner_uvs.empty()) {
+    soup.corner_uvs.assign(3 * triangles.size(), -1);
+  }
+  if (attributes.material >= 0 && soup.face_material.empty()) {
+    soup.face_material.assign(triangles.size(), -1);
+  }
   for (size_t k = 1; k + 1 < corners.size(); ++k) {
     triangles.emplace_back(int(corners[0]), int(corners[k]), int(corners[k + 1]));
+    if (!soup.corner_uvs.empty()) {
+      for (const size_t c : {size_t(0), k, k + 1}) {
+        soup.corner_uvs.push_back(uvs ? std::int32_t(attributes.uvs[c]) : -1);
+      }
+    }
+    if (!soup.face_material.empty()) {
+      soup.face_material.push_back(attributes.material);
+    }
   }
+  return true;
+}
+
+bool add_uv(MeshSoup& soup, double u, double v, std::string& what) {
+  for (const double x : {u, v}) {
+    if (!std::isfinite(x) || std::abs(x) > kMaxTextureCoordinate) {
+      char text[128];
+      std::snprintf(text, sizeof(text),
+                    "texture coordinate %g is not finite or beyond the limit of 1e4", x);
+      what = text;
+      return false;
+    }
+  }
+  if (std::int64_t(soup.uvs.size()) >= kMaxMeshVertices) {
+    what = "more than " + std::to_string(kMaxMeshVertices) + " texture coordinates";
+    return false;
+  }
+  soup.uvs.emplace_back(float(u), float(v));
+  return true;
+}
+
+bool set_vertex_color(MeshSoup& soup, glm::dvec3 color, std::string& what) {
+  for (int k = 0; k < 3; ++k) {
+    if (!(color[k] >= 0.0 && color[k] <= kMaxColorComponent)) {
+      char text[128];
+      std::snprintf(text, sizeof(text), "vertex colour component %g is not in [0, 1e6]", color[k]);
+      what = text;
+      return false;
+    }
+  }
+  soup.vertex_color.resize(soup.mesh.positions.size(), glm::vec3(1.0f));
+  soup.vertex_color.back() = glm::vec3(color);
   return true;
 }
 

@@ -23,6 +23,9 @@ struct ParameterizedMesh {
   TriangleMesh mesh;                 ///< V points, F triangles (mesh coordinates)
   std::vector<glm::vec2> corner_uv;  ///< 3F geometry-image uvs, corner c of triangle f at 3f + c
   std::string build_id;              ///< the build's id, the image's (empty: none)
+  /// F faces of the input mesh each face is (-1: it fills a hole), as the build knows it; not
+  /// saved (empty when read from a file).
+  std::vector<int> source_face;
 };
 
 /// The uv file that belongs to an image file: "X.gimage.exr" -> "X.gimage.obj".

@@ -150,7 +150,13 @@ bool read_ply_header(std::string_view data, PlyHeader& header, ReadFailure& fail
       header.lines = lines.number();
       failure.line = 0;
       return true;
-    } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
+    } else if (keyword == "comment") {
+      std::string_view word, file;
+      if (words.next(word) && word == "TextureFile" && words.next(file) &&
+          header.texture_files.size() < kMaxMeshTextures) {
+        header.texture_files.emplace_back(file);
+      }
+    } else if (keyword != "obj_info" && !keyword.empty()) {
       failure.what = "unexpected header line " + text::quoted(line) +
                      (format_seen ? "" : " (the format line must come first)");
       return false;

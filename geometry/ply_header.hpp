@@ -30,8 +30,9 @@ struct PlyElement {
 struct PlyHeader {
   PlyFormat format = PlyFormat::kAscii;
   std::vector<PlyElement> elements;
-  size_t data_offset = 0;  ///< first byte after "end_header\n"
-  size_t lines = 0;        ///< header lines, for the line numbers of ASCII data
+  std::vector<std::string> texture_files;  ///< "comment TextureFile NAME" lines (MeshLab)
+  size_t data_offset = 0;                  ///< first byte after "end_header\n"
+  size_t lines = 0;                        ///< header lines, for the line numbers of ASCII data
 };
 
 /// At most this many elements, and properties per element.

@@ -1,6 +1,9 @@
-// PLY (ASCII, binary little and big endian): the "vertex" element's x, y, z and the "face"
-// element's "vertex_indices" (or "vertex_index") list; other elements and properties are read
-// past. Element counts and list lengths are checked against the bytes left before any loop.
+// PLY (ASCII, binary little and big endian): the "vertex" element's x, y, z, texture
+// coordinates (u v, s t, texture_u texture_v) and colour (red green blue: 8/16-bit sRGB or
+// linear floats), the "face" element's "vertex_indices" (or "vertex_index") list and MeshLab's
+// per-corner "texcoord" list, and "comment TextureFile NAME" (the texture of the whole mesh);
+// other elements and properties are read past. Element counts and list lengths are checked against
+// the bytes left before any loop.
 
 #include <algorithm>
 #include <bit>
@@ -116,19 +119,55 @@ std::uint64_t min_element_bytes(const PlyElement& element, const PlyValues& valu
   return bytes;
 }
 
-/// Where the x, y, z of "vertex" and the index list of "face" are (-1: absent).
+/// The scalar properties of "vertex" gfield reads, in Roles::scalars.
+enum VertexRole { kX, kY, kZ, kU, kV, kRed, kGreen, kBlue, kVertexRoles };
+
+/// Where the roles are among an element's properties (-1: absent): the vertex's scalars, and the
+/// face's index list and texture-coordinate list (MeshLab's "texcoord": u v per corner).
 struct Roles {
-  int x = -1, y = -1, z = -1;
+  int scalars[kVertexRoles] = {-1, -1, -1, -1, -1, -1, -1, -1};
   int indices = -1;
+  int texcoord = -1;
 };
+
+int vertex_role(const std::string& name) {
+  static const std::pair<const char*, VertexRole> kNames[] = {{"x", kX},
+                                                              {"y", kY},
+                                                              {"z", kZ},
+                                                              {"u", kU},
+                                                              {"s", kU},
+                                                              {"texture_u", kU},
+                                                              {"texture_s", kU},
+                                                              {"v", kV},
+                                                              {"t", kV},
+                                                              {"texture_v", kV},
+                                                              {"texture_t", kV},
+                                                              {"red", kRed},
+                                                              {"green", kGreen},
+                                                              {"blue", kBlue},
+                                                              {"diffuse_red", kRed},
+                                                              {"diffuse_green", kGreen},
+                                                              {"diffuse_blue", kBlue}};
+  for (const auto& [n, role] : kNames) {
+    if (name == n) {
+      return role;
+    }
+  }
+  return -1;
+}
 
 /// The role of property `p` of `element`, or null.
 int* role_of(const PlyElement& element, const PlyProperty& p, Roles& roles) {
   if (element.name == "vertex") {
-    return p.name == "x" ? &roles.x : p.name == "y" ? &roles.y : p.name == "z" ? &roles.z : nullptr;
+    const int role = vertex_role(p.name);
+    return role >= 0 ? &roles.scalars[role] : nullptr;
   }
-  const bool indices = p.name == "vertex_indices" || p.name == "vertex_index";
-  return element.name == "face" && indices ? &roles.indices : nullptr;
+  if (element.name != "face") {
+    return nullptr;
+  }
+  return p.name == "vertex_indices" || p.name == "vertex_index" ? &roles.indices
+         : p.name == "texcoord"                                 ? &roles.texcoord
+                                                                : nullptr;
 }
 
 bool find_roles(const PlyElement& element, Roles& roles, std::string& what) {
@@ -139,23 +178,33 @@ bool find_roles(const PlyElement& element, Roles& roles, std::string& what) {
       continue;
     }
     const bool want_list = element.name == "face";
-    if (p.list != want_list || (want_list && !ply_type_is_integer(p.type)) || *role >= 0) {
+    const bool want_integers = role == &roles.indices;
+    if (p.list != want_list || (want_integers && !ply_type_is_integer(p.type)) || *role >= 0) {
       what = "property " + text::quoted(p.name) + " of element " + text::quoted(element.name) +
-             (want_list ? " must be one list of integers" : " must be one scalar");
+             (want_integers ? " must be one list of integers"
+              : want_list   ? " must be one list"
+                            : " must be one scalar");
       return false;
     }
     *role = int(i);
   }
-  if (element.name == "vertex" && (roles.x < 0 || roles.y < 0 || roles.z < 0)) {
+  const int* s = roles.scalars;
+  if (element.name == "vertex" && (s[kX] < 0 || s[kY] < 0 || s[kZ] < 0)) {
     what = "the vertex element lacks x, y or z";
+    return false;
+  }
+  if (element.name == "vertex" && ((s[kU] < 0) != (s[kV] < 0) || (s[kRed] < 0) != (s[kGreen] < 0) ||
+                                   (s[kRed] < 0) != (s[kBlue] < 0))) {
+    what = "the vertex element has only some of u, v or of red, green, blue";
     return false;
   }
   return true;
 }
 
-/// Reads (or reads past) one list; its items go to `items` when not null.
+/// Reads (or reads past) one list; its items go to `items` (integers) or `numbers` when not
+/// null.
 bool read_list(PlyValues& values, const PlyProperty& p, std::vector<std::int64_t>* items,
-               std::string& what) {
+               std::vector<double>* numbers, std::string& what) {
   std::int64_t length = 0;
   if (!values.integer(p.count_type, length, what)) {
     return false;
@@ -176,8 +225,68 @@ bool read_list(PlyValues& values, const PlyProperty& p, std::vector<std::int64_t
     if (items) {
       items->push_back(index);
     }
+    if (numbers) {
+      numbers->push_back(value);
+    }
   }
   return true;
+}
+
+/// A colour component of `type` as linear: 8 and 16-bit integers are sRGB, floats linear.
+double linear_component(double value, PlyType type) {
+  if (type == PlyType::kUint8) {
+    return srgb_to_linear(float(value / 255.0));
+  }
+  if (type == PlyType::kUint16) {
+    return srgb_to_linear(float(value / 65535.0));
+  }
+  return value;
+}
+
+/// Adds one vertex with its texture coordinates and colour (`scalars` per VertexRole).
+bool add_ply_vertex(const PlyElement& element, const Roles& roles, const double* scalars,
+                    MeshSoup& soup, std::string& what) {
+  if (!add_vertex(soup, scalars[kX], scalars[kY], scalars[kZ], what) ||
+      (roles.scalars[kU] >= 0 && !add_uv(soup, scalars[kU], scalars[kV], what))) {
+    return false;
+  }
+  if (roles.scalars[kRed] < 0) {
+    return true;
+  }
+  glm::dvec3 color;
+  for (int k = 0; k < 3; ++k) {
+    const PlyType type = element.properties[size_t(roles.scalars[kRed + k])].type;
+    color[k] = linear_component(scalars[kRed + k], type);
+  }
+  return set_vertex_color(soup, color, what);
+}
+
+/// Adds one face: its corners (checked against the vertex count) with the vertices' texture
+/// coordinates or its own (`texcoord`, u v per corner).
+bool add_ply_face(const std::vector<std::int64_t>& corners, const std::vector<double>& texcoord,
+                  std::int64_t vertex_count, MeshSoup& soup, std::string& what) {
+  for (const std::int64_t index : corners) {
+    if (!check_index(index, vertex_count, what)) {
+      return false;
+    }
+  }
+  std::vector<std::int64_t> uvs;
+  if (!texcoord.empty()) {
+    if (texcoord.size() != 2 * corners.size()) {
+      what = "texcoord holds " + std::to_string(texcoord.size()) + " numbers for " +
+             std::to_string(corners.size()) + " corners (2 per corner)";
+      return false;
+    }
+    for (size_t c = 0; c < corners.size(); ++c) {
+      uvs.push_back(std::int64_t(soup.uvs.size()));
+      if (!add_uv(soup, texcoord[2 * c], texcoord[2 * c + 1], what)) {
+        return false;
+      }
+    }
+  } else if (!soup.uvs.empty() && std::int64_t(soup.uvs.size()) == vertex_count) {
+    uvs = corners;  // per-vertex texture coordinates
+  }
+  return add_polygon(soup, corners, what, {std::span<const std::int64_t>(uvs), -1});
 }
 
 bool read_element(PlyValues& values, const PlyElement& element, std::int64_t vertex_count,
@@ -192,33 +301,32 @@ bool read_element(PlyValues& values, const PlyElement& element, std::int64_t ver
     soup.mesh.positions.reserve(size_t(element.count));
   }
   std::vector<std::int64_t> corners;
-  double xyz[3] = {0.0, 0.0, 0.0};
+  std::vector<double> texcoord;
+  double scalars[kVertexRoles] = {};
   for (std::int64_t e = 0; e < element.count && !element.properties.empty(); ++e) {
     corners.clear();
+    texcoord.clear();
     for (size_t i = 0; i < element.properties.size(); ++i) {
       const PlyProperty& p = element.properties[i];
-      const bool is_indices = int(i) == roles.indices;
       double value = 0.0;
-      const bool ok = p.list ? read_list(values, p, is_indices ? &corners : nullptr, failure.what)
-                             : values.number(p.type, value, failure.what);
+      const bool ok = p.list
+                          ? read_list(values, p, int(i) == roles.indices ? &corners : nullptr,
+                                      int(i) == roles.texcoord ? &texcoord : nullptr, failure.what)
+                          : values.number(p.type, value, failure.what);
       failure.line = values.line();
       if (!ok) {
         failure.what = element.name + " " + std::to_string(e) + ": " + failure.what;
         return false;
       }
-      const int k = int(i) == roles.x ? 0 : int(i) == roles.y ? 1 : int(i) == roles.z ? 2 : -1;
-      if (k >= 0) {
-        xyz[k] = value;
+      for (int k = 0; k < kVertexRoles; ++k) {
+        scalars[k] = int(i) == roles.scalars[k] ? value : scalars[k];
       }
     }
     bool ok = true;
     if (element.name == "vertex") {
-      ok = add_vertex(soup, xyz[0], xyz[1], xyz[2], failure.what);
+      ok = add_ply_vertex(element, roles, scalars, soup, failure.what);
     } else if (roles.indices >= 0) {
-      for (const std::int64_t index : corners) {
-        ok = ok && check_index(index, vertex_count, failure.what);
-      }
-      ok = ok && add_polygon(soup, corners, failure.what);
+      ok = add_ply_face(corners, texcoord, vertex_count, soup, failure.what);
     }
     if (!ok) {
       failure.what = element.name + " " + std::to_string(e) + ": " + failure.what;
@@ -252,6 +360,10 @@ bool read_ply(std::string_view data, MeshSoup& soup, ReadFailure& failure) {
     if (!read_element(values, element, vertex_count, soup, failure)) {
       return false;
     }
+  }
+  soup.texture_files = header.texture_files;
+  if (!soup.vertex_color.empty()) {
+    soup.vertex_color.resize(soup.mesh.positions.size(), glm::vec3(1.0f));
   }
   failure.line = 0;
   return true;

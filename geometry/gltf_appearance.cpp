@@ -1,0 +1,92 @@
+// The base-colour materials and textures of a glTF document (gltf_document.hpp).
+
+#include <filesystem>
+#include <map>
+
+#include "geometry/gltf_checks.hpp"
+#include "geometry/gltf_document.hpp"
+#include "geometry/mesh_appearance.hpp"
+#include "gfield/limits.hpp"
+
+namespace gfield {
+namespace {
+
+/// Decodes image `index` of the document into `texture`: embedded bytes (a buffer view or a
+/// data URI) must be an image; an external file that is missing gives mid-grey and a warning.
+bool decode_gltf_image(const GltfDocument& d, int index, MeshTexture& texture,
+                       std::vector<std::string>& warnings, std::string& error) {
+  const tinygltf::Image& image = d.model.images[size_t(index)];
+  const std::string name = d.file + ": images[" + std::to_string(index) + "]";
+  if (!image.image.empty()) {
+    texture.name = name;
+    if (!decode_image(name, image.image.data(), image.image.size(), texture.image, error))
+      return false;
+    return true;
+  }
+  if (image.uri.empty()) {
+    error = name + ": no image data";
+    return false;
+  }
+  const std::string file =
+      (std::filesystem::path(d.file).parent_path() / decode_uri(image.uri)).string();
+  MeshAppearance loaded;
+  if (!load_texture_files(d.file, {file}, loaded, warnings, error))
+    return false;
+  texture = std::move(loaded.textures[0]);
+  return true;
+}
+
+/// Material `m`'s base colour; its texture's image (-1: none) in `image`.
+BaseColorMaterial base_color_material(const GltfDocument& d, size_t m, int& image,
+                                      std::vector<std::string>& warnings) {
+  const tinygltf::Material& material = d.model.materials[m];
+  const std::vector<double>& f = material.pbrMetallicRoughness.baseColorFactor;
+  BaseColorMaterial out;
+  out.name = material.name;
+  if (f.size() >= 3)
+    out.factor = glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), glm::vec3(0.0f),
+                            glm::vec3(float(kMaxColorComponent)));
+  const tinygltf::TextureInfo& info = material.pbrMetallicRoughness.baseColorTexture;
+  image = info.index >= 0 ? d.model.textures[size_t(info.index)].source : -1;
+  if (image >= 0 && info.texCoord != 0)
+    warnings.push_back(d.file + ": materials[" + std::to_string(m) +
+                       "]: baseColorTexture uses TEXCOORD_" + std::to_string(info.texCoord) +
+                       "; gfield reads TEXCOORD_0");
+  return out;
+}
+
+}  // namespace
+
+bool gltf_appearance(const GltfDocument& d, bool any_uv, bool any_color, bool any_material,
+                     MeshAppearance& appearance, std::vector<std::string>& warnings,
+                     std::string& error) {
+  if (!any_uv)
+    appearance.corner_uv.clear();
+  if (!any_color)
+    appearance.vertex_color.clear();
+  if (!any_material) {
+    appearance.face_material.clear();
+    return true;
+  }
+  std::vector<char> used(d.model.materials.size(), 0);
+  for (const int m : appearance.face_material)
+    if (m >= 0)
+      used[size_t(m)] = 1;
+  std::map<int, int> textures;  // glTF image -> appearance texture
+  for (size_t m = 0; m < d.model.materials.size(); ++m) {
+    int image = -1;
+    appearance.materials.push_back(base_color_material(d, m, image, warnings));
+    if (image < 0 || !used[m])
+      continue;
+    const auto [it, added] = textures.emplace(image, int(appearance.textures.size()));
+    if (added) {
+      appearance.textures.emplace_back();
+      if (!decode_gltf_image(d, image, appearance.textures.back(), warnings, error))
+        return false;
+    }
+    appearance.materials.back().texture = it->second;
+  }
+  return true;
+}
+
+}  // namespace gfield

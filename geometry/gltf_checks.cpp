@@ -1,0 +1,368 @@
+#include "geometry/gltf_checks.hpp"
+
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+#include "gfield/limits.hpp"
+#include "gfield/located_json.hpp"
+
+namespace gfield {
+namespace {
+
+using nlohmann::json;
+
+/// Every value reached by `pattern` ("a/*/b": "*" is every element of an array or member of an
+/// object) from `value` at `pointer`, with its pointer.
+void collect(const json& value, std::string_view pattern, const std::string& pointer,
+             std::vector<std::pair<const json*, std::string>>& out) {
+  if (pattern.empty()) {
+    out.emplace_back(&value, pointer);
+    return;
+  }
+  const size_t slash = pattern.find('/');
+  const std::string_view part = pattern.substr(0, slash);
+  const std::string_view rest = slash == std::string_view::npos ? "" : pattern.substr(slash + 1);
+  if (part == "*" && value.is_array()) {
+    for (size_t i = 0; i < value.size(); ++i) {
+      collect(value[i], rest, json_pointer_child(pointer, i), out);
+    }
+  } else if (part == "*" && value.is_object()) {
+    for (auto it = value.begin(); it != value.end(); ++it) {
+      collect(it.value(), rest, json_pointer_child(pointer, it.key()), out);
+    }
+  } else if (value.is_object() && value.contains(std::string(part))) {
+    collect(value[std::string(part)], rest, json_pointer_child(pointer, std::string(part)), out);
+  }
+}
+
+/// The number of elements of the array at `path` ("" when absent: 0).
+size_t array_size(const json& document, std::string_view path) {
+  std::vector<std::pair<const json*, std::string>> found;
+  collect(document, path, "", found);
+  return found.size() == 1 && found[0].first->is_array() ? found[0].first->size() : 0;
+}
+
+/// Which index refers to which array.
+struct Reference {
+  const char* pattern;
+  const char* target;
+};
+
+constexpr Reference kReferences[] = {
+    {"scene", "scenes"},
+    {"scenes/*/nodes/*", "nodes"},
+    {"nodes/*/children/*", "nodes"},
+    {"nodes/*/mesh", "meshes"},
+    {"nodes/*/camera", "cameras"},
+    {"nodes/*/skin", "skins"},
+    {"nodes/*/extensions/KHR_lights_punctual/light", "extensions/KHR_lights_punctual/lights"},
+    {"meshes/*/primitives/*/attributes/*", "accessors"},
+    {"meshes/*/primitives/*/indices", "accessors"},
+    {"meshes/*/primitives/*/material", "materials"},
+    {"meshes/*/primitives/*/targets/*/*", "accessors"},
+    {"accessors/*/bufferView", "bufferViews"},
+    {"accessors/*/sparse/indices/bufferView", "bufferViews"},
+    {"accessors/*/sparse/values/bufferView", "bufferViews"},
+    {"bufferViews/*/buffer", "buffers"},
+    {"materials/*/pbrMetallicRoughness/baseColorTexture/index", "textures"},
+    {"materials/*/pbrMetallicRoughness/metallicRoughnessTexture/index", "textures"},
+    {"materials/*/normalTexture/index", "textures"},
+    {"materials/*/occlusionTexture/index", "textures"},
+    {"materials/*/emissiveTexture/index", "textures"},
+    {"materials/*/extensions/*/*/index", "textures"},
+    {"textures/*/source", "images"},
+    {"textures/*/sampler", "samplers"},
+    {"images/*/bufferView", "bufferViews"},
+    {"skins/*/joints/*", "nodes"},
+    {"skins/*/skeleton", "nodes"},
+    {"skins/*/inverseBindMatrices", "accessors"},
+    {"animations/*/channels/*/target/node", "nodes"},
+    {"animations/*/samplers/*/input", "accessors"},
+    {"animations/*/samplers/*/output", "accessors"},
+};
+
+/// An index: an integer in [0, size).
+bool check_index(const json& value, size_t size, const char* target, std::string& what) {
+  if (!value.is_number_integer() || value.get<std::int64_t>() < 0 ||
+      std::uint64_t(value.get<std::int64_t>()) >= size) {
+    what = "index " + value.dump() + " out of range (" + std::to_string(size) + " " + target + ")";
+    return false;
+  }
+  return true;
+}
+
+bool check_references(const json& document, CheckFailure& failure) {
+  for (const auto& [pattern, target] : kReferences) {
+    std::vector<std::pair<const json*, std::string>> found;
+    collect(document, pattern, "", found);
+    const size_t size = array_size(document, target);
+    for (const auto& [value, pointer] : found) {
+      if (!check_index(*value, size, target, failure.what)) {
+        failure.pointer = pointer;
+        return false;
+      }
+    }
+  }
+  // Channels name samplers of their own animation.
+  std::vector<std::pair<const json*, std::string>> animations;
+  collect(document, "animations/*", "", animations);
+  for (const auto& [animation, pointer] : animations) {
+    std::vector<std::pair<const json*, std::string>> samplers;
+    collect(*animation, "channels/*/sampler", pointer, samplers);
+    for (const auto& [value, where] : samplers) {
+      if (!check_index(*value, array_size(*animation, "samplers"), "samplers", failure.what)) {
+        failure.pointer = where;
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+/// Every top-level array within kMaxGltfElements.
+bool check_array_sizes(const json& document, CheckFailure& failure) {
+  for (auto it = document.begin(); it != document.end(); ++it) {
+    if (it.value().is_array() && it.value().size() > kMaxGltfElements) {
+      failure = {json_pointer_child("", it.key()), std::to_string(it.value().size()) +
+                                                       " elements, more than the limit of " +
+                                                       std::to_string(kMaxGltfElements)};
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Nodes form a forest: one parent at most, no cycle; scenes list roots.
+bool check_node_forest(const json& document, CheckFailure& failure) {
+  const size_t nodes = array_size(document, "nodes");
+  std::vector<std::int64_t> parent(nodes, -1);
+  for (size_t n = 0; n < nodes; ++n) {
+    std::vector<std::pair<const json*, std::string>> children;
+    collect(document["nodes"][n], "children/*", json_pointer_child("/nodes", n), children);
+    for (const auto& [child, pointer] : children) {
+      const std::int64_t c = child->get<std::int64_t>();
+      if (parent[size_t(c)] >= 0 || c == std::int64_t(n)) {
+        failure = {pointer, "node " + std::to_string(c) + " has more than one parent"};
+        return false;
+      }
+      parent[size_t(c)] = std::int64_t(n);
+    }
+  }
+  for (size_t n = 0; n < nodes; ++n) {
+    size_t steps = 0;
+    for (std::int64_t p = parent[n]; p >= 0; p = parent[size_t(p)]) {
+      if (++steps > nodes) {
+        failure = {json_pointer_child("/nodes", n), "the node hierarchy has a cycle"};
+        return false;
+      }
+    }
+  }
+  std::vector<std::pair<const json*, std::string>> roots;
+  collect(document, "scenes/*/nodes/*", "", roots);
+  for (const auto& [root, pointer] : roots) {
+    if (parent[size_t(root->get<std::int64_t>())] >= 0) {
+      failure = {pointer, "a scene lists node " + root->dump() + ", which has a parent"};
+      return false;
+    }
+  }
+  return true;
+}
+
+/// An unsigned integer member `key` of `object` (`fallback` when absent); false with `failure`
+/// when it is not one or above `max`.
+bool unsigned_member(const json& object, const std::string& pointer, const char* key,
+                     std::uint64_t fallback, std::uint64_t max, std::uint64_t& value,
+                     CheckFailure& failure) {
+  value = fallback;
+  if (!object.is_object() || !object.contains(key)) {
+    return true;
+  }
+  const json& v = object[key];
+  if (!v.is_number_integer() || v.get<std::int64_t>() < 0 || v.get<std::uint64_t>() > max) {
+    failure = {json_pointer_child(pointer, key),
+               "expected an integer in [0, " + std::to_string(max) + "]"};
+    return false;
+  }
+  value = v.get<std::uint64_t>();
+  return true;
+}
+
+/// Buffers: present on disk with their byteLength (external), within the BIN chunk (.glb).
+bool check_buffers(const json& document, const std::string& folder, std::int64_t bin_bytes,
+                   std::vector<std::uint64_t>& lengths, CheckFailure& failure) {
+  for (size_t b = 0; b < array_size(document, "buffers"); ++b) {
+    const json& buffer = document["buffers"][b];
+    const std::string pointer = json_pointer_child("/buffers", b);
+    std::uint64_t length = 0;
+    if (!unsigned_member(buffer, pointer, "byteLength", 0, kMaxMeshFileBytes, length, failure)) {
+      return false;
+    }
+    lengths.push_back(length);
+    const bool has_uri = buffer.is_object() && buffer.contains("uri") && buffer["uri"].is_string();
+    const std::string uri = has_uri ? buffer["uri"].get<std::string>() : "";
+    if (!has_uri && (bin_bytes < 0 || b > 0 || std::int64_t(length) > bin_bytes)) {
+      failure = {pointer, bin_bytes < 0 || b > 0
+                              ? "a buffer without a uri (only a .glb's first buffer may have none)"
+                              : "byteLength " + std::to_string(length) +
+                                    " is beyond the BIN chunk's " + std::to_string(bin_bytes) +
+                                    " bytes (truncated file?)"};
+      return false;
+    }
+    if (!has_uri || uri.rfind("data:", 0) == 0) {
+      continue;
+    }
+    const std::filesystem::path path = std::filesystem::path(folder) / decode_uri(uri);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+      failure = {json_pointer_child(pointer, "uri"), "no such file: " + path.string()};
+      return false;
+    }
+    const std::uint64_t size = std::filesystem::file_size(path, ec);
+    if (ec || size != length) {
+      failure = {json_pointer_child(pointer, "uri"),
+                 path.string() + " holds " + std::to_string(size) + " bytes, byteLength says " +
+                     std::to_string(length)};
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Buffer views within their buffers; `extents` receives each view's byteLength.
+bool check_buffer_views(const json& document, const std::vector<std::uint64_t>& buffers,
+                        std::vector<std::uint64_t>& lengths, CheckFailure& failure) {
+  for (size_t v = 0; v < array_size(document, "bufferViews"); ++v) {
+    const json& view = document["bufferViews"][v];
+    const std::string pointer = json_pointer_child("/bufferViews", v);
+    std::uint64_t offset = 0, length = 0, stride = 0;
+    if (!view.is_object() || !view.contains("buffer") || !view.contains("byteLength")) {
+      failure = {pointer, "a buffer view needs buffer and byteLength"};
+      return false;
+    }
+    if (!unsigned_member(view, pointer, "byteOffset", 0, kMaxMeshFileBytes, offset, failure) ||
+        !unsigned_member(view, pointer, "byteLength", 0, kMaxMeshFileBytes, length, failure) ||
+        !unsigned_member(view, pointer, "byteStride", 0, 252, stride, failure)) {
+      return false;
+    }
+    const std::uint64_t buffer = buffers[view["buffer"].get<size_t>()];
+    if (offset + length > buffer) {
+      failure = {pointer, "bytes " + std::to_string(offset) + " to " +
+                              std::to_string(offset + length) + " are beyond its buffer's " +
+                              std::to_string(buffer)};
+      return false;
+    }
+    lengths.push_back(length);
+  }
+  return true;
+}
+
+/// Bytes of one component of glTF component type `type` (0: not a valid type).
+std::uint64_t component_bytes(std::int64_t type) {
+  switch (type) {
+    case 5120:
+    case 5121:
+      return 1;
+    case 5122:
+    case 5123:
+      return 2;
+    case 5125:
+    case 5126:
+      return 4;
+    default:
+      return 0;
+  }
+}
+
+std::uint64_t type_components(const std::string& type) {
+  const std::pair<const char*, std::uint64_t> kTypes[] = {
+      {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}, {"MAT2", 4}, {"MAT3", 9}, {"MAT4", 16}};
+  for (const auto& [name, n] : kTypes) {
+    if (type == name) {
+      return n;
+    }
+  }
+  return 0;
+}
+
+/// Accessors: valid types, within their buffer views.
+bool check_accessors(const json& document, const std::vector<std::uint64_t>& views,
+                     CheckFailure& failure) {
+  for (size_t a = 0; a < array_size(document, "accessors"); ++a) {
+    const json& accessor = document["accessors"][a];
+    const std::string pointer = json_pointer_child("/accessors", a);
+    std::uint64_t offset = 0, count = 0, type_code = 0;
+    if (!unsigned_member(accessor, pointer, "byteOffset", 0, kMaxMeshFileBytes, offset, failure) ||
+        !unsigned_member(accessor, pointer, "count", 0, std::uint64_t(kMaxMeshVertices), count,
+                         failure) ||
+        !unsigned_member(accessor, pointer, "componentType", 0, 1u << 16, type_code, failure)) {
+      return false;
+    }
+    const std::uint64_t bytes = component_bytes(std::int64_t(type_code));
+    const std::uint64_t components = accessor.contains("type") && accessor["type"].is_string()
+                                         ? type_components(accessor["type"].get<std::string>())
+                                         : 0;
+    if (bytes == 0 || components == 0 || count == 0) {
+      failure = {pointer,
+                 "an accessor needs a componentType, a type (SCALAR ... MAT4) and a "
+                 "count of at least 1"};
+      return false;
+    }
+    if (!accessor.contains("bufferView")) {
+      continue;
+    }
+    const json& view = document["bufferViews"][accessor["bufferView"].get<size_t>()];
+    const std::uint64_t element = bytes * components;
+    const std::uint64_t stride = view.value("byteStride", std::uint64_t(0));
+    if (stride != 0 && stride < element) {
+      failure = {pointer, "its buffer view's byteStride " + std::to_string(stride) +
+                              " is below the element's " + std::to_string(element) + " bytes"};
+      return false;
+    }
+    const std::uint64_t end = offset + (stride ? stride : element) * (count - 1) + element;
+    const std::uint64_t length = views[accessor["bufferView"].get<size_t>()];
+    if (end > length) {
+      failure = {pointer, std::to_string(count) + " elements end at byte " + std::to_string(end) +
+                              ", beyond its buffer view's " + std::to_string(length)};
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string decode_uri(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    const auto hex = [](char c) {
+      return c >= '0' && c <= '9'   ? c - '0'
+             : c >= 'a' && c <= 'f' ? c - 'a' + 10
+             : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                    : -1;
+    };
+    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
+      out += char(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+bool check_gltf_json(const nlohmann::json& document, const std::string& folder,
+                     std::int64_t bin_bytes, CheckFailure& failure) {
+  if (!document.is_object()) {
+    failure = {"", "the document is not a JSON object"};
+    return false;
+  }
+  std::vector<std::uint64_t> buffers, views;
+  return check_array_sizes(document, failure) && check_references(document, failure) &&
+         check_node_forest(document, failure) &&
+         check_buffers(document, folder, bin_bytes, buffers, failure) &&
+         check_buffer_views(document, buffers, views, failure) &&
+         check_accessors(document, views, failure);
+}
+
+}  // namespace gfield

@@ -1,0 +1,341 @@
+#include "geometry/gltf_document.hpp"
+
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "geometry/gltf_checks.hpp"
+#include "geometry/gltf_mesh.hpp"
+#include "gfield/file_read.hpp"
+#include "gfield/limits.hpp"
+#include "gfield/located_json.hpp"
+#include "gfield/printable.hpp"
+
+namespace gfield {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::uint32_t little_endian_u32(const std::string& data, size_t offset) {
+  const auto* b = reinterpret_cast<const unsigned char*>(data.data() + offset);
+  return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
+         std::uint32_t(b[3]) << 24;
+}
+
+/// The .glb container: a 12-byte header ("glTF", version 2, the file's length), a JSON chunk and
+/// an optional BIN chunk, each an 8-byte header (length, type) and its bytes, all within the
+/// file. `json` receives the JSON chunk, `bin_bytes` the BIN chunk's length (0: none).
+bool read_glb_container(const std::string& data, std::string& json, std::int64_t& bin_bytes,
+                        std::string& what) {
+  if (data.size() < 20 || data.compare(0, 4, "glTF") != 0) {
+    what = data.size() < 20 ? "truncated .glb (" + std::to_string(data.size()) +
+                                  " bytes; a header and a JSON chunk need at least 20)"
+                            : "not a binary glTF file (no \"glTF\" magic)";
+    return false;
+  }
+  const std::uint32_t version = little_endian_u32(data, 4), length = little_endian_u32(data, 8);
+  const std::uint32_t json_length = little_endian_u32(data, 12);
+  if (version != 2 || length != data.size() || little_endian_u32(data, 16) != 0x4E4F534Au ||
+      json_length == 0 || json_length % 4 != 0 || std::uint64_t(json_length) + 20 > data.size()) {
+    what = version != 2 ? "binary glTF version " + std::to_string(version) + " (expected 2)"
+           : length != data.size()
+               ? "the header says " + std::to_string(length) + " bytes, the file has " +
+                     std::to_string(data.size()) + " (truncated or padded)"
+               : "the first chunk is not a JSON chunk within the file, padded to 4 bytes";
+    return false;
+  }
+  json = data.substr(20, json_length);
+  const std::uint64_t bin = 20 + std::uint64_t(json_length);
+  bin_bytes = 0;
+  if (bin + 8 <= data.size()) {
+    const std::uint64_t bin_length = little_endian_u32(data, size_t(bin));
+    if (little_endian_u32(data, size_t(bin) + 4) != 0x004E4942u ||
+        bin + 8 + bin_length > data.size()) {
+      what = "the second chunk is not a BIN chunk within the file (truncated?)";
+      return false;
+    }
+    bin_bytes = std::int64_t(bin_length);
+  }
+  return true;
+}
+
+/// tinygltf's file access: only below the glTF file's folder, at most kMaxMeshFileBytes.
+struct FileAccess {
+  std::string folder;  ///< with a trailing separator
+};
+
+bool file_exists(const std::string& path, void* user) {
+  const auto* access = static_cast<const FileAccess*>(user);
+  std::error_code ec;
+  return path.rfind(access->folder, 0) == 0 && fs::is_regular_file(path, ec);
+}
+
+std::string expand_path(const std::string& path, void*) {
+  return path;
+}
+
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                     void*) {
+  std::string data;
+  if (!read_file(path, kMaxMeshFileBytes, data, *err)) {
+    return false;
+  }
+  out->assign(data.begin(), data.end());
+  return true;
+}
+
+bool refuse_write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  *err = "gfield does not write through tinygltf";
+  return false;
+}
+
+/// Keeps an embedded image's bytes as they are (gfield decodes them: mesh textures). The byte
+/// range was checked against its buffer before tinygltf read the file.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + size);
+  image->as_is = true;
+  return true;
+}
+
+/// tinygltf's first error line, printable.
+std::string first_line(const std::string& text) {
+  return printable(text.substr(0, text.find('\n')));
+}
+
+bool parse_with_tinygltf(const std::string& data, const std::string& json, bool binary,
+                         GltfDocument& document, std::string& error) {
+  FileAccess access{(fs::absolute(document.file).parent_path() / "").string()};
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(keep_image_bytes, nullptr);
+  loader.SetFsCallbacks({file_exists, expand_path, read_whole_file, refuse_write, &access});
+  std::string err, warn;
+  const bool ok =
+      binary ? loader.LoadBinaryFromMemory(&document.model, &err, &warn,
+                                           reinterpret_cast<const unsigned char*>(data.data()),
+                                           unsigned(data.size()), access.folder)
+             : loader.LoadASCIIFromString(&document.model, &err, &warn, json.data(),
+                                          unsigned(json.size()), access.folder);
+  if (!ok) {
+    error = document.file + ": " + (err.empty() ? "tinygltf refused the file" : first_line(err));
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool load_gltf_document(const std::string& filename, GltfDocument& document, std::string& error) {
+  std::string data, json;
+  if (!read_file(filename, kMaxMeshFileBytes, data, error)) {
+    return false;
+  }
+  std::string extension = fs::path(filename).extension().string();
+  for (char& c : extension)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  const bool binary = extension == ".glb" || data.compare(0, 4, "glTF") == 0;
+  std::int64_t bin_bytes = -1;
+  if (binary && !read_glb_container(data, json, bin_bytes, error)) {
+    error = filename + ": " + error;
+    return false;
+  }
+  LocatedJson located;
+  std::string parse_error;
+  if (!parse_located_json(binary ? json : data, located, parse_error)) {
+    error = filename + ":" + printable(parse_error);
+    return false;
+  }
+  CheckFailure failure;
+  if (!check_gltf_json(located.value, fs::path(filename).parent_path().string(), bin_bytes,
+                       failure)) {
+    const JsonLocation where = located.at(failure.pointer);
+    error = filename + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
+            ": " + printable(failure.pointer + ": " + failure.what);
+    return false;
+  }
+  document = GltfDocument{};
+  document.file = filename;
+  document.json = std::move(located.value);
+  return parse_with_tinygltf(data, binary ? json : data, binary, document, error);
+}
+
+std::vector<std::string> gltf_external_files(const std::string& filename) {
+  std::string data, json, ignored;
+  std::int64_t bin_bytes = 0;
+  if (!read_file(filename, kMaxMeshFileBytes, data, ignored) ||
+      (data.compare(0, 4, "glTF") == 0 && !read_glb_container(data, json, bin_bytes, ignored))) {
+    return {};
+  }
+  const nlohmann::json document = nlohmann::json::parse(json.empty() ? data : json, nullptr, false);
+  std::vector<std::string> files;
+  for (const char* kind : {"buffers", "images"}) {
+    if (!document.is_object() || !document.contains(kind) || !document[kind].is_array())
+      continue;
+    for (const nlohmann::json& item : document[kind]) {
+      const nlohmann::json* uri = json_at(item, {"uri"});
+      if (uri != nullptr && uri->is_string() && uri->get<std::string>().rfind("data:", 0) != 0)
+        files.push_back((fs::path(filename).parent_path() / decode_uri(uri->get<std::string>()))
+                            .lexically_normal()
+                            .string());
+    }
+  }
+  return files;
+}
+
+int accessor_components(const tinygltf::Accessor& accessor) {
+  switch (accessor.type) {
+    case TINYGLTF_TYPE_SCALAR:
+      return 1;
+    case TINYGLTF_TYPE_VEC2:
+      return 2;
+    case TINYGLTF_TYPE_VEC3:
+      return 3;
+    case TINYGLTF_TYPE_VEC4:
+      return 4;
+    case TINYGLTF_TYPE_MAT2:
+      return 4;
+    case TINYGLTF_TYPE_MAT3:
+      return 9;
+    case TINYGLTF_TYPE_MAT4:
+      return 16;
+    default:
+      return 1;
+  }
+}
+
+namespace {
+
+/// Component `k` of element `e` of `accessor` as a double (normalised when asked).
+double component(const unsigned char* base, const tinygltf::Accessor& accessor) {
+  const auto load = [&](auto v) {
+    std::memcpy(&v, base, sizeof(v));
+    return v;
+  };
+  const bool n = accessor.normalized;
+  switch (accessor.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+      return n ? std::max(double(load(std::int8_t())) / 127.0, -1.0) : load(std::int8_t());
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return n ? double(load(std::uint8_t())) / 255.0 : load(std::uint8_t());
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+      return n ? std::max(double(load(std::int16_t())) / 32767.0, -1.0) : load(std::int16_t());
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return n ? double(load(std::uint16_t())) / 65535.0 : load(std::uint16_t());
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      return load(std::uint32_t());
+    default:
+      return load(float());
+  }
+}
+
+/// Calls visit(element, component, value) for every value of accessor `index` (zeros without a
+/// buffer view; sparse accessors are refused by the callers).
+template <class Visit>
+void for_each_value(const GltfDocument& document, int index, Visit visit) {
+  const tinygltf::Accessor& accessor = document.model.accessors[size_t(index)];
+  const int components = accessor_components(accessor);
+  if (accessor.bufferView < 0) {
+    for (size_t e = 0; e < accessor.count; ++e)
+      for (int k = 0; k < components; ++k)
+        visit(e, k, 0.0);
+    return;
+  }
+  const tinygltf::BufferView& view = document.model.bufferViews[size_t(accessor.bufferView)];
+  const tinygltf::Buffer& buffer = document.model.buffers[size_t(view.buffer)];
+  const size_t bytes = size_t(tinygltf::GetComponentSizeInBytes(accessor.componentType));
+  const size_t stride = view.byteStride ? view.byteStride : bytes * size_t(components);
+  const unsigned char* base = buffer.data.data() + view.byteOffset + accessor.byteOffset;
+  for (size_t e = 0; e < accessor.count; ++e)
+    for (int k = 0; k < components; ++k)
+      visit(e, k, component(base + e * stride + size_t(k) * bytes, accessor));
+}
+
+}  // namespace
+
+std::vector<float> read_accessor_floats(const GltfDocument& document, int index) {
+  const tinygltf::Accessor& accessor = document.model.accessors[size_t(index)];
+  const int components = accessor_components(accessor);
+  std::vector<float> values(accessor.count * size_t(components));
+  for_each_value(document, index, [&](size_t e, int k, double v) {
+    values[e * size_t(components) + size_t(k)] = float(v);
+  });
+  return values;
+}
+
+std::vector<std::int64_t> read_accessor_integers(const GltfDocument& document, int index) {
+  const tinygltf::Accessor& accessor = document.model.accessors[size_t(index)];
+  std::vector<std::int64_t> values(accessor.count);
+  for_each_value(document, index,
+                 [&](size_t e, int k, double v) { values[e] = k == 0 ? std::int64_t(v) : 0; });
+  return values;
+}
+
+glm::dmat4 node_matrix(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    glm::dmat4 m;
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        m[c][r] = node.matrix[size_t(c * 4 + r)];
+    return m;
+  }
+  glm::dmat4 m(1.0);
+  if (node.translation.size() == 3)
+    m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+  if (node.rotation.size() == 4) {  // x, y, z, w
+    const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+    m = m * glm::mat4_cast(glm::normalize(q));
+  }
+  if (node.scale.size() == 3)
+    m = m * glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+  return m;
+}
+
+bool scene_nodes(const GltfDocument& document, std::vector<PlacedNode>& placed,
+                 std::string& error) {
+  const tinygltf::Model& model = document.model;
+  std::vector<int> roots;
+  const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+  if (size_t(scene) < model.scenes.size()) {
+    roots = model.scenes[size_t(scene)].nodes;
+  } else {
+    std::vector<char> child(model.nodes.size(), 0);
+    for (const tinygltf::Node& node : model.nodes)
+      for (int c : node.children)
+        child[size_t(c)] = 1;
+    for (size_t n = 0; n < model.nodes.size(); ++n)
+      if (!child[n])
+        roots.push_back(int(n));
+  }
+  placed.clear();
+  for (const int root : roots)
+    placed.push_back({root, node_matrix(model.nodes[size_t(root)])});
+  // Breadth-first: the forest was checked (no cycle, one parent each); a scene may list a root
+  // more than once, so the count is bounded.
+  for (size_t next = 0; next < placed.size(); ++next) {
+    const PlacedNode parent = placed[next];
+    for (const int child : model.nodes[size_t(parent.node)].children)
+      placed.push_back({child, parent.world * node_matrix(model.nodes[size_t(child)])});
+    if (placed.size() > kMaxGltfElements) {
+      error = document.file + ": the scene places more than " + std::to_string(kMaxGltfElements) +
+              " nodes";
+      return false;
+    }
+  }
+  return true;
+}
+
+const nlohmann::json* json_at(const nlohmann::json& object,
+                              std::initializer_list<const char*> keys) {
+  const nlohmann::json* value = &object;
+  for (const char* key : keys) {
+    if (!value->is_object() || !value->contains(key))
+      return nullptr;
+    value = &(*value)[key];
+  }
+  return value;
+}
+
+}  // namespace gfield

@@ -1,0 +1,69 @@
+#pragma once
+// A glTF 2.0 file (.gltf with its buffers and images, or .glb) read by Debian's tinygltf after
+// gfield has checked what tinygltf trusts: the .glb container (header, chunk lengths against the
+// file), the JSON (strict, at most kMaxJsonDepth deep, arrays of at most kMaxGltfElements), every
+// index into another array (scene, nodes, meshes, accessors, buffer views, buffers, materials,
+// textures, images, samplers, cameras, lights, skins, animations), the node hierarchy (a forest:
+// one parent at most, no cycle), the external buffers (present, of their byteLength), then
+// every buffer view within its buffer and every accessor within its view. Internal to
+// geometry's glTF code (gltf_mesh.cpp, gltf_scene.cpp); tiny_gltf.h is included here only.
+
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+namespace gfield {
+
+struct GltfDocument {
+  std::string file;       ///< the glTF file
+  tinygltf::Model model;  ///< every index checked (see above)
+  nlohmann::json json;    ///< the document's JSON: extensions and extras are read from it
+};
+
+/// Reads and checks `filename`. False with a one-line error "FILE: problem" (JSON problems:
+/// "FILE:LINE:COLUMN: path: problem"; for a .glb, lines count in its JSON chunk).
+bool load_gltf_document(const std::string& filename, GltfDocument& document, std::string& error);
+
+/// The `components` floats of each of accessor `index`'s elements (normalised integers mapped to
+/// [0, 1] or [-1, 1], plain integers converted), `count * components` values. An accessor without
+/// a buffer view reads as zeros.
+std::vector<float> read_accessor_floats(const GltfDocument& document, int index);
+/// The elements of scalar integer accessor `index` (indices).
+std::vector<std::int64_t> read_accessor_integers(const GltfDocument& document, int index);
+/// Components per element of an accessor's type (SCALAR 1 ... MAT4 16).
+int accessor_components(const tinygltf::Accessor& accessor);
+
+/// The local matrix of node `node` (its matrix, or T * R * S).
+glm::dmat4 node_matrix(const tinygltf::Node& node);
+
+/// The nodes of the document's scene (its "scene", else scene 0; without scenes, every node
+/// without a parent), each with its world matrix, parents before children. glTF is +Y up,
+/// right-handed, like gfield's world.
+struct PlacedNode {
+  int node = -1;
+  glm::dmat4 world{1.0};
+};
+/// False with "FILE: problem" when the scene places more than kMaxGltfElements nodes.
+bool scene_nodes(const GltfDocument& document, std::vector<PlacedNode>& placed, std::string& error);
+
+struct MeshAppearance;
+
+/// Materials and textures of `appearance` (whose corner uvs, vertex colours and face materials,
+/// indices of glTF materials, the primitives filled): one BaseColorMaterial per glTF material
+/// (baseColorFactor's rgb, and for the materials the faces use, their baseColorTexture's image),
+/// the images used decoded (embedded
+/// bytes that are no image: an error "FILE: images[I]: problem"; a missing external image:
+/// mid-grey and a warning). Attributes no primitive had (`any_*` false) are dropped.
+bool gltf_appearance(const GltfDocument& document, bool any_uv, bool any_color, bool any_material,
+                     MeshAppearance& appearance, std::vector<std::string>& warnings,
+                     std::string& error);
+
+/// `"KEY"` of JSON object `object` at path `keys` (e.g. {"extensions",
+/// "KHR_materials_ior", "ior"}), or null.
+const nlohmann::json* json_at(const nlohmann::json& object,
+                              std::initializer_list<const char*> keys);
+
+}  // namespace gfield
