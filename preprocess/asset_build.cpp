@@ -86,10 +86,15 @@ nlohmann::json image_options_to_json(const GeometryImageOptions& o) {
 }
 
 nlohmann::json asset_options_to_json(const AssetOptions& o) {
-  return {{"image", image_options_to_json(o.image)},
-          {"samples_per_side", o.samples_per_side},
-          {"field_precision", o.field_precision == ExrPrecision::kHalf ? "half" : "float"},
-          {"verify_rays", o.verify_rays}};
+  nlohmann::json options = {
+      {"image", image_options_to_json(o.image)},
+      {"samples_per_side", o.samples_per_side},
+      {"field_precision", o.field_precision == ExrPrecision::kHalf ? "half" : "float"},
+      {"verify_rays", o.verify_rays}};
+  if (!o.part.empty()) {
+    options["mesh"] = printable(o.part);
+  }
+  return options;
 }
 
 bool asset_build_inputs(const std::string& mesh_path, const AssetOptions& options,
@@ -99,13 +104,14 @@ bool asset_build_inputs(const std::string& mesh_path, const AssetOptions& option
 
 namespace {
 
-/// The geometry image and its parameterised mesh of `mesh` into the staged files.
-bool write_image_files(const TriangleMesh& mesh, const std::string& mesh_path,
-                       const AssetOptions& options, const std::string& build_id,
-                       const AssetFiles& staged, GeometryImage& image, ParameterizedMesh& pm,
-                       nlohmann::json& report, std::string& error) {
+/// The geometry image (with the albedo of `appearance`) and its parameterised mesh of `mesh` into
+/// the staged files.
+bool write_image_files(const TriangleMesh& mesh, const MeshAppearance& appearance,
+                       const std::string& mesh_path, const AssetOptions& options,
+                       const std::string& build_id, const AssetFiles& staged, GeometryImage& image,
+                       ParameterizedMesh& pm, nlohmann::json& report, std::string& error) {
   GeometryImageReport image_report;
-  if (!build_geometry_image(mesh, options.image, image, pm, image_report, error)) {
+  if (!build_geometry_image(mesh, options.image, image, pm, image_report, error, &appearance)) {
     error = mesh_path + ": " + error;
     return false;
   }
@@ -134,7 +140,9 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
     return check_field_size(options.samples_per_side, true, error);
   }
   TriangleMesh mesh;
-  if (!load_mesh(mesh_path, mesh, error)) {
+  MeshAppearance appearance;
+  std::vector<std::string> warnings;
+  if (!load_mesh(MeshSource{mesh_path, options.part}, mesh, &appearance, warnings, error)) {
     return false;
   }
   AssetStaging staging;
@@ -148,12 +156,19 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
   report["source_path"] = printable(std::filesystem::absolute(mesh_path).string());
   report["build_id"] = inputs.build_id;
   report["inputs"] = inputs.record;
+  if (!options.part.empty()) {
+    report["mesh_part"] = printable(options.part);
+  }
+  report["warnings"] = nlohmann::json::array();
+  for (const std::string& w : warnings) {
+    report["warnings"].push_back(printable(w));
+  }
   report["topology"] = topology_to_json(analyze_topology(mesh));
 
   GeometryImage image;
   ParameterizedMesh pm;
-  if (!write_image_files(mesh, mesh_path, options, inputs.build_id, staged, image, pm, report,
-                         error)) {
+  if (!write_image_files(mesh, appearance, mesh_path, options, inputs.build_id, staged, image, pm,
+                         report, error)) {
     return false;
   }
   FieldFileReport field_report;
@@ -169,6 +184,7 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
     VerifyOptions verify;
     verify.rays = options.verify_rays;
     verify.original = mesh_path;
+    verify.original_part = options.part;
     nlohmann::json accuracy;
     if (!verify_asset_files(staged, name, verify, accuracy, error)) {
       return false;

@@ -35,6 +35,8 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
                       std::string& error);
 
 struct AssetOptions {
+  /// glTF: which of its meshes (MeshSource::part; "" the whole file). Hashed into the build id.
+  std::string part;
   GeometryImageOptions image;  ///< size 512 by default
   int samples_per_side = 24;
   ExrPrecision field_precision = ExrPrecision::kHalf;
@@ -51,9 +53,11 @@ bool asset_build_inputs(const std::string& mesh_path, const AssetOptions& option
                         BuildInputs& inputs, std::string& error);
 
 /// Builds asset `name` (DIR/NAME) from `mesh_path` whose inputs are `inputs`: topology, geometry
-/// image, field, accuracy. All four files carry inputs.build_id and are written into a staging
-/// folder, then published together (asset_staging.hpp); the report records the build id and the
-/// hashed inputs. False with an error "FILE: problem", and the old asset untouched.
+/// image (with the mesh's albedo), field, accuracy. All four files carry inputs.build_id and are
+/// written into a staging folder, then published together (asset_staging.hpp); the report
+/// records the build id, the hashed inputs, the glTF mesh ("mesh_part") and the mesh's warnings
+/// ("warnings": a missing texture, ...). False with an error "FILE: problem", and the old asset
+/// untouched.
 bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
                  const BuildInputs& inputs, nlohmann::json& report, std::string& error);
 

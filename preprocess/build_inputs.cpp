@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "geometry/gltf_mesh.hpp"
 #include "gfield/content_hash.hpp"
 #include "gfield/printable.hpp"
 
@@ -14,7 +15,8 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Scheme of the hashed record; bump when what it holds changes meaning.
-constexpr int kBuildIdScheme = 1;
+/// 2: geometry images hold the mesh's albedo (format version 2).
+constexpr int kBuildIdScheme = 2;
 
 /// MTL keys whose last token names a texture file.
 constexpr const char* kTextureKeys[] = {"map_Ka", "map_Kd",   "map_Ks", "map_Ke", "map_Ns",
@@ -54,6 +56,19 @@ std::vector<std::string> mesh_texture_files(const std::string& mesh_path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   std::vector<std::string> files;
+  if (ext == ".gltf" || ext == ".glb") {
+    return gltf_external_files(mesh_path);
+  }
+  if (ext == ".ply") {  // "comment TextureFile NAME" in the header
+    std::ifstream in(mesh_path, std::ios::binary);
+    for (std::string line; std::getline(in, line) && line.rfind("end_header", 0) != 0;) {
+      const std::vector<std::string> t = tokens(line);
+      if (t.size() >= 3 && t[0] == "comment" && t[1] == "TextureFile") {
+        files.push_back((fs::path(mesh_path).parent_path() / t[2]).string());
+      }
+    }
+    return files;
+  }
   if (ext != ".obj") {
     return files;
   }

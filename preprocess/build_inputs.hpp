@@ -23,7 +23,8 @@ struct BuildInputs {
 };
 
 /// The texture files a mesh names, as paths relative to the working folder: for an OBJ, its
-/// mtllib files and the maps (map_Kd, bump, ...) they name; none for other formats. Files that
+/// mtllib files and the maps (map_Kd, bump, ...) they name; for a glTF file, its external
+/// buffers and images; for a PLY, its "comment TextureFile" files; none for OFF and STL. Files that
 /// do not exist are listed too (their appearance changes the build).
 std::vector<std::string> mesh_texture_files(const std::string& mesh_path);
 

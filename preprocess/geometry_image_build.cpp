@@ -364,12 +364,16 @@ bool parameterize_pieces(const TriangleMesh& mesh, std::vector<Component>& compo
   return true;
 }
 
-/// The parameterised mesh: the charted faces with compact vertices (corner uvs come later).
-ParameterizedMesh charted_mesh(const TriangleMesh& mesh, const std::vector<Component>& components) {
+/// The parameterised mesh: the charted faces with compact vertices (corner uvs come later) and
+/// the input face of each.
+ParameterizedMesh charted_mesh(const RepairedMesh& repaired,
+                               const std::vector<Component>& components) {
+  const TriangleMesh& mesh = repaired.mesh;
   ParameterizedMesh parameterized;
   std::vector<int> compact(mesh.positions.size(), -1);
   for (const Component& c : components)
     for (int f : c.faces) {
+      parameterized.source_face.push_back(repaired.source_face[size_t(f)]);
       glm::ivec3 t;
       for (int k = 0; k < 3; ++k) {
         int& v = compact[mesh.triangles[f][k]];
@@ -386,10 +390,12 @@ ParameterizedMesh charted_mesh(const TriangleMesh& mesh, const std::vector<Compo
 
 /// Rasterises the packed charts into `image` (its box: the padded bounds of the charted mesh)
 /// and gives the parameterised mesh its corner uvs.
-void rasterize_image(const TriangleMesh& mesh, const std::vector<Component>& components,
+void rasterize_image(const RepairedMesh& repaired, const std::vector<Component>& components,
                      std::vector<Chart>& charts, const std::vector<ChartRect>& rects,
-                     const GeometryImageOptions& options, GeometryImage& image,
-                     ParameterizedMesh& parameterized, GeometryImageReport& report) {
+                     const GeometryImageOptions& options, const AlbedoSource* albedo,
+                     GeometryImage& image, ParameterizedMesh& parameterized,
+                     GeometryImageReport& report) {
+  const TriangleMesh& mesh = repaired.mesh;
   std::vector<RasterChart> raster(components.size());
   for (size_t c = 0; c < components.size(); ++c) {
     raster[c].faces = components[c].faces;
@@ -398,13 +404,13 @@ void rasterize_image(const TriangleMesh& mesh, const std::vector<Component>& com
     raster[c].rect = rects[c];
     report.charts[c].rect = rects[c];
   }
-  parameterized = charted_mesh(mesh, components);
+  parameterized = charted_mesh(repaired, components);
   std::vector<glm::vec3> box_points(parameterized.mesh.positions.begin(),
                                     parameterized.mesh.positions.end());
   image.box = padded_bounds(box_points.data(), box_points.size(), kBoxPadding);
   const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
   std::vector<glm::vec2> face_uv;
-  rasterize_charts(mesh, normals, raster, options.size, image.box, image, face_uv);
+  rasterize_charts(mesh, normals, raster, options.size, image.box, albedo, image, face_uv);
   for (const Component& c : components)
     for (int f : c.faces)
       for (int k = 0; k < 3; ++k)
@@ -513,11 +519,26 @@ void measure_image(const TriangleMesh& input, const GeometryImage& image,
       report.diagonal);
 }
 
+/// "1 texture, 2 materials, vertex colours": what `appearance`'s base colour is made of.
+std::string albedo_summary(const MeshAppearance& appearance) {
+  std::string text;
+  const auto add = [&](size_t n, const char* what) {
+    if (n > 0)
+      text += (text.empty() ? "" : ", ") + std::to_string(n) + " " + what + (n > 1 ? "s" : "");
+  };
+  add(appearance.textures.size(), "texture");
+  add(appearance.materials.size(), "material");
+  if (!appearance.vertex_color.empty())
+    text += std::string(text.empty() ? "" : ", ") + "vertex colours";
+  return text;
+}
+
 }  // namespace
 
 bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions& options,
                           GeometryImage& image, ParameterizedMesh& parameterized,
-                          GeometryImageReport& report, std::string& error) {
+                          GeometryImageReport& report, std::string& error,
+                          const MeshAppearance* appearance) {
   const auto start = Clock::now();
   report = {};
   if (!check_build_input(input, options, error))
@@ -542,7 +563,13 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
     return false;
   report.seconds.pack = seconds_since(stage);
   stage = Clock::now();
-  rasterize_image(repaired.mesh, components, charts, rects, options, image, parameterized, report);
+  const MeshAppearance none;
+  const bool albedo = appearance != nullptr && carries_base_color(*appearance);
+  const AlbedoSource source(input, albedo ? *appearance : none, repaired.mesh,
+                            repaired.source_face);
+  report.albedo = albedo ? albedo_summary(*appearance) : "none";
+  rasterize_image(repaired, components, charts, rects, options, albedo ? &source : nullptr, image,
+                  parameterized, report);
   report.route = route_summary(report.charts);
   report.seconds.rasterize = seconds_since(stage);
   stage = Clock::now();
@@ -597,6 +624,7 @@ nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
       {"flipped_faces", r.flipped},
       {"degenerate_uv_faces", r.degenerate},
       {"coverage", r.coverage},
+      {"albedo", r.albedo},
       {"conformal_distortion", {{"mean", r.conformal_mean}, {"p95", r.conformal_p95}}},
       {"area_distortion", {{"p5", r.area_p5}, {"p50", r.area_p50}, {"p95", r.area_p95}}},
       {"reconstruction_error",
@@ -644,6 +672,7 @@ std::string geometry_image_report_to_text(const GeometryImageReport& r) {
       rep.holes_fair_failed ? ", some unfaired" : "");
   add("uv faces: %zu flipped, %zu degenerate", r.flipped, r.degenerate);
   add("coverage: %.2f%% of the texels", 100.0 * r.coverage);
+  add("albedo: %s", r.albedo.c_str());
   add("conformal distortion (sigma1/sigma2): mean %.3f, p95 %.3f", r.conformal_mean,
       r.conformal_p95);
   add("area distortion (uv share / surface share): p5 %.3g, p50 %.3g, p95 %.3g", r.area_p5,

@@ -8,10 +8,11 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "gfield/geometry_image.hpp"
-#include "preprocess/chart_packing.hpp"
+#include "geometry/mesh_appearance.hpp"
 #include "geometry/mesh_io.hpp"
 #include "geometry/parameterized_mesh.hpp"
+#include "gfield/geometry_image.hpp"
+#include "preprocess/chart_packing.hpp"
 #include "preprocess/repair.hpp"
 
 namespace gfield {
@@ -86,15 +87,20 @@ struct GeometryImageReport {
   ErrorStats mesh_to_image;  ///< input surface -> image surface
   ErrorStats image_to_mesh;  ///< image surface -> input surface
   double diagonal = 0.0;     ///< input bounding-box diagonal (mesh units)
+  /// What the albedo was resampled from: "none", or e.g. "1 texture, 2 materials".
+  std::string albedo = "none";
   StageTimes seconds;
 };
 
 /// Builds the geometry image of `input` (as loaded). `image.source` is left for the caller.
 /// `parameterized` receives the repaired mesh (kept components) with every corner's image uv.
+/// With `appearance` (input's, mesh_appearance.hpp) carrying a base colour, image.albedo is the
+/// base colour resampled at every texel (docs/geometry-image.md, "Albedo").
 /// False with an error in words (no file name) for input it cannot handle.
 bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions& options,
                           GeometryImage& image, ParameterizedMesh& parameterized,
-                          GeometryImageReport& report, std::string& error);
+                          GeometryImageReport& report, std::string& error,
+                          const MeshAppearance* appearance = nullptr);
 
 /// The surface of a geometry image: texel positions, two triangles per grid quad whose four
 /// texels are all covered.

@@ -61,16 +61,36 @@ std::vector<ChartTransform> orbifold_copies(glm::dvec2 lo, glm::dvec2 hi) {
 
 namespace {
 
-/// Writes the texels whose centres lie in triangle `t` (its image positions q, texels, counter-
-/// clockwise) of the chart's `rect`, where it holds the centre more firmly than what is there:
-/// `best` per texel is the smallest barycentric weight of the triangle that wrote it.
-void rasterize_triangle(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
-                        const glm::ivec3& t, const glm::dvec2 q[3], const ChartRect& rect,
-                        GeometryImage& image, std::vector<double>& best) {
+/// Barycentric weights of point `c` in the triangle `q` of area `area` (twice the area).
+glm::dvec3 barycentric(const glm::dvec2 q[3], glm::dvec2 c, double area) {
+  return glm::dvec3(cross(q[1] - c, q[2] - c), cross(q[2] - c, q[0] - c),
+                    cross(q[0] - c, q[1] - c)) /
+         area;
+}
+
+/// What one triangle is rasterised from: the mesh, its normals, the albedo source (or null).
+struct RasterSource {
+  const TriangleMesh& mesh;
+  const std::vector<glm::dvec3>& normals;
+  const AlbedoSource* albedo;
+};
+
+/// Per texel: the smallest barycentric weight of the triangle that wrote it, and whether its
+/// albedo is known (not a hole-filling face).
+struct RasterState {
+  std::vector<double> best;
+  std::vector<char> albedo_known;
+};
+
+/// Writes the texels whose centres lie in face `face` (its image positions q, texels, counter-
+/// clockwise) of the chart's `rect`, where it holds the centre more firmly than what is there.
+void rasterize_triangle(const RasterSource& source, int face, const glm::dvec2 q[3],
+                        const ChartRect& rect, GeometryImage& image, RasterState& state) {
   const double tolerance = 1e-6;
   const double area = cross(q[1] - q[0], q[2] - q[0]);
   if (!(area > 0.0))
     return;  // degenerate in uv: its neighbours cover its texels
+  const glm::ivec3& t = source.mesh.triangles[size_t(face)];
   const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2]));
   const glm::dvec2 hi = glm::max(q[0], glm::max(q[1], q[2]));
   const int i0 = std::max(rect.x, int(std::ceil(lo.x - 0.5)));
@@ -80,23 +100,57 @@ void rasterize_triangle(const TriangleMesh& mesh, const std::vector<glm::dvec3>&
   for (int j = j0; j <= j1; ++j)
     for (int i = i0; i <= i1; ++i) {
       const glm::dvec2 c(i + 0.5, j + 0.5);
-      glm::dvec3 w(cross(q[1] - c, q[2] - c), cross(q[2] - c, q[0] - c), cross(q[0] - c, q[1] - c));
-      w /= area;
+      glm::dvec3 w = barycentric(q, c, area);
       const double weakest = std::min(w.x, std::min(w.y, w.z));
       const size_t texel = size_t(j) * size_t(image.size) + size_t(i);
-      if (weakest < -tolerance || weakest <= best[texel])
+      if (weakest < -tolerance || weakest <= state.best[texel])
         continue;
-      best[texel] = weakest;
+      state.best[texel] = weakest;
+      if (source.albedo != nullptr) {
+        const glm::dvec3 di = barycentric(q, c + glm::dvec2(1.0, 0.0), area) - w;
+        const glm::dvec3 dj = barycentric(q, c + glm::dvec2(0.0, 1.0), area) - w;
+        state.albedo_known[texel] =
+            source.albedo->sample(face, w, di, dj, image.albedo[texel]) ? 1 : 0;
+      }
       w = glm::max(w, glm::dvec3(0.0));
       w /= w.x + w.y + w.z;
-      const glm::dvec3 p =
-          w.x * mesh.positions[t[0]] + w.y * mesh.positions[t[1]] + w.z * mesh.positions[t[2]];
+      const std::vector<glm::dvec3>& p = source.mesh.positions;
+      const std::vector<glm::dvec3>& normals = source.normals;
       const glm::dvec3 n = w.x * normals[t[0]] + w.y * normals[t[1]] + w.z * normals[t[2]];
       const double length = glm::length(n);
-      image.position[texel] = glm::vec3(p);
+      image.position[texel] = glm::vec3(w.x * p[t[0]] + w.y * p[t[1]] + w.z * p[t[2]]);
       image.normal[texel] = length > 0.0 ? glm::vec3(n / length) : glm::vec3(0, 0, 1);
       image.coverage[texel] = 1.0f;
     }
+}
+
+/// Covered texels whose albedo is unknown (faces that fill holes) take that of the nearest
+/// known covered texel, breadth-first over covered 4-neighbours (mid-grey when none is known).
+void fill_unknown_albedo(GeometryImage& image, std::vector<char>& known) {
+  const int size = image.size;
+  const int di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};
+  std::deque<size_t> queue;
+  for (size_t texel = 0; texel < known.size(); ++texel)
+    if (known[texel] && image.coverage[texel] > 0.0f)
+      queue.push_back(texel);
+  while (!queue.empty()) {
+    const size_t texel = queue.front();
+    queue.pop_front();
+    const int i = int(texel % size_t(size)), j = int(texel / size_t(size));
+    for (int k = 0; k < 4; ++k) {
+      const int ni = i + di[k], nj = j + dj[k];
+      const size_t neighbour = size_t(nj) * size_t(size) + size_t(ni);
+      if (ni < 0 || nj < 0 || ni >= size || nj >= size || known[neighbour] ||
+          !(image.coverage[neighbour] > 0.0f))
+        continue;
+      known[neighbour] = 1;
+      image.albedo[neighbour] = image.albedo[texel];
+      queue.push_back(neighbour);
+    }
+  }
+  for (size_t texel = 0; texel < known.size(); ++texel)
+    if (!known[texel] && image.coverage[texel] > 0.0f)
+      image.albedo[texel] = glm::vec3(kMissingTextureGrey);
 }
 
 /// The chart's copies: itself, or the orbifold tiling's copies that meet the unit square.
@@ -175,6 +229,8 @@ std::deque<size_t> extrapolate_first_ring(GeometryImage& image, const Box& box) 
       image.position[texel] = image.position[nearest];
       image.normal[texel] = image.normal[nearest];
     }
+    if (!image.albedo.empty())
+      image.albedo[texel] = image.albedo[size_t(nearest)];
     ring.push_back(texel);
   }
   return ring;
@@ -205,6 +261,8 @@ void pad_image(GeometryImage& image, const Box& box) {
       filled[neighbour] = 1;
       image.position[neighbour] = image.position[texel];
       image.normal[neighbour] = image.normal[texel];
+      if (!image.albedo.empty())
+        image.albedo[neighbour] = image.albedo[texel];
       queue.push_back(neighbour);
     }
   }
@@ -214,16 +272,20 @@ void pad_image(GeometryImage& image, const Box& box) {
 
 void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
                       const std::vector<RasterChart>& charts, int size, const Box& box,
-                      GeometryImage& image, std::vector<glm::vec2>& face_uv) {
+                      const AlbedoSource* albedo, GeometryImage& image,
+                      std::vector<glm::vec2>& face_uv) {
   const size_t texels = size_t(size) * size_t(size);
   image.size = size;
   image.position.assign(texels, glm::vec3(0.0f));
   image.normal.assign(texels, glm::vec3(0.0f, 0.0f, 1.0f));
   image.coverage.assign(texels, 0.0f);
+  image.albedo.assign(albedo != nullptr ? texels : 0, glm::vec3(0.0f));
   face_uv.assign(3 * mesh.triangles.size(), glm::vec2(0.0f));
   // Per texel, the smallest barycentric weight of the triangle that wrote it: the triangle that
   // holds the centre most firmly wins (ties: the first).
-  std::vector<double> best(texels, -std::numeric_limits<double>::infinity());
+  RasterState state{std::vector<double>(texels, -std::numeric_limits<double>::infinity()),
+                    std::vector<char>(albedo != nullptr ? texels : 0, 0)};
+  const RasterSource source{mesh, normals, albedo};
   for (const RasterChart& chart : charts) {
     const ChartRect& rect = chart.rect;
     const std::vector<ChartTransform> copies = chart_copies(chart);
@@ -235,11 +297,13 @@ void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& n
         const glm::dvec2 q[3] = {to_texels(g(chart.corner_uv[3 * local])),
                                  to_texels(g(chart.corner_uv[3 * local + 1])),
                                  to_texels(g(chart.corner_uv[3 * local + 2]))};
-        rasterize_triangle(mesh, normals, mesh.triangles[chart.faces[local]], q, rect, image, best);
+        rasterize_triangle(source, chart.faces[local], q, rect, image, state);
       }
     }
     chart_corner_uvs(chart, copies, size, face_uv);
   }
+  if (albedo != nullptr)
+    fill_unknown_albedo(image, state.albedo_known);
   pad_image(image, box);
 }
 

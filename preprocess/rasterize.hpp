@@ -10,9 +10,10 @@
 
 #include <glm/glm.hpp>
 
-#include "gfield/geometry_image.hpp"
-#include "preprocess/chart_packing.hpp"
 #include "geometry/mesh_io.hpp"
+#include "gfield/geometry_image.hpp"
+#include "preprocess/albedo_resample.hpp"
+#include "preprocess/chart_packing.hpp"
 
 namespace gfield {
 
@@ -39,9 +40,12 @@ std::vector<ChartTransform> orbifold_copies(glm::dvec2 lo, glm::dvec2 hi);
 /// padding positions are clamped to `box`)
 /// and returns in `face_uv` (3F, F = mesh.triangles.size()) the image uv of every corner of the
 /// charts' faces (orbifold faces: the copy that holds the face's centroid in the chart square).
-/// `normals` are unit vertex normals of `mesh`.
+/// `normals` are unit vertex normals of `mesh`. With `albedo`, image.albedo too: each covered
+/// texel the base colour averaged over its footprint; texels of faces that fill holes the
+/// nearest such texel of their chart; padding as positions.
 void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
                       const std::vector<RasterChart>& charts, int size, const Box& box,
-                      GeometryImage& image, std::vector<glm::vec2>& face_uv);
+                      const AlbedoSource* albedo, GeometryImage& image,
+                      std::vector<glm::vec2>& face_uv);
 
 }  // namespace gfield

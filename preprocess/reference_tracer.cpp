@@ -15,6 +15,7 @@
 #include <mutex>
 
 #include "geometry/analytic_primitives.hpp"
+#include "geometry/mesh_appearance.hpp"
 #include "geometry/mesh_io.hpp"
 #include "geometry/outward_normals.hpp"
 #include "gfield/environment.hpp"
@@ -42,6 +43,7 @@ double unit_double(std::uint64_t x) {
 
 struct MeshRecord {
   TriangleMesh mesh;
+  MeshAppearance appearance;               ///< its own base colour (materials "texture": "mesh")
   std::vector<glm::dvec3> vertex_normals;  ///< angle-weighted, outward
   double orientation = 1.0;                ///< -1 when the file's winding points inwards
   RTCScene scene = nullptr;
@@ -64,7 +66,9 @@ struct SurfaceHit {
   glm::dvec3 geometric_normal{0.0};  ///< world, unit, outward
   glm::dvec3 shading_normal{0.0};    ///< world, unit, outward
   glm::dvec2 uv{0.0};
-  double epsilon = 0.0;  ///< offset for rays leaving this point
+  int face = -1;            ///< mesh hits: the triangle
+  glm::dvec3 weights{0.0};  ///< mesh hits: barycentric weights of its corners
+  double epsilon = 0.0;     ///< offset for rays leaving this point
 };
 
 struct Counters {
@@ -220,8 +224,11 @@ struct ReferenceTracer::Impl {
       rtcReleaseDevice(device);
   }
 
-  bool build_mesh(MeshRecord& record, const std::string& file, std::string& error) {
-    if (!load_mesh(file, record.mesh, error))
+  bool build_mesh(MeshRecord& record, const MeshAsset& asset, std::string& error) {
+    const std::string& file = asset.file;
+    std::vector<std::string> warnings;  // the tools print them when they read the scene
+    if (!load_mesh(MeshSource{asset.file, asset.part}, record.mesh, &record.appearance, warnings,
+                   error))
       return false;
     const TriangleMesh& mesh = record.mesh;
     record.orientation = outward_orientation(mesh);
@@ -268,7 +275,7 @@ struct ReferenceTracer::Impl {
     rtcSetSceneBuildQuality(top, RTC_BUILD_QUALITY_MEDIUM);
     meshes.resize(scene.meshes.size());
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
-      if (!build_mesh(meshes[m], scene.meshes[m].file, error))
+      if (!build_mesh(meshes[m], scene.meshes[m], error))
         return false;
     }
     glm::dvec3 lo(scene.camera.position), hi(scene.camera.position);
@@ -401,7 +408,9 @@ struct ReferenceTracer::Impl {
       if (glm::length(n) > 0.0)
         hit.shading_normal = glm::normalize(r.normal_to_world * n);
     }
-    hit.uv = glm::dvec2(0.0);
+    hit.face = int(prim);
+    hit.weights = glm::dvec3(w, u, v);
+    hit.uv = glm::dvec2(uv_at(m.appearance, prim, hit.weights));
     // Embree works in float: step well past its intersection error, relative to the object's
     // size and to the magnitude of the coordinates.
     hit.epsilon = 1e-5 * (r.diagonal + glm::length(hit.position));
@@ -414,9 +423,20 @@ struct ReferenceTracer::Impl {
     return {hit.position + side * hit.epsilon * hit.geometric_normal, direction};
   }
 
+  /// The albedo at a diffuse hit: the material's texture, or its colour times the mesh's own
+  /// base colour there (exact: the mesh's texture looked up at the hit's uv).
+  glm::dvec3 albedo_at(const SurfaceHit& hit) const {
+    const SceneObject& object = objects[size_t(hit.object)].object;
+    glm::dvec3 albedo(texture_albedo(object.material, glm::vec2(hit.uv)));
+    if (object.material.texture == TextureType::kMesh && hit.face >= 0) {
+      const MeshRecord& m = meshes[size_t(object.shape.mesh)];
+      albedo *= glm::dvec3(base_color_at(m.mesh, m.appearance, size_t(hit.face), hit.weights));
+    }
+    return albedo;
+  }
+
   glm::dvec3 shade_diffuse(const SurfaceHit& hit, glm::dvec3 incoming, Counters& counters) const {
-    const Material& material = objects[size_t(hit.object)].object.material;
-    const glm::dvec3 albedo(texture_albedo(material, glm::vec2(hit.uv)));
+    const glm::dvec3 albedo = albedo_at(hit);
     // Two-sided: the normal facing the viewer.
     const double facing = glm::dot(incoming, hit.geometric_normal) < 0.0 ? 1.0 : -1.0;
     const glm::dvec3 n = facing * hit.shading_normal;

@@ -123,8 +123,10 @@ bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out
 
   // Drop degenerate and duplicate faces.
   std::vector<std::array<int, 3>> faces;
+  std::vector<int> kept;  // the input face of each of `faces`
   std::map<std::array<int, 3>, char> seen;
-  for (const glm::ivec3& t : input.triangles) {
+  for (size_t input_face = 0; input_face < input.triangles.size(); ++input_face) {
+    const glm::ivec3& t = input.triangles[input_face];
     const std::array<int, 3> f{welded[t[0]], welded[t[1]], welded[t[2]]};
     if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] ||
         triangle_area(positions[f[0]], positions[f[1]], positions[f[2]]) == 0.0) {
@@ -138,6 +140,7 @@ bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out
       continue;
     }
     faces.push_back(f);
+    kept.push_back(int(input_face));
   }
   if (faces.empty()) {
     error = "no face with a positive area (the mesh is degenerate: zero area or collinear points)";
@@ -241,6 +244,9 @@ bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out
       t[k++] = int(v);
     mesh.triangles.push_back(t);
   }
+  // Surface_mesh keeps the soup's faces in their order and appends the hole fillings.
+  out.source_face.assign(mesh.triangles.size(), -1);
+  std::copy_n(kept.begin(), std::min(kept.size(), out.input_faces), out.source_face.begin());
   report.reversed_components = orient_outward(mesh);
   for (const glm::ivec3& t : mesh.triangles)
     report.area += triangle_area(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);

@@ -36,6 +36,9 @@ struct RepairReport {
 struct RepairedMesh {
   TriangleMesh mesh;
   size_t input_faces = 0;
+  /// Per face of `mesh`: the input face it is (its corners at the same positions, in any order),
+  /// or -1 for a face that fills a hole.
+  std::vector<int> source_face;
   RepairReport report;
 };
 

@@ -255,27 +255,29 @@ namespace {
 
 /// The original mesh file of asset NAME: the option, the report's "source_path", or the image's
 /// source as a path (as given, or beside the asset). Empty when none exists.
-std::string find_original(const std::string& name, const std::string& report_path,
-                          const VerifyOptions& options, const std::string& source) {
+MeshSource find_original(const std::string& name, const std::string& report_path,
+                         const VerifyOptions& options, const std::string& source) {
   namespace fs = std::filesystem;
   if (!options.original.empty()) {
-    return options.original;
+    return {options.original, options.original_part};
   }
   std::ifstream report_file(report_path);
   if (report_file) {
     const nlohmann::json report = nlohmann::json::parse(report_file, nullptr, false);
     if (report.is_object() && report.contains("source_path") && report["source_path"].is_string() &&
         fs::exists(report["source_path"].get<std::string>())) {
-      return report["source_path"].get<std::string>();
+      const bool part = report.contains("mesh_part") && report["mesh_part"].is_string();
+      return {report["source_path"].get<std::string>(),
+              part ? report["mesh_part"].get<std::string>() : ""};
     }
   }
   if (!source.empty()) {
     if (fs::exists(source)) {
-      return source;
+      return {source, ""};
     }
     const fs::path beside = fs::path(name).parent_path() / fs::path(source).filename();
     if (fs::exists(beside)) {
-      return beside.string();
+      return {beside.string(), ""};
     }
   }
   return {};
@@ -339,10 +341,11 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   };
   std::vector<Reference> references;
   references.push_back({"built", shown.parameterized_mesh, pm.mesh});
-  const std::string original = find_original(name, read.report, options, image.source);
-  if (!original.empty()) {
-    Reference r{"original", original, {}};
-    if (!load_mesh(original, r.mesh, error)) {
+  const MeshSource original = find_original(name, read.report, options, image.source);
+  if (!original.file.empty()) {
+    Reference r{"original", original.file, {}};
+    std::vector<std::string> ignored;
+    if (!load_mesh(original, r.mesh, nullptr, ignored, error)) {
       return false;
     }
     references.push_back(std::move(r));
@@ -413,7 +416,7 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
     }
     report["references"].push_back(std::move(r));
   }
-  if (original.empty()) {
+  if (original.file.empty()) {
     report["original_note"] = "original mesh file not found (use --original)";
   }
   return true;

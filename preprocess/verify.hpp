@@ -58,7 +58,8 @@ AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
 struct VerifyOptions {
   size_t rays = 1000000;  ///< arbitrary rays per family; the table subset uses as many pairs
   uint64_t seed = 1;
-  std::string original;  ///< original mesh file; empty: from NAME.report.json or the source
+  std::string original;       ///< original mesh file; empty: from NAME.report.json or the source
+  std::string original_part;  ///< glTF: its mesh (MeshSource::part); from the report with it
 };
 
 /// Verifies the asset NAME (NAME.gfield.exr, NAME.gimage.exr, NAME.gimage.obj) against the mesh

@@ -24,16 +24,21 @@ void add_build_command(CLI::App& app) {
   auto mesh = std::make_shared<std::string>();
   auto name = std::make_shared<std::string>();
   auto threads = std::make_shared<int>(0);
+  auto part = std::make_shared<std::string>();
   auto args = std::make_shared<AssetArguments>();
-  cmd->add_option("MESH", *mesh, "mesh file (.obj, .ply, .off, .stl)")->required();
+  cmd->add_option("MESH", *mesh, "mesh file (.obj, .ply, .off, .stl, .gltf, .glb)")->required();
+  cmd->add_option("--mesh", *part,
+                  "glTF: the mesh NAME (or #INDEX) to build (default: every primitive of the "
+                  "file's scene, placed by its nodes, as one mesh)");
   cmd->add_option("-o,--output", *name, "output path without extension (DIR/NAME)")->required();
   cmd->add_option("--threads", *threads, "threads (0: all cores)")
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
   add_asset_options(cmd, args);
-  cmd->callback([mesh, name, threads, args] {
+  cmd->callback([mesh, name, threads, part, args] {
     const ThreadLimit limit(*threads);
-    const AssetOptions options = asset_options(*args);
+    AssetOptions options = asset_options(*args);
+    options.part = *part;
     BuildInputs inputs;
     std::string error;
     if (!asset_build_inputs(*mesh, options, inputs, error)) {
@@ -52,6 +57,7 @@ void add_build_command(CLI::App& app) {
     if (!build_asset(*mesh, *name, options, inputs, report, error)) {
       throw CommandError(error);
     }
+    print_warnings(report["warnings"].get<std::vector<std::string>>());
     std::printf(
         "%s: %s\nwrote %s.{gimage.exr,gimage.obj,gfield.exr,report.json} in %.2f s "
         "(build %s)\n",

@@ -2,8 +2,12 @@
 // The subcommands of the `gfield` CLI, one file each. Each adds its subcommand to `app`; the
 // callback runs the command and throws CommandError on failure (main prints it, exit code 2).
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "gfield/printable.hpp"
 
 namespace CLI {
 class App;
@@ -16,6 +20,13 @@ struct CommandError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Prints each warning as "gfield: warning: WARNING" on stderr (the command goes on).
+inline void print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) {
+    std::fprintf(stderr, "gfield: warning: %s\n", printable(w).c_str());
+  }
+}
+
 void add_info_command(CLI::App& app);
 void add_field_command(CLI::App& app);
 void add_build_command(CLI::App& app);
@@ -25,5 +36,7 @@ void add_render_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_image_command(CLI::App& app);
 void add_thickness_command(CLI::App& app);
+void add_assets_command(CLI::App& app);
+void add_export_gltf_command(CLI::App& app);
 
 }  // namespace gfield

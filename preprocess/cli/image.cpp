@@ -7,6 +7,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "geometry/mesh_appearance.hpp"
 #include "geometry/mesh_io.hpp"
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/atomic_file.hpp"
@@ -21,7 +22,7 @@ namespace gfield {
 namespace {
 
 struct ImageArguments {
-  std::string mesh, output, json;
+  std::string mesh, part, output, json;
   int size = 512;
   std::string method = "auto", components = "all", holes = "all-but-longest", protrusions = "split";
   bool no_measure = false;
@@ -29,7 +30,11 @@ struct ImageArguments {
 
 /// The options of `gfield image`, bound to `args`.
 void add_image_options(CLI::App* cmd, const std::shared_ptr<ImageArguments>& args) {
-  cmd->add_option("MESH", args->mesh, "mesh file (.obj, .ply, .off, .stl)")->required();
+  cmd->add_option("MESH", args->mesh, "mesh file (.obj, .ply, .off, .stl, .gltf, .glb)")
+      ->required();
+  cmd->add_option("--mesh", args->part,
+                  "glTF: the mesh NAME (or #INDEX) (default: every primitive of the file's "
+                  "scene, placed by its nodes, as one mesh)");
   cmd->add_option("-o,--output", args->output, "output geometry image (NAME.gimage.exr)")
       ->required();
   cmd->add_option("--size", args->size, "texels per side")
@@ -79,20 +84,26 @@ GeometryImageOptions image_options(const ImageArguments& args) {
 
 void run_image(const ImageArguments& args) {
   TriangleMesh mesh;
+  MeshAppearance appearance;
+  std::vector<std::string> warnings;
   std::string error;
-  if (!load_mesh(args.mesh, mesh, error))
+  if (!load_mesh(MeshSource{args.mesh, args.part}, mesh, &appearance, warnings, error))
     throw CommandError(error);
+  print_warnings(warnings);
 
   const GeometryImageOptions options = image_options(args);
 
   GeometryImage image;
   ParameterizedMesh parameterized;
   GeometryImageReport report;
-  if (!build_geometry_image(mesh, options, image, parameterized, report, error))
+  if (!build_geometry_image(mesh, options, image, parameterized, report, error, &appearance))
     throw CommandError(args.mesh + ": " + error);
   image.source = std::filesystem::path(args.mesh).filename().string();
   BuildInputs inputs;
-  if (!hash_build_inputs(args.mesh, image_options_to_json(options), inputs, error))
+  nlohmann::json hashed = image_options_to_json(options);
+  if (!args.part.empty())
+    hashed["mesh"] = printable(args.part);
+  if (!hash_build_inputs(args.mesh, hashed, inputs, error))
     throw CommandError(error);
   image.build_id = inputs.build_id;
   parameterized.build_id = inputs.build_id;

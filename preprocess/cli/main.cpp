@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
   gfield::add_compare_command(app);
   gfield::add_image_command(app);
   gfield::add_thickness_command(app);
+  gfield::add_assets_command(app);
+  gfield::add_export_gltf_command(app);
 
   try {
     app.parse(argc, argv);

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 
+#include "geometry/scene_file.hpp"
 #include "gfield/image.hpp"
 #include "gfield/scene.hpp"
 #include "preprocess/cli/commands.hpp"
@@ -67,8 +68,10 @@ void run_render(const RenderArgs& args) {
   }
   Scene scene;
   std::string error;
-  if (!load_scene(args.scene, scene, error))
+  std::vector<std::string> warnings;
+  if (!load_scene_file(args.scene, scene, warnings, error))
     throw CommandError(error);
+  print_warnings(warnings);
   const int width = options.width > 0 ? options.width : scene.width;
   const int height = options.height > 0 ? options.height : scene.height;
   const RenderBudget budget = estimate_render(width, height, options.samples_per_pixel);
@@ -110,7 +113,8 @@ void add_render_command(CLI::App& app) {
       "Embree, exact Fresnel, total internal reflection, absorption, stratified\n"
       "supersampling; deterministic for a given seed.");
   auto args = std::make_shared<RenderArgs>();
-  cmd->add_option("SCENE", args->scene, "scene file (.json)")->required();
+  cmd->add_option("SCENE", args->scene, "scene file (.json, or a glTF file: .gltf, .glb)")
+      ->required();
   cmd->add_option("-o,--output", args->output, "output image (.exr linear float, .png sRGB)")
       ->required();
   cmd->add_option("--spp", args->spp, "samples per pixel (stratified)")

@@ -1,0 +1,40 @@
+// gfield export-gltf SCENE.json -o OUT.glb: a JSON scene as a binary glTF 2.0 file
+// (geometry/gltf_writer.hpp), read back by every gfield command that reads scenes.
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+#include "geometry/gltf_writer.hpp"
+#include "geometry/scene_file.hpp"
+#include "gfield/printable.hpp"
+#include "preprocess/cli/commands.hpp"
+
+namespace gfield {
+
+void add_export_gltf_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "export-gltf",
+      "Write a scene (JSON or glTF) as a binary glTF 2.0 file: meshes with their texture\n"
+      "coordinates, colours and textures, quads with their procedural textures baked, materials\n"
+      "(mirror: metallic; dielectric: KHR_materials_transmission/ior/volume), the camera,\n"
+      "KHR_lights_punctual lights, and the environment, ambient light and image size as extras.");
+  auto scene_file = std::make_shared<std::string>();
+  auto output = std::make_shared<std::string>();
+  cmd->add_option("SCENE", *scene_file, "scene file (.json, .gltf, .glb)")->required();
+  cmd->add_option("-o,--output", *output, "the binary glTF file to write (.glb)")->required();
+  cmd->callback([scene_file, output] {
+    Scene scene;
+    std::vector<std::string> warnings;
+    std::string error;
+    if (!load_scene_file(*scene_file, scene, warnings, error) ||
+        !write_gltf_scene(scene, *output, error)) {
+      throw CommandError(error);
+    }
+    print_warnings(warnings);
+    std::printf("%s: %zu objects, %zu lights\n", printable(*output).c_str(), scene.objects.size(),
+                scene.lights.size());
+  });
+}
+
+}  // namespace gfield
