@@ -5,6 +5,7 @@
 
 #include <glm/gtx/norm.hpp>
 
+#include "geometry/mesh_appearance.hpp"
 #include "geometry/mesh_io.hpp"
 #include "geometry/outward_normals.hpp"
 #include "gfield/exr_io.hpp"
@@ -40,17 +41,52 @@ bool fits_gl_limits(int side, int count, const std::string& owner, std::string& 
   return true;
 }
 
-/// The mesh file's triangles with the reference tracer's shading normals (angle-weighted,
-/// outwards; +Z where a vertex has none) and uv 0.
-void source_vertices(const TriangleMesh& mesh, std::vector<GpuVertex>& vertices,
-                     std::vector<unsigned>& indices) {
+/// The mesh file's triangles, one vertex per corner, with the reference tracer's shading normals
+/// (angle-weighted, outwards; +Z where a vertex has none), the mesh's own texture coordinates and
+/// base colour (material colour x vertex colour; its texture's layer: `first_layer` + the
+/// material's texture).
+void source_vertices(const TriangleMesh& mesh, const MeshAppearance& appearance, int first_layer,
+                     std::vector<GpuVertex>& vertices, std::vector<unsigned>& indices) {
   const std::vector<glm::dvec3> normals = outward_vertex_normals(mesh);
-  for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    const glm::vec3 n = normals[v] != glm::dvec3(0.0) ? glm::vec3(normals[v]) : glm::vec3(0, 0, 1);
-    vertices.push_back({glm::vec3(mesh.positions[v]), n, glm::vec2(0.0f)});
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const int m = appearance.face_material.empty() ? -1 : appearance.face_material[f];
+    const BaseColorMaterial* material = m >= 0 ? &appearance.materials[size_t(m)] : nullptr;
+    for (int c = 0; c < 3; ++c) {
+      const size_t v = size_t(mesh.triangles[f][c]);
+      const glm::vec3 n =
+          normals[v] != glm::dvec3(0.0) ? glm::vec3(normals[v]) : glm::vec3(0, 0, 1);
+      GpuVertex vertex{
+          glm::vec3(mesh.positions[v]), n,
+          appearance.corner_uv.empty() ? glm::vec2(0.0f) : appearance.corner_uv[3 * f + size_t(c)]};
+      glm::vec3 color =
+          appearance.vertex_color.empty() ? glm::vec3(1.0f) : appearance.vertex_color[v];
+      if (material != nullptr) {
+        color *= material->factor;
+        vertex.base.a = material->texture >= 0 ? float(first_layer + material->texture) : -1.0f;
+      }
+      vertex.base = glm::vec4(color, vertex.base.a);
+      indices.push_back(unsigned(vertices.size()));
+      vertices.push_back(vertex);
+    }
   }
-  for (const glm::ivec3& f : mesh.triangles)
-    indices.insert(indices.end(), {unsigned(f.x), unsigned(f.y), unsigned(f.z)});
+}
+
+/// `image` at width x height (bilinear, repeating: texture_lookup), rows from v = 0 up (the
+/// layout of a GL texture whose t is v).
+std::vector<glm::vec4> texture_layer(const Image& image, int width, int height) {
+  std::vector<glm::vec4> texels(size_t(width) * size_t(height));
+  for (int row = 0; row < height; ++row) {
+    for (int x = 0; x < width; ++x) {
+      const size_t t = size_t(row) * size_t(width) + size_t(x);
+      const bool same = image.width == width && image.height == height;
+      const glm::vec3 c =
+          same ? image.at(x, height - 1 - row)
+               : texture_lookup(image, glm::vec2((float(x) + 0.5f) / float(width),
+                                                 (float(row) + 0.5f) / float(height)));
+      texels[t] = glm::vec4(c, 1.0f);
+    }
+  }
+  return texels;
 }
 
 /// One vertex per corner (a vertex on a chart seam has one uv on each side of it).
@@ -98,12 +134,13 @@ void GpuMesh::upload(const std::vector<GpuVertex>& vertex_data,
   vertex_array.make();
   glVertexArrayVertexBuffer(vertex_array.id(), 0, vertices.id(), 0, sizeof(GpuVertex));
   glVertexArrayElementBuffer(vertex_array.id(), indices.id());
-  const GLuint offsets[3] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
-                             offsetof(GpuVertex, uv)};
-  for (GLuint attribute = 0; attribute < 3; ++attribute) {
+  const GLuint offsets[4] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
+                             offsetof(GpuVertex, uv), offsetof(GpuVertex, base)};
+  const GLint sizes[4] = {3, 3, 2, 4};
+  for (GLuint attribute = 0; attribute < 4; ++attribute) {
     glEnableVertexArrayAttrib(vertex_array.id(), attribute);
-    glVertexArrayAttribFormat(vertex_array.id(), attribute, attribute == 2 ? 2 : 3, GL_FLOAT,
-                              GL_FALSE, offsets[attribute]);
+    glVertexArrayAttribFormat(vertex_array.id(), attribute, sizes[attribute], GL_FLOAT, GL_FALSE,
+                              offsets[attribute]);
     glVertexArrayAttribBinding(vertex_array.id(), attribute, 0);
   }
   index_count = GLsizei(index_data.size());
@@ -175,24 +212,30 @@ bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
     return false;
   make_array(positions_, GL_RGBA32F, side, count);
   make_array(normals_, GL_RGBA32F, side, count);
+  make_array(albedo_, GL_RGBA16F, side, count);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   for (size_t m = 0; m < images_.size(); ++m) {
     const GeometryImage& image = images_[m];
     std::vector<glm::vec4> position(image.position.size()), normal(image.position.size());
+    std::vector<glm::vec4> albedo(image.position.size(), glm::vec4(1.0f));
     for (size_t t = 0; t < position.size(); ++t) {
       position[t] = glm::vec4(image.position[t], image.coverage[t]);
       normal[t] = glm::vec4(image.normal[t], 0.0f);
+      if (!image.albedo.empty())
+        albedo[t] = glm::vec4(image.albedo[t], 1.0f);
     }
     const int n = image.size;
     glTextureSubImage3D(positions_.id(), 0, 0, 0, GLint(m), n, n, 1, GL_RGBA, GL_FLOAT,
                         position.data());
     glTextureSubImage3D(normals_.id(), 0, 0, 0, GLint(m), n, n, 1, GL_RGBA, GL_FLOAT,
                         normal.data());
+    glTextureSubImage3D(albedo_.id(), 0, 0, 0, GLint(m), n, n, 1, GL_RGBA, GL_FLOAT, albedo.data());
     assets_[m].layer = int(m);
     assets_[m].image_size = n;
     assets_[m].box = image.box;
+    assets_[m].albedo = !image.albedo.empty();
   }
-  texture_bytes_ += size_t(side) * size_t(side) * size_t(count) * 32;
+  texture_bytes_ += size_t(side) * size_t(side) * size_t(count) * 40;
   ++texture_uploads_;
   loaded_.images = true;
   return true;
@@ -243,13 +286,19 @@ bool GpuAssets::upload_fields(const std::vector<const GeometryField*>& fields,
 }
 
 bool GpuAssets::load_source_meshes(const Scene& scene, std::string& error) {
+  std::vector<MeshAppearance> appearances(scene.meshes.size());
+  std::vector<const Image*> textures;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     TriangleMesh mesh;
-    if (!load_mesh(scene.meshes[m].file, mesh, error))
+    std::vector<std::string> warnings;  // the tools print them when they read the scene
+    const MeshAsset& asset = scene.meshes[m];
+    if (!load_mesh(MeshSource{asset.file, asset.part}, mesh, &appearances[m], warnings, error))
       return false;
     std::vector<GpuVertex> vertices;
     std::vector<unsigned> indices;
-    source_vertices(mesh, vertices, indices);
+    source_vertices(mesh, appearances[m], int(textures.size()), vertices, indices);
+    for (const MeshTexture& texture : appearances[m].textures)
+      textures.push_back(&texture.image);
     assets_[m].source.upload(vertices, indices);
     Box bounds{glm::vec3(3e38f), glm::vec3(-3e38f)};
     for (const GpuVertex& v : vertices) {
@@ -260,7 +309,35 @@ bool GpuAssets::load_source_meshes(const Scene& scene, std::string& error) {
     if (assets_[m].layer < 0)  // no geometry image: the box is the mesh's bounds
       assets_[m].box = bounds;
   }
+  if (!upload_mesh_textures(textures, scene.filename, error))
+    return false;
   loaded_.source_meshes = true;
+  return true;
+}
+
+bool GpuAssets::upload_mesh_textures(const std::vector<const Image*>& textures,
+                                     const std::string& owner, std::string& error) {
+  int width = 1, height = 1;
+  for (const Image* image : textures) {
+    width = std::max(width, image->width);
+    height = std::max(height, image->height);
+  }
+  const int count = std::max(1, int(textures.size()));
+  if (!fits_gl_limits(std::max(width, height), count, owner, error))
+    return false;
+  mesh_textures_.make(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(mesh_textures_.id(), 1, GL_RGBA16F, width, height, count);
+  glTextureParameteri(mesh_textures_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(mesh_textures_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(mesh_textures_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(mesh_textures_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  for (size_t k = 0; k < textures.size(); ++k) {
+    const std::vector<glm::vec4> texels = texture_layer(*textures[k], width, height);
+    glTextureSubImage3D(mesh_textures_.id(), 0, 0, 0, GLint(k), width, height, 1, GL_RGBA, GL_FLOAT,
+                        texels.data());
+  }
+  texture_bytes_ += size_t(width) * size_t(height) * size_t(count) * 8;
   return true;
 }
 

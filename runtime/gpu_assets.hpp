@@ -6,13 +6,20 @@
 //   - geometry fields: GL_TEXTURE_2D_ARRAY RG32F, texel (exit, entry) = the stored uv of the pair;
 //     a (6N^2)^2 table fills the corner of its layer (3D textures stop at 2048 on Mesa, a 2D array
 //     layer reaches 16384);
+//   - geometry-image albedo: GL_TEXTURE_2D_ARRAY RGBA16F, layer = asset (white for an image
+//     without albedo: GpuAsset::albedo);
 //   - rasterisation meshes, two per asset: the mesh file as the reference tracer sees it (its
-//     shading normals, uv 0: the G-buffer's and the glass method's first hits), and the
-//     parameterised mesh NAME.gimage.obj (the same surface with each corner's geometry-image uv,
-//     which reaches the asset's per-texel maps; the image's grid when the file is missing).
-// Shaders read the textures with texelFetch only (bilinear weights are computed in the shader,
-// as the CPU does). Instances share one asset. The texture units are the contract's
-// (shaders/lib/contract.glsl: UNIT_GI_POSITIONS, UNIT_GI_NORMALS, UNIT_FIELDS).
+//     shading normals, its own texture coordinates and base colour: the G-buffer's, the
+//     image-space methods' and the glass method's first hits), and the parameterised mesh
+//     NAME.gimage.obj (the same surface with each corner's geometry-image uv, which reaches the
+//     asset's per-texel maps; the image's grid when the file is missing);
+//   - the meshes' own textures (mesh_appearance.hpp): one GL_TEXTURE_2D_ARRAY RGBA16F of linear
+//     colour, a layer per texture, all at the largest texture's size (smaller ones resampled
+//     bilinearly), rows from v = 0 up, GL_LINEAR and GL_REPEAT as the reference tracer's lookup.
+// Shaders read the geometry images and fields with texelFetch only (bilinear weights are
+// computed in the shader, as the CPU does). Instances share one asset. The texture units are
+// the contract's (shaders/lib/contract.glsl: UNIT_GI_POSITIONS, UNIT_GI_NORMALS, UNIT_FIELDS,
+// UNIT_GI_ALBEDO, UNIT_MESH_TEXTURES).
 
 #include <string>
 #include <vector>
@@ -29,11 +36,14 @@
 
 namespace gfield {
 
-/// Interleaved vertex of every rasterised mesh: attributes 0 = position, 1 = normal, 2 = uv.
+/// Interleaved vertex of every rasterised mesh: attributes 0 = position, 1 = normal, 2 = uv,
+/// 3 = base colour (rgb: the mesh's material colour x vertex colour, linear; a: the layer of its
+/// texture in GpuAssets::mesh_textures, -1 none).
 struct GpuVertex {
   glm::vec3 position;
   glm::vec3 normal;
   glm::vec2 uv;
+  glm::vec4 base{1.0f, 1.0f, 1.0f, -1.0f};
 };
 
 /// Indexed triangles on the GPU.
@@ -63,9 +73,10 @@ struct GpuAsset {
   int layer = -1;            ///< layer in the texture arrays (-1: no geometry image loaded)
   int image_size = 0;        ///< n of the geometry image
   int samples_per_side = 0;  ///< N of the field (0: no field loaded)
-  Box box;          ///< the geometry image's box (mesh coordinates), else the mesh file's bounds
-  Box mesh_bounds;  ///< bounds of the mesh file's vertices (with the source mesh)
-  GpuMesh source;   ///< the mesh file, the reference tracer's normals, uv 0
+  Box box;  ///< the geometry image's box (mesh coordinates), else the mesh file's bounds
+  bool albedo = false;  ///< the geometry image holds albedo (in GpuAssets::albedo)
+  Box mesh_bounds;      ///< bounds of the mesh file's vertices (with the source mesh)
+  GpuMesh source;       ///< the mesh file, the reference tracer's normals, its own uvs and colours
   GpuMesh parameterized;  ///< NAME.gimage.obj with corner uvs, or the image's grid
 };
 
@@ -85,6 +96,8 @@ class GpuAssets {
   GLuint positions() const { return positions_.id(); }
   GLuint normals() const { return normals_.id(); }
   GLuint fields() const { return fields_.id(); }
+  GLuint albedo() const { return albedo_.id(); }
+  GLuint mesh_textures() const { return mesh_textures_.id(); }
   /// Bytes of texture memory held.
   size_t texture_bytes() const { return texture_bytes_; }
   /// How many times texture arrays were filled: a scene edit must not change it.
@@ -97,6 +110,8 @@ class GpuAssets {
   bool upload_fields(const std::vector<const GeometryField*>& fields, const std::string& owner,
                      std::string& error);
   bool load_source_meshes(const Scene& scene, std::string& error);
+  bool upload_mesh_textures(const std::vector<const Image*>& textures, const std::string& owner,
+                            std::string& error);
   bool load_parameterized_meshes(const Scene& scene, std::string& error);
 
   std::vector<GpuAsset> assets_;
@@ -105,6 +120,8 @@ class GpuAssets {
   GlTexture positions_;
   GlTexture normals_;
   GlTexture fields_;
+  GlTexture albedo_;
+  GlTexture mesh_textures_;
   size_t texture_bytes_ = 0;
   int texture_uploads_ = 0;
 };

@@ -57,7 +57,8 @@ gpu::GpuObject gpu_object(const GpuScene& gpu_scene, int k) {
   g.box_max = glm::vec4(hi, 0.0f);
   if (o.shape.type == ShapeType::kMesh) {
     const GpuAsset& asset = gpu_scene.assets().assets()[size_t(o.shape.mesh)];
-    g.asset = glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, 0);
+    g.asset =
+        glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, asset.albedo ? 1 : 0);
   }
   return g;
 }
@@ -117,6 +118,8 @@ void GpuScene::bind() const {
   glBindTextureUnit(gpu::UNIT_GI_POSITIONS, assets_.positions());
   glBindTextureUnit(gpu::UNIT_GI_NORMALS, assets_.normals());
   glBindTextureUnit(gpu::UNIT_FIELDS, assets_.fields());
+  glBindTextureUnit(gpu::UNIT_GI_ALBEDO, assets_.albedo());
+  glBindTextureUnit(gpu::UNIT_MESH_TEXTURES, assets_.mesh_textures());
   glBindTextureUnit(gpu::UNIT_ENVIRONMENT, environment_.id());
 }
 

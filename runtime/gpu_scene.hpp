@@ -38,8 +38,8 @@ class GpuScene {
   /// Diagonal of the bounds of all objects and the camera (scene units, at least 1e-3).
   float extent() const { return extent_; }
 
-  /// Binds the objects and lights buffers, the asset textures and the environment to their
-  /// contract slots.
+  /// Binds the objects and lights buffers, the asset textures (geometry images, their albedo,
+  /// fields, the meshes' own textures) and the environment to their contract slots.
   void bind() const;
   /// Sets the scene uniforms of `program` (in use): u_object_count, u_light_count, u_ambient,
   /// u_scene_extent and the environment's u_env_type, u_env_color, u_env_intensity.

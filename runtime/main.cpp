@@ -12,6 +12,7 @@
 #include "runtime/headless.hpp"
 #include "runtime/method_cli.hpp"
 #include "runtime/method_registry.hpp"
+#include "runtime/scene_assets.hpp"
 #include "runtime/shader_program.hpp"
 #include "runtime/view_session.hpp"
 #include "runtime/viewer.hpp"
@@ -47,7 +48,9 @@ void add_common_options(CLI::App& app, Arguments& a) {
   std::string methods;
   for (const std::string& name : method_names())
     methods += (methods.empty() ? "" : ", ") + name;
-  app.add_option("scene", a.scene_file, "Scene file (JSON, docs/scenes.md)")->required();
+  app.add_option("scene", a.scene_file,
+                 "Scene file (JSON, docs/scenes.md, or glTF 2.0: .gltf, .glb)")
+      ->required();
   app.add_option("--method", h.method, "Rendering method: " + methods)
       ->check(CLI::IsMember(method_names()));
   app.add_flag("--headless", a.headless, "Render without a window (EGL, no X) and exit");
@@ -76,16 +79,15 @@ void add_common_options(CLI::App& app, Arguments& a) {
       ->capture_default_str();
   app.add_option("--assets", a.asset_dir,
                  "Folder of prebuilt assets: NAME.gimage.exr/.gfield.exr for mesh NAME.obj, found "
-                 "there before those beside the mesh (gfield build MESH -o DIR/NAME)");
+                 "there before those beside the mesh (gfield build MESH -o DIR/NAME); the assets "
+                 "of glTF meshes are built there on demand (default: beside the glTF file)");
 }
 
 /// Checks what the options say against each other and the files; "" when all is well.
 std::string check_arguments(Arguments& a, Scene& scene) {
   std::string error;
-  if (!load_scene(a.scene_file, scene, error))
+  if (!load_view_scene(a.scene_file, a.asset_dir, scene, error))
     return error;
-  if (!a.asset_dir.empty() && !use_asset_folder(a.asset_dir, scene, error))
-    return "--assets " + error;
   if (!std::filesystem::is_regular_file(std::filesystem::path(a.shader_dir) / "field_trace.frag"))
     return a.shader_dir +
            ": no gfield shaders here (field_trace.frag); set --shaders DIR or GFIELD_SHADER_DIR";

@@ -17,6 +17,7 @@
 layout(binding = UNIT_GBUFFER_POSITION) uniform sampler2D u_g_position;    // xyz world, w object
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D u_g_normal;        // xyz shading normal, w u
 layout(binding = UNIT_GBUFFER_GEOMETRIC) uniform sampler2D u_g_geometric;  // xyz geometric, w v
+layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D u_g_albedo;        // rgb albedo
 uniform int u_max_depth;      // reflections/refractions after the camera ray (as gfield render)
 uniform float u_min_weight;   // branches below this path weight are not traced
 uniform int u_max_rays;       // secondary rays per pixel at most
@@ -120,6 +121,7 @@ void main() {
     hit.t = distance(u_camera_position, g_position.xyz);
     hit.normal = g_normal.xyz;
     hit.uv = vec2(g_normal.w, g_geometric.w);
+    hit.albedo = texelFetch(u_g_albedo, pixel, 0).rgb;
     shade_hit(hit, g_geometric.xyz, camera, radiance);
     while (stack_count > 0 && traced < u_max_rays) {
       stack_count--;

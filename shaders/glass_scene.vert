@@ -7,6 +7,7 @@
 layout(location = 0) in vec3 a_position;  // object space
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec4 a_base;  // a mesh file's base colour and texture layer
 
 uniform mat4 u_to_world;
 uniform mat3 u_normal_to_world;
@@ -29,6 +30,7 @@ layout(location = 0) out vec3 v_world;   // undisplaced
 layout(location = 1) out vec3 v_normal;
 layout(location = 2) out vec2 v_uv;
 layout(location = 3) out float v_valid;  // 1: placed; 0: no path of the class reaches it
+layout(location = 4) out vec4 v_base;
 
 // True when the segment from the eye to q (object space) crosses the infinite outer cylinder:
 // then q is behind glass along the straight line and must be reached by a refracted path.
@@ -78,6 +80,7 @@ void main() {
   v_world = world;
   v_normal = u_normal_to_world * a_normal;
   v_uv = a_uv;
+  v_base = a_base;
   v_valid = valid;
   gl_Position = u_view_projection * vec4(seen, 1.0f);
 }

@@ -14,6 +14,6 @@ void main() {
   IsSurface s;
   if (!is_resolve_surface(s)) discard;
   vec3 incoming = normalize(s.position - u_eye);
-  vec3 c = is_shade_surface(u_object, s.position, s.normal, incoming, s.uv);
+  vec3 c = is_shade_surface(u_object, s.position, s.normal, incoming, s.albedo);
   o_color = vec4(c, u_alpha_is_coverage ? 1.0f : dot(s.position - u_eye, u_forward));
 }

@@ -1,5 +1,6 @@
 #version 450
-// One object of the image-space methods: a mesh object's geometry-image grid, or the bounding
+// One object of the image-space methods: a mesh object's parameterised mesh (refractors: uv =
+// geometry-image uv) or mesh file (opaque objects: its own uvs and base colour), or the bounding
 // box of an analytic shape (its fragments intersect the exact shape). Besides the world position
 // and normal it carries d_n (Wyman 2005, read per vertex from the asset's thickness map) and the
 // article's per-vertex refraction vector (Hurley, "Approximating Refraction"):
@@ -7,6 +8,7 @@
 layout(location = 0) in vec3 a_position;  // object space (analytic: the unit cube [-1, 1]^3)
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec4 a_base;  // a mesh file's base colour and texture layer
 
 #include "lib/contract.glsl"
 
@@ -25,6 +27,7 @@ layout(location = 1) out vec3 v_normal;    // world
 layout(location = 2) out vec2 v_uv;
 layout(location = 3) out float v_thickness;  // world d_n
 layout(location = 4) out vec3 v_hurley;      // per-vertex refraction vector (unnormalised)
+layout(location = 5) out vec4 v_base;
 
 // d_n at geometry-image uv `uv` (texel centres at (i + 0.5) / n): bilinear over the four nearest
 // texels that hold a surface (d > 0; padding holds 0), so that a corner on a chart's border reads
@@ -67,6 +70,7 @@ void main() {
   v_position = world.xyz;
   v_normal = normalize(transpose(inverse(mat3(u_to_world))) * a_normal);
   v_uv = a_uv;
+  v_base = a_base;
   v_thickness = 0.0f;
   if (u_thickness_layer >= 0) {
     v_thickness = length(mat3(u_to_world) * (a_normal * thickness_at(a_uv)));

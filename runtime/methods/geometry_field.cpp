@@ -44,13 +44,14 @@ bool GeometryFieldMethod::load(GpuScene& scene, const std::filesystem::path& sha
 
 void GeometryFieldMethod::render_gbuffer(const Camera& camera, int width, int height,
                                          glm::vec2 jitter) {
-  gbuffer_.resize(width, height, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F}, GL_DEPTH_COMPONENT32F);
+  gbuffer_.resize(width, height, {GL_RGBA32F, GL_RGBA32F, GL_RGBA32F, GL_RGBA32F},
+                  GL_DEPTH_COMPONENT32F);
   gbuffer_.bind();
   const float clear_position[4] = {0.0f, 0.0f, 0.0f, -1.0f};
   const float clear_zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearBufferfv(GL_COLOR, 0, clear_position);
-  glClearBufferfv(GL_COLOR, 1, clear_zero);
-  glClearBufferfv(GL_COLOR, 2, clear_zero);
+  for (int k = 1; k < 4; ++k)
+    glClearBufferfv(GL_COLOR, k, clear_zero);
   glDepthMask(GL_TRUE);
   glClearDepth(1.0);
   glClear(GL_DEPTH_BUFFER_BIT);
@@ -61,6 +62,7 @@ void GeometryFieldMethod::render_gbuffer(const Camera& camera, int width, int he
   const CameraFrustum f = camera_frustum(camera, width, height, scene_->extent(), jitter);
   const glm::mat4 view_projection = f.projection * f.view;
   glUseProgram(gbuffer_program_.id());
+  scene_->bind();
   glUniformMatrix4fv(gbuffer_program_.uniform("u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(view_projection));
   glUniform3fv(gbuffer_program_.uniform("u_camera_position"), 1, &camera.position.x);
@@ -77,6 +79,7 @@ void GeometryFieldMethod::render_tracing(const Camera& camera, Framebuffer& targ
   glBindTextureUnit(gpu::UNIT_GBUFFER_POSITION, gbuffer_.texture(0));
   glBindTextureUnit(gpu::UNIT_GBUFFER_NORMAL, gbuffer_.texture(1));
   glBindTextureUnit(gpu::UNIT_GBUFFER_GEOMETRIC, gbuffer_.texture(2));
+  glBindTextureUnit(gpu::UNIT_GBUFFER_ALBEDO, gbuffer_.texture(3));
   const auto u = [&](const char* name) { return trace_program_.uniform(name); };
   scene_->set_uniforms(trace_program_);
   set_camera_uniforms(trace_program_, camera, target.width(), target.height(), jitter);

@@ -49,7 +49,8 @@ class GeometryFieldMethod : public Method {
   GpuScene* scene_ = nullptr;
   ShaderProgram gbuffer_program_;
   ShaderProgram trace_program_;
-  RenderTarget gbuffer_;  ///< position + object, shading normal + u, geometric normal + v
+  /// position + object, shading normal + u, geometric normal + v, albedo
+  RenderTarget gbuffer_;
 };
 
 }  // namespace gfield

@@ -15,7 +15,8 @@ bool ImageSpacePasses::load(GpuScene& scene, const std::filesystem::path& shader
                             std::string& error) {
   scene_ = &scene;
   AssetNeeds needs;
-  needs.parameterized_meshes = true;
+  needs.parameterized_meshes = true;  // refractors: geometry-image uvs reach d_n
+  needs.source_meshes = true;         // opaque meshes: their own uvs and base colour
   return scene.require(needs, error) && load_thickness_maps(error) &&
          forward_program_.build(shader_dir, {"image_space_object.vert", "image_space_forward.frag"},
                                 "", error) &&
@@ -134,10 +135,13 @@ void ImageSpacePasses::begin(const ShaderProgram& program, const ImageSpaceView&
 
 void ImageSpacePasses::draw_object(const ShaderProgram& program, int object) const {
   const SceneObject& o = scene_->scene().objects[size_t(object)];
+  const bool refractor = o.material.type == MaterialType::kDielectric;
   glUniform1f(program.uniform("u_alpha"), o.material.ior);
-  glUniform1i(program.uniform("u_thickness_layer"),
-              o.shape.type == ShapeType::kMesh ? thickness_layer_[size_t(o.shape.mesh)] : -1);
-  scene_->draw_object(program, object, RasterMesh::kParameterized);
+  glUniform1i(program.uniform("u_thickness_layer"), o.shape.type == ShapeType::kMesh && refractor
+                                                        ? thickness_layer_[size_t(o.shape.mesh)]
+                                                        : -1);
+  scene_->draw_object(program, object,
+                      refractor ? RasterMesh::kParameterized : RasterMesh::kSource);
 }
 
 }  // namespace gfield

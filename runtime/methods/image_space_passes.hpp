@@ -1,8 +1,9 @@
 #pragma once
 // What the image-space methods (cube maps: runtime/methods/cube_map.*, screen maps:
 // runtime/methods/image_space_refraction.*) share: the view of a pass as their shaders see it
-// (shaders/lib/image_space.glsl), their object drawing (the parameterised meshes, so that d_n and
-// the geometry-image uv reach each corner), the environment behind everything and the forward
+// (shaders/lib/image_space.glsl), their object drawing (refractors as their parameterised meshes,
+// so that d_n and the geometry-image uv reach each corner; opaque meshes as their mesh files,
+// with their own uvs and base colour), the environment behind everything and the forward
 // pass of the opaque objects (diffuse shading, mirrors reflecting the environment), and the
 // d_n maps of wyman2005.
 
@@ -34,8 +35,8 @@ struct ImageSpaceView {
 
 class ImageSpacePasses {
  public:
-  /// Loads the geometry images and parameterised meshes of `scene`'s meshes and the d_n maps
-  /// beside them (NAME.thickness.exr, where present), builds the shared programs.
+  /// Loads the geometry images, parameterised meshes and mesh files of `scene`'s meshes and the
+  /// d_n maps beside them (NAME.thickness.exr, where present), builds the shared programs.
   bool load(GpuScene& scene, const std::filesystem::path& shader_dir, std::string& error);
 
   /// The view of `camera` for a width x height picture at sample offset `jitter`, its search
@@ -44,7 +45,8 @@ class ImageSpacePasses {
   /// Uses `program` and sets the scene's and the view's uniforms; binds the scene and the d_n
   /// maps.
   void begin(const ShaderProgram& program, const ImageSpaceView& view) const;
-  /// Draws object k with the program begun (its d_n map layer and Hurley's index set first).
+  /// Draws object k with the program begun (its d_n map layer and Hurley's index set first): a
+  /// dielectric mesh as its parameterised mesh, another mesh as its mesh file.
   void draw_object(const ShaderProgram& program, int object) const;
   /// The environment along every pixel's camera ray, then the objects for which `opaque(k)` is
   /// true, shaded, with depth (alpha: coverage).

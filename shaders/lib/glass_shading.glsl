@@ -9,7 +9,7 @@
 
 #define GLASS_SHADOWED_LIGHTS 4
 
-layout(std430, binding = BUFFER_OBJECTS) readonly buffer Objects { GpuObject objects[]; };
+#include "lib/objects.glsl"
 layout(std430, binding = BUFFER_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
 uniform int u_object_count;
 uniform int u_light_count;

@@ -122,7 +122,7 @@ ShapeHit is_intersect_analytic(int k, vec3 o, vec3 d, float t_min, float t_max) 
 
 // Diffuse shading as the reference tracer (albedo * (ambient + lights * cos / d^2), two sided),
 // with shadow rays blocked by opaque ANALYTIC shapes only (meshes cast no shadows here).
-vec3 is_shade_diffuse(int k, vec3 p, vec3 n, vec3 incoming, vec2 uv) {
+vec3 is_shade_diffuse(int k, vec3 p, vec3 n, vec3 incoming, vec3 albedo) {
   if (dot(incoming, n) > 0.0f) n = -n;
   vec3 light_sum = u_ambient;
   for (int i = 0; i < u_light_count; i++) {
@@ -149,15 +149,15 @@ vec3 is_shade_diffuse(int k, vec3 p, vec3 n, vec3 incoming, vec2 uv) {
     light_sum += lights[i].color.rgb * cosine * (point ? 1.0f / (distance_to_light *
                                                                  distance_to_light) : 1.0f);
   }
-  return object_albedo(k, uv) * light_sum;
+  return albedo * light_sum;
 }
 
 // What an opaque surface of object k sends along -incoming: diffuse shading, a mirror's tinted
 // reflection of the environment, or (a dielectric no method handles here) the environment seen
 // straight through blended with its Fresnel reflection.
-vec3 is_shade_surface(int k, vec3 p, vec3 n, vec3 incoming, vec2 uv) {
+vec3 is_shade_surface(int k, vec3 p, vec3 n, vec3 incoming, vec3 albedo) {
   int material = objects[k].kind.y;
-  if (material == MATERIAL_DIFFUSE) return is_shade_diffuse(k, p, n, incoming, uv);
+  if (material == MATERIAL_DIFFUSE) return is_shade_diffuse(k, p, n, incoming, albedo);
   if (dot(incoming, n) > 0.0f) n = -n;
   vec3 mirrored = environment_radiance(reflect(incoming, n));
   if (material == MATERIAL_MIRROR) return objects[k].color.rgb * mirrored;
@@ -186,7 +186,7 @@ vec3 is_exit_analytic(vec3 o, vec3 d) {
     }
   }
   if (best < 0) return environment_radiance(d);
-  return is_shade_surface(best, o + hit.t * d, hit.normal, d, hit.uv);
+  return is_shade_surface(best, o + hit.t * d, hit.normal, d, object_albedo(best, hit.uv));
 }
 
 // The nearby-geometry colour map searched like the refractor's depth maps (alignment above

@@ -7,6 +7,7 @@ layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec2 v_uv;
 layout(location = 3) in float v_thickness;
 layout(location = 4) in vec3 v_hurley;
+layout(location = 5) in vec4 v_base;
 
 uniform int u_object;
 uniform mat4 u_view_projection;
@@ -17,6 +18,7 @@ struct IsSurface {
   vec3 position;  // world
   vec3 normal;    // world, unit, out of the solid
   vec2 uv;
+  vec3 albedo;    // diffuse: the albedo there (a mesh file's own base colour through its uvs)
   bool front;     // faces u_eye
 };
 
@@ -25,9 +27,11 @@ bool is_resolve_surface(out IsSurface s) {
   vec3 geometric = cross(dFdx(v_position), dFdy(v_position));
   s.position = v_position;
   s.normal = normalize(v_normal);
-  s.uv = vec2(0.0f);  // meshes carry no texture coordinates (as in the reference tracer)
+  s.uv = v_uv;
   int k = u_object;
+  s.albedo = objects[k].color.rgb;
   if (objects[k].kind.x == SHAPE_MESH) {
+    if (objects[k].kind.z == TEXTURE_MESH) s.albedo *= mesh_base_color(v_base, v_uv);
     if (dot(geometric, s.normal) < 0.0f) geometric = -geometric;
     s.front = dot(geometric, v_position - u_eye) < 0.0f;
     gl_FragDepth = gl_FragCoord.z;
@@ -52,6 +56,7 @@ bool is_resolve_surface(out IsSurface s) {
     s.position = u_eye + h.t * d;
     s.normal = h.normal;
     s.uv = h.uv;
+    s.albedo = object_albedo(k, h.uv);
     vec4 clip = u_view_projection * vec4(s.position, 1.0f);
     gl_FragDepth = clamp(0.5f * clip.z / clip.w + 0.5f, 0.0f, 1.0f);
   }

@@ -1,16 +1,17 @@
 // The scene on the GPU: objects (analytic shapes and geometry-field meshes) and lights in
 // shader storage buffers (runtime/gpu_scene.cpp fills them), the nearest hit of a world ray over
-// all objects (Li et al. 2006, TraceRay step 1-2), shadow rays and diffuse shading as the
-// reference tracer does them (preprocess/reference_tracer.cpp).
+// all objects (Li et al. 2006, TraceRay step 1-2) with its albedo (a mesh's own base colour from
+// its geometry image's albedo at the hit's uv), shadow rays and diffuse shading as the reference
+// tracer does them (preprocess/reference_tracer.cpp).
 
 #include "lib/contract.glsl"
 #include "lib/gpu_assets.glsl"
+#include "lib/objects.glsl"
 #include "lib/shapes.glsl"
 #include "lib/scene_environment.glsl"
 #include "lib/textures.glsl"
 
 // GpuObject, GpuLight and the MATERIAL_* codes are the contract's (shaders/lib/contract.glsl).
-layout(std430, binding = BUFFER_OBJECTS) readonly buffer Objects { GpuObject objects[]; };
 layout(std430, binding = BUFFER_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
 
 uniform int u_object_count;
@@ -26,7 +27,8 @@ struct SceneHit {
   int object;
   vec3 position;   // world
   vec3 normal;     // world, unit, out of the solid
-  vec2 uv;
+  vec2 uv;         // analytic: texture coordinates; mesh: geometry-image uv
+  vec3 albedo;     // diffuse hits found by trace_scene (or the G-buffer): the surface's albedo
 };
 
 SceneHit scene_miss() {
@@ -37,6 +39,7 @@ SceneHit scene_miss() {
   h.position = vec3(0.0f);
   h.normal = vec3(0.0f);
   h.uv = vec2(0.0f);
+  h.albedo = vec3(0.0f);
   return h;
 }
 
@@ -61,7 +64,7 @@ SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, bool 
     h.t = g.t;
     h.position = (objects[k].to_world * vec4(g.position, 1.0f)).xyz;
     local_normal = g.normal;
-    h.uv = vec2(0.0f);  // meshes carry no texture coordinates (as in the reference tracer)
+    h.uv = g.uv;
   } else {
     ShapeHit s = intersect_shape(objects[k].kind.x, objects[k].shape, objects[k].size.xyz, lo, ld,
                                  t_min, t_max);
@@ -75,6 +78,24 @@ SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, bool 
   h.object = k;
   h.normal = normalize(transpose(mat3(objects[k].to_object)) * local_normal);
   return h;
+}
+
+// Albedo of object k's diffuse material at texture coordinates uv (gfield::texture_albedo).
+vec3 object_albedo(int k, vec2 uv) {
+  return texture_albedo(objects[k].kind.z, objects[k].color.rgb, objects[k].checker0,
+                        objects[k].checker1, uv);
+}
+
+// Albedo of object k at a hit's uv (analytic: texture coordinates; mesh: geometry-image uv): a
+// mesh with its own base colour (TEXTURE_MESH) multiplies its colour by the geometry image's
+// albedo there.
+vec3 hit_albedo(int k, vec2 uv) {
+  if (objects[k].kind.x != SHAPE_MESH || objects[k].kind.z != TEXTURE_MESH ||
+      objects[k].asset.w == 0)
+    return object_albedo(k, uv);
+  ivec4 a = objects[k].asset;
+  gs_select_asset(a.x, a.y, a.z, objects[k].box_min.xyz, objects[k].box_max.xyz);
+  return objects[k].color.rgb * gs_image_albedo(uv);
 }
 
 // The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects; `opaque_only`
@@ -94,19 +115,14 @@ SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, int from) {
     if (!h.hit && k == from && opaque_only) h = intersect_object(k, o, d, t_min, best.t, true);
     if (h.hit && h.t < best.t) best = h;
   }
+  if (best.hit && !opaque_only) best.albedo = hit_albedo(best.object, best.uv);
   return best;
-}
-
-// Albedo of object k's diffuse material at texture coordinates uv (gfield::texture_albedo).
-vec3 object_albedo(int k, vec2 uv) {
-  return texture_albedo(objects[k].kind.z, objects[k].color.rgb, objects[k].checker0,
-                        objects[k].checker1, uv);
 }
 
 // Diffuse shading of a hit seen along `incoming`: albedo * (ambient + lights * cos / d^2), two
 // sided, with shadow rays blocked by diffuse and mirror objects.
 vec3 shade_diffuse(SceneHit hit, vec3 geometric_normal, vec3 incoming) {
-  vec3 albedo = object_albedo(hit.object, hit.uv);
+  vec3 albedo = hit.albedo;
   float facing = dot(incoming, geometric_normal) < 0.0f ? 1.0f : -1.0f;
   vec3 n = facing * hit.normal;
   vec3 g = facing * geometric_normal;

@@ -1,9 +1,20 @@
 // Diffuse albedo of the scene's textures as gfield::texture_albedo (core/src/scene.cpp) computes
 // it: plain colour, checker (squares along u and v in checker0.w / checker1.w) or the 6 x 4
 // colour chart (sRGB patches on black gaps, returned linear). Texture codes TEXTURE_* are the
-// contract's.
+// contract's. And the base colour a mesh's own vertex carries (runtime/gpu_assets.hpp).
 
 #include "lib/contract.glsl"
+
+// The meshes' own textures: linear colour, a layer each, GL_LINEAR and GL_REPEAT, t = v.
+layout(binding = UNIT_MESH_TEXTURES) uniform sampler2DArray u_mesh_textures;
+
+// The base colour of a mesh's surface at texture coordinates uv, from its vertices' `base`
+// (rgb: material colour x vertex colour; a: the texture's layer, -1 none): as
+// gfield::base_color_at (geometry/mesh_appearance.cpp), the texture looked up bilinearly.
+vec3 mesh_base_color(vec4 base, vec2 uv) {
+  if (base.a < -0.5f) return base.rgb;
+  return base.rgb * texture(u_mesh_textures, vec3(uv, base.a)).rgb;
+}
 
 vec3 texture_albedo(int texture_type, vec3 color, vec4 checker0, vec4 checker1, vec2 uv) {
   if (texture_type == TEXTURE_CHECKER) {

@@ -1,0 +1,89 @@
+#include "runtime/scene_assets.hpp"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "geometry/scene_file.hpp"
+#include "gfield/printable.hpp"
+
+extern char** environ;
+
+namespace gfield {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Runs `argv` (argv[0] looked up on the PATH when it has no '/') with its stdout sent to our
+/// stderr; its exit status, or -1 when it could not be started.
+int run_child(std::vector<std::string> argv) {
+  std::vector<char*> args;
+  for (std::string& a : argv)
+    args.push_back(a.data());
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
+  pid_t pid = 0;
+  std::fflush(stdout);
+  const int started = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  int status = 0;
+  if (started != 0 || waitpid(pid, &status, 0) != pid)
+    return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+bool has_gltf_meshes(const Scene& scene) {
+  return std::any_of(scene.meshes.begin(), scene.meshes.end(),
+                     [](const MeshAsset& m) { return !m.part.empty(); });
+}
+
+}  // namespace
+
+std::string gfield_executable() {
+  if (const char* env = std::getenv("GFIELD_CLI"); env != nullptr && env[0] != '\0')
+    return env;
+  std::error_code ec;
+  const fs::path executable = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec && fs::is_regular_file(executable.parent_path() / "gfield", ec))
+    return (executable.parent_path() / "gfield").string();
+  if (fs::is_regular_file(GFIELD_BUILD_TREE_CLI, ec))
+    return GFIELD_BUILD_TREE_CLI;
+  return "gfield";
+}
+
+bool load_view_scene(const std::string& filename, const std::string& asset_dir, Scene& scene,
+                     std::string& error) {
+  std::vector<std::string> warnings;
+  if (!load_scene_file(filename, scene, warnings, error))
+    return false;
+  for (const std::string& w : warnings)
+    std::fprintf(stderr, "gfield-view: warning: %s\n", printable(w).c_str());
+  if (has_gltf_meshes(scene)) {
+    std::vector<std::string> command = {gfield_executable(), "assets", filename};
+    if (!asset_dir.empty())
+      command.insert(command.end(), {"--assets", asset_dir});
+    const int status = run_child(command);
+    if (status != 0) {
+      error = filename + ": building its glTF meshes' assets failed (" + command[0] + " assets " +
+              (status < 0 ? "could not be started" : "exited with " + std::to_string(status)) + ")";
+      return false;
+    }
+    warnings.clear();
+    if (!load_scene_file(filename, scene, warnings, error))
+      return false;
+  }
+  if (!asset_dir.empty() && !use_asset_folder(asset_dir, scene, error)) {
+    error = "--assets " + error;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace gfield

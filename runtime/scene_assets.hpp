@@ -1,0 +1,25 @@
+#pragma once
+// The scene gfield-view shows: a JSON or glTF scene file (geometry/scene_file.hpp) whose glTF
+// meshes get their assets on demand. gfield-view links neither CGAL nor Embree, so it runs
+// `gfield assets SCENE [--assets DIR]` (preprocess/cli/assets.cpp): that builds what is missing
+// or out of date (the build-id rule of gfield batch) and leaves the rest; the scene is then read
+// again with the assets found.
+
+#include <string>
+#include <vector>
+
+#include "gfield/scene.hpp"
+
+namespace gfield {
+
+/// The gfield executable gfield-view runs: $GFIELD_CLI, else `gfield` beside gfield-view's own
+/// executable, else the build tree's, else "gfield" (found on the PATH).
+std::string gfield_executable();
+
+/// Reads `filename` into `scene`, printing its warnings on stderr ("gfield-view: warning: ...").
+/// When it holds glTF meshes, runs `gfield assets` first (its output goes to stderr). With
+/// `asset_dir`, the assets found there are used (use_asset_folder). False with a one-line error.
+bool load_view_scene(const std::string& filename, const std::string& asset_dir, Scene& scene,
+                     std::string& error);
+
+}  // namespace gfield
