@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gfield/image_metrics.hpp"
+#include "geometry/scene_file.hpp"
 #include "gfield/scene.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
@@ -131,7 +132,8 @@ bool psnr_per_mode(const std::string& name, const std::string& text, int size, i
   const fs::path file = kDir / (name + ".json");
   std::ofstream(file) << text;
   std::string error;
-  if (!load_scene(file.string(), scene, error)) {
+  std::vector<std::string> warnings;
+  if (!load_scene_file(file.string(), scene, warnings, error)) {
     ADD_FAILURE() << error;
     return false;
   }
@@ -211,7 +213,8 @@ TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
   // has no mesh objects: no field lookups, the three modes are the same picture.
   const std::pair<const char*, double> scenes[] = {{"mirror-torus-instances", 32.0},
                                                    {"two-mirror-spheres", 53.5},
-                                                   {"davis-wyman-color-chart", 25.5}};
+                                                   {"davis-wyman-color-chart", 25.5},
+                                                   {"textured-mirror", 32.0}};
   for (const auto& [name, min_psnr] : scenes) {
     SCOPED_TRACE(name);
     Scene scene;
