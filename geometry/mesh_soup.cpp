@@ -61,8 +61,12 @@ bool add_polygon(MeshSoup& soup, std::span<const std::int64_t> corners, std::str
   if (corners.size() > 3) {
     ++soup.stats.triangulated;
   }
-  // Attribute arrays start when the first face has the attribute: earlier faces get none.
+  // Attribute arrays start when the first face has the attribute: earlier faces get none. (An
+  // array is kept once it is not empty, or from a face that has the attribute: the first face's
+  // array is still empty when it starts.)
   const bool uvs = attributes.uvs.size() == corners.size();
+  const bool keep_uvs = uvs || !soup.corner_uvs.empty();
+  const bool keep_materials = attributes.material >= 0 || !soup.face_material.empty();
   if (uvs && soup.corner_uvs.empty()) {
     soup.corner_uvs.assign(3 * triangles.size(), -1);
   }
@@ -71,12 +75,12 @@ bool add_polygon(MeshSoup& soup, std::span<const std::int64_t> corners, std::str
   }
   for (size_t k = 1; k + 1 < corners.size(); ++k) {
     triangles.emplace_back(int(corners[0]), int(corners[k]), int(corners[k + 1]));
-    if (!soup.corner_uvs.empty()) {
+    if (keep_uvs) {
       for (const size_t c : {size_t(0), k, k + 1}) {
         soup.corner_uvs.push_back(uvs ? std::int32_t(attributes.uvs[c]) : -1);
       }
     }
-    if (!soup.face_material.empty()) {
+    if (keep_materials) {
       soup.face_material.push_back(attributes.material);
     }
   }

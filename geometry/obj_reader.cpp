@@ -66,9 +66,14 @@ bool read_vertex(text::Words& words, MeshSoup& soup, std::string& what) {
   if (read < 6) {
     return true;  // x y z [w]
   }
+  // Colours in [0, 1] are sRGB (as MeshLab writes them); one with a component above 1 is linear
+  // (HDR), all three components alike.
   glm::dvec3 color(v[3], v[4], v[5]);
-  for (int k = 0; k < 3; ++k) {
-    color[k] = color[k] >= 0.0 && color[k] <= 1.0 ? srgb_to_linear(float(color[k])) : color[k];
+  if (glm::all(glm::greaterThanEqual(color, glm::dvec3(0.0))) &&
+      glm::all(glm::lessThanEqual(color, glm::dvec3(1.0)))) {
+    for (int k = 0; k < 3; ++k) {
+      color[k] = srgb_to_linear(float(color[k]));
+    }
   }
   return set_vertex_color(soup, color, what);
 }
