@@ -238,9 +238,11 @@ bool node_lights(const GltfDocument& d, const std::vector<PlacedNode>& nodes, Sc
     double intensity = 1.0, c[3] = {1.0, 1.0, 1.0};
     std::string what;
     bool ok = number_at(l, {"intensity"}, 1.0, 0.0, kMaxColorComponent, intensity, what);
-    for (size_t k = 0; k < 3 && ok && l.contains("color") && l["color"].is_array(); ++k)
-      ok = l["color"].size() > k && l["color"][k].is_number() &&
-           number_at(l["color"], {}, 1.0, 0.0, kMaxColorComponent, c[k], what);
+    for (size_t k = 0; k < 3 && ok && l.contains("color") && l["color"].is_array(); ++k) {
+      ok = l["color"].size() > k && l["color"][k].is_number();
+      c[k] = ok ? l["color"][k].get<double>() : 0.0;
+      ok = ok && c[k] >= 0.0 && c[k] <= kMaxColorComponent;
+    }
     light.position = glm::vec3(placed.world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
     light.direction = glm::vec3(glm::normalize(glm::dvec3(placed.world * glm::dvec4(0, 0, -1, 0))));
     if (!ok || glm::any(glm::greaterThan(glm::abs(light.position), glm::vec3(1e15f)))) {
