@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -19,6 +21,8 @@
 
 namespace gfield {
 namespace {
+
+namespace fs = std::filesystem;
 
 /// The ground truth: `image` bilinearly between texel centres at (u, v), v up from the bottom
 /// row, repeating (the OBJ convention), written out here independently of the library's lookup.
@@ -113,6 +117,54 @@ TEST(AlbedoImage, SpotPaintedAt512MatchesTheExactTextureLookup) {
       "(%.3f/255), p99 %.4f (%.1f/255)\n",
       int(errors.size()), mean, mean * 255.0, p99, p99 * 255.0);
   EXPECT_LE(mean, 1.0 / 255.0);
+}
+
+// Filtering (issue 17: "each texel averages the texture over its footprint"): a 1024^2 checker
+// of single black and white texels on a square resampled into a 64^2 image, ~16^2 texture texels
+// per image texel. Its exact average over any footprint of many texels is 1/2; a point sample
+// would read 0 or 1 (aliasing).
+TEST(AlbedoImage, TexelsAverageTheTextureOverTheirFootprint) {
+  const fs::path dir = fs::path(GFIELD_TEST_TMP) / "albedo_image";
+  fs::create_directories(dir);
+  Image checker(1024, 1024);
+  for (int y = 0; y < 1024; ++y)
+    for (int x = 0; x < 1024; ++x)
+      checker.pixels[size_t(y) * 1024 + size_t(x)] = glm::vec3(float((x + y) % 2));
+  std::string error;
+  ASSERT_TRUE(save_image((dir / "checker.png").string(), checker, error)) << error;
+  std::ofstream(dir / "square.mtl") << "newmtl checker\nKd 1 1 1\nmap_Kd checker.png\n";
+  std::ofstream(dir / "square.obj")
+      << "mtllib square.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+         "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl checker\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+  TriangleMesh input;
+  MeshAppearance appearance;
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(
+      load_mesh(MeshSource{(dir / "square.obj").string(), ""}, input, &appearance, warnings, error))
+      << error;
+  GeometryImageOptions options;
+  options.size = 64;
+  options.measure = false;
+  GeometryImage image;
+  ParameterizedMesh pm;
+  GeometryImageReport report;
+  ASSERT_TRUE(build_geometry_image(input, options, image, pm, report, error, &appearance)) << error;
+  ASSERT_EQ(image.albedo.size(), image.position.size());
+  double worst = 0.0;
+  int covered = 0;
+  for (size_t t = 0; t < image.albedo.size(); ++t) {
+    if (image.coverage[t] < 1.0f)
+      continue;
+    ++covered;
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(double(image.albedo[t][c]) - 0.5));
+  }
+  std::printf(
+      "1024^2 single-texel checker in a 64^2 image: %d covered texels, largest "
+      "deviation from the mean 0.5: %.4f\n",
+      covered, worst);
+  EXPECT_GT(covered, 64 * 64 / 2);
+  EXPECT_LT(worst, 0.05);
 }
 
 }  // namespace
