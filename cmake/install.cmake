@@ -12,10 +12,12 @@ set(GFIELD_INSTALL_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/gfield)
 install(DIRECTORY shaders/ DESTINATION ${GFIELD_INSTALL_SHADER_DIR}
   FILES_MATCHING PATTERN "*.glsl" PATTERN "*.vert" PATTERN "*.frag")
 install(DIRECTORY data/scenes/ DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/scenes
-  FILES_MATCHING PATTERN "*.json")
-# The meshes and their sources only: assets that scripts/demo.sh built beside them stay behind.
+  FILES_MATCHING PATTERN "*.json" PATTERN "*.glb")
+# The meshes (with the material libraries and textures of the textured ones) and their sources
+# only: assets that scripts/demo.sh built beside them stay behind.
 install(DIRECTORY data/meshes/ DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/meshes
-  FILES_MATCHING PATTERN "*.obj" PATTERN "SOURCES.md" PATTERN "*.gimage.obj" EXCLUDE)
+  FILES_MATCHING PATTERN "*.obj" PATTERN "*.mtl" PATTERN "*.png" PATTERN "SOURCES.md"
+  PATTERN "*.gimage.obj" EXCLUDE)
 
 install(EXPORT gfieldTargets NAMESPACE gfield:: DESTINATION ${GFIELD_INSTALL_CMAKE_DIR})
 configure_package_config_file(cmake/gfieldConfig.cmake.in
