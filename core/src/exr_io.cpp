@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <memory>
 #include <mutex>
@@ -115,6 +116,13 @@ bool write_exr(const std::string& filename, const Imf::Header& header,
   return tmp.commit(error);
 }
 
+/// "(x, y, z)" for messages.
+std::string vec_text(glm::vec3 v) {
+  char text[96];
+  std::snprintf(text, sizeof(text), "(%g, %g, %g)", v.x, v.y, v.z);
+  return text;
+}
+
 // Reads and checks the gfield header attributes.
 bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHeader& out,
                  std::string& error) {
@@ -142,9 +150,8 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
       !glm::all(glm::lessThan(out.box.min, out.box.max)) ||
       glm::any(glm::greaterThan(glm::abs(out.box.min), glm::vec3(limit))) ||
       glm::any(glm::greaterThan(glm::abs(out.box.max), glm::vec3(limit)))) {
-    error = filename +
-            ": invalid box (gfield.boxMin must be below gfield.boxMax, both finite and "
-            "within +-1e16)";
+    error = filename + ": invalid box " + vec_text(out.box.min) + " - " + vec_text(out.box.max) +
+            " (gfield.boxMin must be below gfield.boxMax, both finite and within +-1e16)";
     return false;
   }
   const auto* source = h.findTypedAttribute<Imf::StringAttribute>("gfield.source");
@@ -169,11 +176,12 @@ bool check_texels(const std::string& filename, const GeometryImage& image, std::
     if (!glm::all(glm::lessThanEqual(glm::abs(image.position[t]), limit)) ||
         !glm::all(glm::lessThanEqual(glm::abs(image.normal[t]), normal_limit)) ||
         !(a >= 0.0f && a <= 1.0f)) {
-      error = filename +
-              ": position, normal or coverage not finite or out of range (positions within "
-              "+-1e16, normal components within +-2, coverage in [0,1]) at texel (" +
-              std::to_string(t % size_t(image.size)) + ", " +
-              std::to_string(t / size_t(image.size)) + ")";
+      error = filename + ": texel (" + std::to_string(t % size_t(image.size)) + ", " +
+              std::to_string(t / size_t(image.size)) + "): position " +
+              vec_text(image.position[t]) + ", normal " + vec_text(image.normal[t]) +
+              " or coverage " + std::to_string(a) +
+              " out of range (positions within +-1e16, normal components within +-2, coverage "
+              "in [0,1])";
       return false;
     }
   }
