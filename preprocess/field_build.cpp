@@ -372,9 +372,14 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
   field.box = image.box;
   field.uv.resize(count * size_t(stored));  // every entry is written below, row by row
 
-  const TableWriter writer{
-      image,    covered_patches(image), pm.corner_uv.data(), sample_points(image.box, n), n, stored,
-      capacity, field.uv.data()};
+  const TableWriter writer{.image = image,
+                           .patches = covered_patches(image),
+                           .corner_uv = pm.corner_uv.data(),
+                           .points = sample_points(image.box, n),
+                           .n = n,
+                           .stored = stored,
+                           .capacity = capacity,
+                           .table = field.uv.data()};
   tbb::combinable<Histogram> histograms(Histogram{});
   cast_packets(embree, image.box, n, capacity,
                [&](int entry, int first, const std::array<HitList, 8>& lanes, bool cast) {
@@ -395,6 +400,7 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
   s.layers = layers == kAutoLayers ? choose_layers(s) : layers;
   field.layers = s.layers;
   field.uv.resize(count * size_t(s.layers));
+  field.uv.shrink_to_fit();  // the layers beyond the chosen K
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (stats != nullptr) {
     *stats = s;

@@ -6,7 +6,8 @@
 // fetches below) and by the runtime's shaders. Keep it in the common subset: float literals with
 // an `f` suffix, no swizzles beyond .x/.y/.z/.w, no arrays as parameters, no `const` locals, no
 // builtin names (step, length, sign, in, out, ...) as variable names, callees defined before
-// their callers, GF_OUT/GF_INOUT for output parameters.
+// their callers, GF_OUT/GF_INOUT for output parameters, GF_IN for structs passed in (a const
+// reference in C++).
 //
 // The includer defines, before including this file (GLSL) or as members (C++):
 //   int  gf_samples_per_side();             N of the field
@@ -27,9 +28,11 @@
 // coordinates, t in [t_min, t_max]; a hit's t is along the given (unnormalised) direction.
 
 #ifdef __cplusplus
+#define GF_IN(T) const T&
 #define GF_OUT(T) T&
 #define GF_INOUT(T) T&
 #else
+#define GF_IN(T) in T
 #define GF_OUT(T) out T
 #define GF_INOUT(T) inout T
 #endif
@@ -288,7 +291,8 @@ struct GfLine {
 // line's origin: its projection onto the ray at least t_min + margin (for `last`, whose layers
 // run from the exit side: at most t_max - margin); the last layer K - 1 is taken as it is (K = 1
 // is the single-layer lookup). uv: that layer's stored uv. -1 when the line has no further hit.
-int gf_layer_beyond(GfLine line, int layer, int entry, int exit, float margin, GF_OUT(vec2) uv) {
+int gf_layer_beyond(GF_IN(GfLine) line, int layer, int entry, int exit, float margin,
+                    GF_OUT(vec2) uv) {
   uv = vec2(-1.0f);
   for (int l = layer; l < gf_field_layers(); l++) {
     uv = gf_field_texel(l, entry, exit);
@@ -308,7 +312,7 @@ int gf_layer_beyond(GfLine line, int layer, int entry, int exit, float margin, G
 
 // GF_MODE_NEAREST: the first stored hit beyond the origin (GF_UNVERIFIED_MARGIN) of the nearest
 // entry and exit samples.
-GfHit gf_trace_nearest(GfLine line) {
+GfHit gf_trace_nearest(GF_IN(GfLine) line) {
   vec2 uv;
   if (gf_layer_beyond(line, 0, line.k_entry.x, line.k_exit.x, line.margin, uv) < 0) {
     return gf_miss();
@@ -319,7 +323,7 @@ GfHit gf_trace_nearest(GfLine line) {
 // GF_MODE_LINEAR: the paper's linear kernel over the 16 pairs' first stored hits beyond the
 // origin (GF_UNVERIFIED_MARGIN): a hit when the pairs that hit carry at least half the weight;
 // uv = their weighted mean.
-GfHit gf_trace_linear(GfLine line) {
+GfHit gf_trace_linear(GF_IN(GfLine) line) {
   float weight = 0.0f;
   vec2 uv_sum = vec2(0.0f);
   for (int i = 0; i < 4; i++) {
@@ -344,7 +348,7 @@ GfHit gf_trace_linear(GfLine line) {
 // pair's next layer; one that fails to verify (the ray passes beside that surface) to the layer
 // after next: crossings of a closed surface alternate between entering and leaving it, and the
 // next one leaves the part the ray missed.
-GfHit gf_trace_refined(GfLine line, float diagonal) {
+GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   GfHit result = gf_miss();
   // An orthonormal basis of the plane orthogonal to d (Duff et al. 2017).
   vec3 dn = normalize(line.d);
@@ -432,7 +436,9 @@ GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
   line.t_min = t_min;
   line.t_max = t_max;
   line.last = last;
-  line.beyond = last ? t_max < t1 : t_min > t0;
+  // A start within 10^-4 of the chord from the box face is on the face (box-face rays, t0 ~ 0).
+  float face = 1.0e-4f * (t1 - t0);
+  line.beyond = last ? t_max < t1 - face : t_min > t0 + face;
   line.margin = GF_UNVERIFIED_MARGIN * diagonal / (float(n) * sqrt(dot(d, d)));
   if (mode == GF_MODE_NEAREST) {
     line.k_entry = ivec4(gf_nearest_sample(face_entry, st_entry, n));
