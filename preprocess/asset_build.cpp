@@ -1,10 +1,12 @@
 #include "preprocess/asset_build.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/atomic_file.hpp"
+#include "gfield/gpu_storage.hpp"
 #include "gfield/printable.hpp"
 #include "preprocess/asset_files.hpp"
 #include "preprocess/asset_staging.hpp"
@@ -25,8 +27,25 @@ nlohmann::json box_to_json(const Box& box) {
 }  // namespace
 
 nlohmann::json field_file_report_to_json(const FieldFileReport& r) {
-  return {{"samples_per_side", r.samples_per_side},
-          {"table_side", sample_count(r.samples_per_side)},
+  nlohmann::json coverage = nlohmann::json::object();
+  for (int k = 1; k <= kMaxFieldLayers; ++k) {
+    if (layer_coverage(r.build, k) >= 0.0) {
+      coverage[std::to_string(k)] = layer_coverage(r.build, k);
+    }
+  }
+  const int n = r.samples_per_side;
+  const int k = r.build.layers;
+  return {{"samples_per_side", n},
+          {"table_side", sample_count(n)},
+          {"layers", k},
+          {"layers_chosen", r.build.collected > kMaxFieldLayers},
+          {"lines_by_hits", r.build.lines_by_hits},
+          {"lines_holding_all_hits_by_layers", coverage},
+          {"gpu_bytes",
+           {{"geometry_image", geometry_image_gpu_bytes(r.image_size)},
+            {"geometry_field_8bit", field_gpu_bytes(n, k, 8)},
+            {"geometry_field_16bit", field_gpu_bytes(n, k, 16)},
+            {"geometry_field_float", field_gpu_bytes(n, k, 32)}}},
           {"memory_estimate_bytes", r.memory_estimate},
           {"rays", r.build.rays},
           {"hits", r.build.hits},
@@ -36,13 +55,33 @@ nlohmann::json field_file_report_to_json(const FieldFileReport& r) {
           {"file_bytes", r.file_bytes}};
 }
 
+std::string field_layers_summary(const FieldFileReport& r) {
+  const int k = r.build.layers;
+  char line[200];
+  const double coverage = layer_coverage(r.build, k);
+  std::snprintf(line, sizeof(line), "K = %d%s", k,
+                r.build.collected > kMaxFieldLayers ? " (chosen)" : "");
+  std::string text = line;
+  if (coverage >= 0.0) {
+    std::snprintf(line, sizeof(line), ", %.3f%% of the lines hold all their hits",
+                  100.0 * coverage);
+    text += line;
+  }
+  std::snprintf(line, sizeof(line), ", GPU %.1f MB at 8 bits, %.1f MB at 16 bits (image %.1f MB)",
+                double(field_gpu_bytes(r.samples_per_side, k, 8)) / 1e6,
+                double(field_gpu_bytes(r.samples_per_side, k, 16)) / 1e6,
+                double(geometry_image_gpu_bytes(r.image_size)) / 1e6);
+  return text + line;
+}
+
 bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, int samples_per_side,
-                      ExrPrecision precision, const std::string& output, FieldFileReport& report,
-                      std::string& error) {
+                      int layers, ExrPrecision precision, const std::string& output,
+                      FieldFileReport& report, std::string& error) {
   report.samples_per_side = samples_per_side;
+  report.image_size = image.size;
   report.memory_estimate =
-      field_memory_estimate(samples_per_side, precision == ExrPrecision::kHalf);
-  if (!check_field_size(samples_per_side, precision == ExrPrecision::kHalf, error)) {
+      field_memory_estimate(samples_per_side, layers, precision == ExrPrecision::kHalf);
+  if (!check_field_size(samples_per_side, layers, precision == ExrPrecision::kHalf, error)) {
     error = output + ": " + error;
     return false;
   }
@@ -54,7 +93,8 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
   }
   report.bvh_seconds = seconds_since(start);
   GeometryField field;
-  if (!build_geometry_field(pm, embree, image, samples_per_side, field, error, &report.build)) {
+  if (!build_geometry_field(pm, embree, image, samples_per_side, layers, field, error,
+                            &report.build)) {
     error = output + ": " + error;
     return false;
   }
@@ -89,6 +129,8 @@ nlohmann::json asset_options_to_json(const AssetOptions& o) {
   nlohmann::json options = {
       {"image", image_options_to_json(o.image)},
       {"samples_per_side", o.samples_per_side},
+      {"field_layers",
+       o.field_layers == kAutoLayers ? nlohmann::json("auto") : nlohmann::json(o.field_layers)},
       {"field_precision", o.field_precision == ExrPrecision::kHalf ? "half" : "float"},
       {"verify_rays", o.verify_rays}};
   if (!o.part.empty()) {
@@ -136,8 +178,9 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
                  const BuildInputs& inputs, nlohmann::json& report, std::string& error) {
   const auto start = std::chrono::steady_clock::now();
   if (options.samples_per_side < kMinSamplesPerSide ||
-      options.samples_per_side > kMaxSamplesPerSide) {
-    return check_field_size(options.samples_per_side, true, error);
+      options.samples_per_side > kMaxSamplesPerSide || options.field_layers < kAutoLayers ||
+      options.field_layers > kMaxFieldLayers) {
+    return check_field_size(options.samples_per_side, options.field_layers, true, error);
   }
   TriangleMesh mesh;
   MeshAppearance appearance;
@@ -172,8 +215,8 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
     return false;
   }
   FieldFileReport field_report;
-  if (!write_field_file(image, pm, options.samples_per_side, options.field_precision, staged.field,
-                        field_report, error)) {
+  if (!write_field_file(image, pm, options.samples_per_side, options.field_layers,
+                        options.field_precision, staged.field, field_report, error)) {
     return false;
   }
   report["geometry_field"] = field_file_report_to_json(field_report);

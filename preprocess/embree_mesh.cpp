@@ -22,6 +22,8 @@ bool EmbreeMesh::build(const TriangleMesh& mesh, std::string& error) {
   }
   scene_ = rtcNewScene(device_);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_MEDIUM);
+  // Casts may pass an intersection filter in their context (the layered field build).
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   // Embree reads vertex buffers with 16-byte loads: rtcSetNewGeometryBuffer pads for that.
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
@@ -75,13 +77,36 @@ void init_rayhit(RTCRayHit& rh, glm::vec3 origin, glm::vec3 direction, float t_n
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
 }
 
+namespace {
+
+/// Embree's intersect context with the triangle a ray must not hit.
+struct IgnoreContext {
+  RTCIntersectContext embree;  // first: Embree hands the filter a pointer to it
+  unsigned ignored = RTC_INVALID_GEOMETRY_ID;
+};
+
+void reject_ignored(const RTCFilterFunctionNArguments* args) {
+  const auto* context = reinterpret_cast<const IgnoreContext*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (RTCHitN_primID(args->hit, args->N, i) == context->ignored) {
+      args->valid[i] = 0;
+    }
+  }
+}
+
+}  // namespace
+
 RayHit intersect(const EmbreeMesh& mesh, glm::vec3 origin, glm::vec3 direction, float t_near,
-                 float t_far) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+                 float t_far, int ignored) {
+  IgnoreContext context;
+  rtcInitIntersectContext(&context.embree);
+  if (ignored >= 0) {
+    context.ignored = unsigned(ignored);
+    context.embree.filter = reject_ignored;
+  }
   RTCRayHit rh;
   init_rayhit(rh, origin, direction, t_near, t_far);
-  rtcIntersect1(mesh.scene(), &context, &rh);
+  rtcIntersect1(mesh.scene(), &context.embree, &rh);
   RayHit hit;
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
     return hit;

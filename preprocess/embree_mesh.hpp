@@ -43,9 +43,10 @@ struct RayHit {
   glm::vec3 geometric_normal{0.0f};
 };
 
-/// Casts origin + t * direction for t in [t_near, t_far] with rtcIntersect1.
+/// Casts origin + t * direction for t in [t_near, t_far] with rtcIntersect1, ignoring triangle
+/// `ignored` (>= 0: a ray leaving that triangle's surface; an intersection filter rejects it).
 RayHit intersect(const EmbreeMesh& mesh, glm::vec3 origin, glm::vec3 direction, float t_near = 0.0f,
-                 float t_far = 3.0e38f);
+                 float t_far = 3.0e38f, int ignored = -1);
 
 /// Initialises an Embree RTCRay(Hit) with the fields DESIGN.md warns about (mask = -1, flags = 0,
 /// geomID = instID = RTC_INVALID_GEOMETRY_ID).

@@ -16,6 +16,7 @@
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/build_id.hpp"
 #include "gfield/exr_io.hpp"
+#include "gfield/gpu_storage.hpp"
 #include "gfield/printable.hpp"
 
 namespace gfield {
@@ -50,12 +51,19 @@ struct Exact {
       : embree(e), mesh(m), normals(angle_weighted_vertex_normals(m)) {}
 };
 
-/// The exact first (or last) hit of `ray` in [t_min, t_max], cast with rtcIntersect1.
-Answer exact_answer(const Exact& reference, const Box& box, const Ray& ray, bool last) {
+/// The exact first (or last) hit of `ray` in [t_min, t_max], cast with rtcIntersect1. `ignored`
+/// >= 0: a ray leaving that triangle, cast from its origin (t >= 0) past the triangle itself.
+Answer exact_answer(const Exact& reference, const Box& box, const Ray& ray, bool last,
+                    int ignored = -1) {
   const EmbreeMesh& exact = reference.embree;
   Answer a;
   RayHit h;
-  if (!last) {
+  if (ignored >= 0) {
+    h = intersect(exact, ray.origin, ray.direction, 0.0f, ray.t_max, ignored);
+    if (h.hit) {
+      a.position = ray.origin + h.t * ray.direction;
+    }
+  } else if (!last) {
     h = intersect(exact, ray.origin, ray.direction, ray.t_min, ray.t_max);
     if (h.hit) {
       a.position = ray.origin + h.t * ray.direction;
@@ -89,11 +97,13 @@ Answer exact_answer(const Exact& reference, const Box& box, const Ray& ray, bool
   return a;
 }
 
+/// `ignored`: empty, or the triangle each ray leaves (surface rays).
 std::vector<Answer> exact_answers(const Exact& exact, const Box& box, const std::vector<Ray>& rays,
-                                  bool last) {
+                                  bool last, const std::vector<int>& ignored = {}) {
   std::vector<Answer> answers(rays.size());
-  tbb::parallel_for(size_t(0), rays.size(),
-                    [&](size_t i) { answers[i] = exact_answer(exact, box, rays[i], last); });
+  tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
+    answers[i] = exact_answer(exact, box, rays[i], last, ignored.empty() ? -1 : ignored[i]);
+  });
   return answers;
 }
 
@@ -144,12 +154,34 @@ glm::vec3 random_face_point(std::mt19937_64& rng, int face) {
   return face_point(face, glm::vec2(s, t));
 }
 
-/// Lookups and exact casts of one ray family against every reference mesh.
+/// Lookups and exact casts of one ray family against every reference mesh (`built_only`: the
+/// built mesh only: the surface rays leave its triangles).
 struct Family {
   std::string name;
   std::vector<Ray> rays;
-  bool with_last = false;  ///< also the last hit (segments only)
+  bool with_last = false;      ///< also the last hit (segments only)
+  std::vector<int> ignored;    ///< the triangle each ray leaves (surface rays), else empty
+  std::vector<int> layers{0};  ///< layers looked up per run (0: all K)
+  bool built_only = false;
 };
+
+/// Unit vector uniform on the sphere.
+glm::vec3 random_direction(std::mt19937_64& rng) {
+  std::normal_distribution<float> gauss(0.0f, 1.0f);
+  glm::vec3 g(gauss(rng), gauss(rng), gauss(rng));
+  while (glm::dot(g, g) < 1e-12f) {
+    g = glm::vec3(gauss(rng), gauss(rng), gauss(rng));
+  }
+  return glm::normalize(g);
+}
+
+/// Unit normal of triangle f as wound.
+glm::vec3 face_normal(const TriangleMesh& mesh, int f) {
+  const glm::ivec3 t = mesh.triangles[size_t(f)];
+  const glm::dvec3 n = glm::cross(mesh.positions[size_t(t[1])] - mesh.positions[size_t(t[0])],
+                                  mesh.positions[size_t(t[2])] - mesh.positions[size_t(t[0])]);
+  return glm::length(n) > 0.0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0.0f);
+}
 
 }  // namespace
 
@@ -205,6 +237,77 @@ std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed) {
   return rays;
 }
 
+SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, float offset,
+                                uint64_t seed) {
+  std::vector<double> cumulative(mesh.triangles.size());
+  double area = 0.0;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const glm::ivec3 t = mesh.triangles[f];
+    area +=
+        0.5 * glm::length(glm::cross(mesh.positions[size_t(t[1])] - mesh.positions[size_t(t[0])],
+                                     mesh.positions[size_t(t[2])] - mesh.positions[size_t(t[0])]));
+    cumulative[f] = area;
+  }
+  const float outward = float(outward_orientation(mesh));
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  SurfaceRays out;
+  for (size_t i = 0; i < count && area > 0.0; ++i) {
+    const size_t f =
+        size_t(std::upper_bound(cumulative.begin(), cumulative.end(), unit(rng) * area) -
+               cumulative.begin());
+    const int face = int(std::min(f, cumulative.size() - 1));
+    const glm::ivec3 t = mesh.triangles[size_t(face)];
+    const double r = std::sqrt(unit(rng));
+    const double b = unit(rng);
+    const glm::dvec3 p = (1.0 - r) * mesh.positions[size_t(t[0])] +
+                         r * (1.0 - b) * mesh.positions[size_t(t[1])] +
+                         r * b * mesh.positions[size_t(t[2])];
+    glm::vec3 d = random_direction(rng);
+    if (glm::dot(d, outward * face_normal(mesh, face)) < 0.0f) {
+      d = -d;
+    }
+    out.rays.push_back({glm::vec3(p), d, offset, 3.0e38f});
+    out.triangles.push_back(face);
+  }
+  return out;
+}
+
+SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
+                                size_t count, float offset, uint64_t seed) {
+  const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
+  const std::vector<Ray> view = random_view_rays(box, 4 * count, seed);
+  std::vector<RayHit> hits(view.size());
+  tbb::parallel_for(size_t(0), view.size(), [&](size_t i) {
+    hits[i] = intersect(embree, view[i].origin, view[i].direction, 0.0f, view[i].t_max);
+  });
+  SurfaceRays out;
+  for (size_t i = 0; i < view.size() && out.rays.size() < count; ++i) {
+    const RayHit& h = hits[i];
+    const glm::vec3 origin = view[i].origin + h.t * view[i].direction;
+    if (!h.hit ||
+        !std::isfinite(origin.x + origin.y + origin.z)) {  // t overflows at the 1e15 limit
+      continue;
+    }
+    const glm::vec3 d = view[i].direction;
+    const glm::ivec3 t = mesh.triangles[size_t(h.triangle)];
+    const glm::dvec3 smooth = (1.0 - h.u - h.v) * normals[size_t(t[0])] +
+                              double(h.u) * normals[size_t(t[1])] +
+                              double(h.v) * normals[size_t(t[2])];
+    glm::vec3 g = face_normal(mesh, h.triangle);
+    g = glm::dot(d, g) < 0.0f ? g : -g;
+    glm::vec3 n = glm::length(smooth) > 0.0 ? glm::vec3(glm::normalize(smooth)) : g;
+    n = glm::dot(d, n) < 0.0f ? n : -n;
+    glm::vec3 r = glm::reflect(d, n);
+    if (glm::dot(r, g) <= 0.0f) {
+      r = glm::reflect(d, g);
+    }
+    out.rays.push_back({origin, glm::normalize(r), offset, 3.0e38f});
+    out.triangles.push_back(h.triangle);
+  }
+  return out;
+}
+
 AccuracyStats verify_table(const GeometryField& field, const GeometryImage& image,
                            const EmbreeMesh& embree, const TriangleMesh& mesh, size_t pairs,
                            uint64_t seed) {
@@ -241,11 +344,11 @@ AccuracyStats verify_table(const GeometryField& field, const GeometryImage& imag
 
 AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
                             const TriangleMesh& mesh, const std::vector<Ray>& rays, LookupMode mode,
-                            bool last) {
+                            bool last, const std::vector<int>& ignored) {
   const Exact exact(embree, mesh);
   double seconds = 0.0;
   const std::vector<Answer> answers = lookup_answers(lookup, rays, mode, last, seconds);
-  const std::vector<Answer> cast = exact_answers(exact, lookup.field->box, rays, last);
+  const std::vector<Answer> cast = exact_answers(exact, lookup.field->box, rays, last, ignored);
   AccuracyStats s = compare(answers, cast, diagonal(lookup.field->box));
   s.seconds = seconds;
   return s;
@@ -296,14 +399,15 @@ bool check_report(const std::string& report_path, const GeometryImage& image,
 }
 
 /// The field, image and parameterised mesh of `files`, all of one build (and the report where
-/// there is one), and the lookup over them.
+/// there is one), and the lookup over them with the field as the GPU stores it at `field_bits`.
 bool load_asset(const AssetFiles& files, GeometryField& field, GeometryImage& image,
-                ParameterizedMesh& pm, FieldLookup& lookup, std::string& error) {
+                ParameterizedMesh& pm, int field_bits, FieldLookup& lookup, std::string& error) {
   if (!load_geometry_field(files.field, field, error) ||
       !load_geometry_image(files.image, image, error) ||
       !load_parameterized_mesh_of(image, files.image, pm, error)) {
     return false;
   }
+  field = quantized_field(field, field_bits);
   if (!mesh_inside_box(pm, image.box)) {
     error = files.parameterized_mesh + ": the mesh does not lie inside the geometry image's box (" +
             files.image + "): they do not belong together";
@@ -314,6 +418,103 @@ bool load_asset(const AssetFiles& files, GeometryField& field, GeometryImage& im
     return false;
   }
   return check_report(files.report, image, files.image, error);
+}
+
+struct Reference {
+  std::string label;
+  std::string path;
+  TriangleMesh mesh;
+};
+
+/// The lookup answers of one family in one mode (first or last hit) with some layers; `key`
+/// names the family in the report (surface families per K: surface_rays_k1, ...).
+struct Run {
+  std::string family;
+  std::string key;
+  std::string mode;
+  bool last;
+  std::vector<Answer> answers;
+  double seconds;
+};
+
+/// The ray families: box and view rays with all layers; rays leaving the built mesh's surface
+/// (random points and hemisphere directions; mirror reflections of view rays) with K = 1 and
+/// with all K.
+std::vector<Family> make_families(const GeometryField& field, const EmbreeMesh& built,
+                                  const TriangleMesh& mesh, const VerifyOptions& options) {
+  std::vector<Family> families;
+  Family box{"box_rays", random_box_rays(field.box, options.rays, options.seed), true, {}, {0}};
+  families.push_back(std::move(box));
+  Family view{
+      "view_rays", random_view_rays(field.box, options.rays, options.seed + 1), false, {}, {0}};
+  families.push_back(std::move(view));
+  const float offset = kSurfaceRayOffset * diagonal(field.box);
+  const std::vector<int> layers =
+      field.layers > 1 ? std::vector<int>{1, field.layers} : std::vector<int>{1};
+  SurfaceRays surface = random_surface_rays(mesh, options.rays, offset, options.seed + 3);
+  families.push_back(
+      {"surface_rays", std::move(surface.rays), false, std::move(surface.triangles), layers, true});
+  SurfaceRays mirror =
+      mirror_surface_rays(built, mesh, field.box, options.rays, offset, options.seed + 4);
+  families.push_back(
+      {"mirror_rays", std::move(mirror.rays), false, std::move(mirror.triangles), layers, true});
+  return families;
+}
+
+std::vector<Run> lookup_runs(const FieldLookup& lookup, const std::vector<Family>& families) {
+  std::vector<Run> runs;
+  for (const Family& family : families) {
+    for (int layers : family.layers) {
+      FieldLookup limited = lookup;
+      limited.layers = layers;
+      const std::string key =
+          layers > 0 ? family.name + "_k" + std::to_string(layers) : family.name;
+      for (LookupMode mode : kModes) {
+        for (bool last : {false, true}) {
+          if (last && (!family.with_last || mode != LookupMode::kRefined)) {
+            continue;
+          }
+          Run run{family.name, key, lookup_mode_name(mode), last, {}, 0.0};
+          run.answers = lookup_answers(limited, family.rays, mode, last, run.seconds);
+          runs.push_back(std::move(run));
+        }
+      }
+    }
+  }
+  return runs;
+}
+
+/// The report of one reference mesh: the table and every run against its exact casts.
+nlohmann::json reference_report(const Reference& reference, const EmbreeMesh& embree,
+                                const GeometryField& field, const GeometryImage& image,
+                                const std::vector<Family>& families, const std::vector<Run>& runs,
+                                const VerifyOptions& options) {
+  nlohmann::json r;
+  r["mesh"] = reference.label;
+  r["path"] = printable(reference.path);
+  r["table"] = accuracy_to_json(
+      verify_table(field, image, embree, reference.mesh, options.rays, options.seed + 2));
+  const Exact exact(embree, reference.mesh);
+  for (const Family& family : families) {
+    if (family.built_only && reference.label != "built") {
+      continue;
+    }
+    const std::vector<Answer> first =
+        exact_answers(exact, field.box, family.rays, false, family.ignored);
+    std::vector<Answer> last;
+    if (family.with_last) {
+      last = exact_answers(exact, field.box, family.rays, true);
+    }
+    for (const Run& run : runs) {
+      if (run.family != family.name) {
+        continue;
+      }
+      AccuracyStats s = compare(run.answers, run.last ? last : first, diagonal(field.box));
+      s.seconds = run.seconds;
+      r[run.key][run.last ? run.mode + "_last" : run.mode] = accuracy_to_json(s);
+    }
+  }
+  return r;
 }
 
 }  // namespace
@@ -329,16 +530,14 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   GeometryField field;
   GeometryImage image;
   ParameterizedMesh pm;
-  FieldLookup lookup;
-  if (!load_asset(read, field, image, pm, lookup, error)) {
+  if (!valid_field_bits(options.field_bits)) {
+    error = shown.field + ": field bits " + std::to_string(options.field_bits) + " not 8, 16 or 32";
     return false;
   }
-
-  struct Reference {
-    std::string label;
-    std::string path;
-    TriangleMesh mesh;
-  };
+  FieldLookup lookup;
+  if (!load_asset(read, field, image, pm, options.field_bits, lookup, error)) {
+    return false;
+  }
   std::vector<Reference> references;
   references.push_back({"built", shown.parameterized_mesh, pm.mesh});
   const MeshSource original = find_original(name, read.report, options, image.source);
@@ -350,71 +549,34 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
     }
     references.push_back(std::move(r));
   }
-
-  std::vector<Family> families;
-  families.push_back({"box_rays", random_box_rays(field.box, options.rays, options.seed), true});
-  families.push_back(
-      {"view_rays", random_view_rays(field.box, options.rays, options.seed + 1), false});
-
-  // Lookup answers once per family and mode; each reference casts its own exact answers.
-  struct Run {
-    std::string family;
-    std::string mode;
-    bool last;
-    std::vector<Answer> answers;
-    double seconds;
-  };
-  std::vector<Run> runs;
-  for (const Family& family : families) {
-    for (LookupMode mode : kModes) {
-      for (bool last : {false, true}) {
-        if (last && (!family.with_last || mode != LookupMode::kRefined)) {
-          continue;
-        }
-        Run run{family.name, lookup_mode_name(mode), last, {}, 0.0};
-        run.answers = lookup_answers(lookup, family.rays, mode, last, run.seconds);
-        runs.push_back(std::move(run));
-      }
-    }
+  EmbreeMesh built;
+  if (!built.build(pm.mesh, error)) {
+    error = shown.parameterized_mesh + ": " + error;
+    return false;
   }
+  const std::vector<Family> families = make_families(field, built, pm.mesh, options);
+  const std::vector<Run> runs = lookup_runs(lookup, families);
 
   report = nlohmann::json::object();
   report["name"] = printable(name);
   report["field"] = printable(shown.field);
   report["samples_per_side"] = field.samples_per_side;
+  report["layers"] = field.layers;
+  report["field_bits"] = options.field_bits;
   report["image_size"] = image.size;
   report["source"] = printable(image.source);
   report["rays_per_family"] = options.rays;
   report["seed"] = options.seed;
   report["references"] = nlohmann::json::array();
   for (const Reference& reference : references) {
-    EmbreeMesh embree;
-    if (!embree.build(reference.mesh, error)) {
+    EmbreeMesh other;
+    if (reference.label != "built" && !other.build(reference.mesh, error)) {
       error = reference.path + ": " + error;
       return false;
     }
-    nlohmann::json r;
-    r["mesh"] = reference.label;
-    r["path"] = printable(reference.path);
-    r["table"] = accuracy_to_json(
-        verify_table(field, image, embree, reference.mesh, options.rays, options.seed + 2));
-    const Exact exact(embree, reference.mesh);
-    for (const Family& family : families) {
-      const std::vector<Answer> first = exact_answers(exact, field.box, family.rays, false);
-      std::vector<Answer> last;
-      if (family.with_last) {
-        last = exact_answers(exact, field.box, family.rays, true);
-      }
-      for (const Run& run : runs) {
-        if (run.family != family.name) {
-          continue;
-        }
-        AccuracyStats s = compare(run.answers, run.last ? last : first, diagonal(field.box));
-        s.seconds = run.seconds;
-        r[family.name][run.last ? run.mode + "_last" : run.mode] = accuracy_to_json(s);
-      }
-    }
-    report["references"].push_back(std::move(r));
+    report["references"].push_back(reference_report(reference,
+                                                    reference.label == "built" ? built : other,
+                                                    field, image, families, runs, options));
   }
   if (original.file.empty()) {
     report["original_note"] = "original mesh file not found (use --original)";
@@ -425,14 +587,15 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
 std::string verify_report_to_text(const nlohmann::json& report) {
   std::ostringstream out;
   out << "verify " << report["name"].get<std::string>() << ": N = " << report["samples_per_side"]
-      << ", image " << report["image_size"] << "^2, " << report["rays_per_family"]
-      << " rays per family, seed " << report["seed"] << "\n";
+      << ", K = " << report["layers"] << ", uv bits " << report["field_bits"] << ", image "
+      << report["image_size"] << "^2, " << report["rays_per_family"] << " rays per family, seed "
+      << report["seed"] << "\n";
   out << "position error in % of the box diagonal, normal error in degrees\n";
   char line[256];
   for (const nlohmann::json& r : report["references"]) {
     out << "against the " << r["mesh"].get<std::string>() << " mesh ("
         << r["path"].get<std::string>() << "):\n";
-    std::snprintf(line, sizeof(line), "  %-22s %9s %8s %8s %8s %8s %8s %9s\n", "test", "hit/miss",
+    std::snprintf(line, sizeof(line), "  %-24s %9s %8s %8s %8s %8s %8s %9s\n", "test", "hit/miss",
                   "median", "p95", "p99", "n.med", "n.p95", "Mrays/s");
     out << line;
     const auto row = [&](const std::string& label, const nlohmann::json& s) {
@@ -440,19 +603,21 @@ std::string verify_report_to_text(const nlohmann::json& report) {
       const nlohmann::json& nrm = s["normal_error_degrees"];
       const double seconds = s["seconds"].get<double>();
       const double rate = seconds > 0.0 ? s["rays"].get<double>() / seconds / 1e6 : 0.0;
-      std::snprintf(line, sizeof(line), "  %-22s %8.3f%% %8.4f %8.4f %8.4f %8.3f %8.3f %9.2f\n",
+      std::snprintf(line, sizeof(line), "  %-24s %8.3f%% %8.4f %8.4f %8.4f %8.3f %8.3f %9.2f\n",
                     label.c_str(), 100.0 * s["hit_agreement"].get<double>(),
                     p["median"].get<double>(), p["p95"].get<double>(), p["p99"].get<double>(),
                     nrm["median"].get<double>(), nrm["p95"].get<double>(), rate);
       out << line;
     };
     row("table", r["table"]);
-    for (const char* family : {"box_rays", "view_rays"}) {
-      if (!r.contains(family)) {
-        continue;
-      }
-      for (const auto& [mode, s] : r[family].items()) {
-        row(std::string(family) + " " + mode, s);
+    for (const std::string prefix : {"box_rays", "view_rays", "surface_rays", "mirror_rays"}) {
+      for (const auto& [family, modes] : r.items()) {
+        if (family.rfind(prefix, 0) != 0) {
+          continue;
+        }
+        for (const auto& [mode, s] : modes.items()) {
+          row(family + " " + mode, s);
+        }
       }
     }
   }

@@ -42,6 +42,25 @@ std::vector<Ray> random_box_rays(const Box& box, size_t count, uint64_t seed);
 /// the box centre, each aimed at a uniform random point of the box (unit direction, t >= 0).
 std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed);
 
+/// Rays that start on the surface of a mesh, with the triangle each leaves (the exact cast
+/// ignores it). Unit directions; t_min = the offset (mesh units) the lookups start at.
+struct SurfaceRays {
+  std::vector<Ray> rays;
+  std::vector<int> triangles;
+};
+/// Lookups of rays leaving the surface start this far from their origin (in box diagonals), as
+/// the runtime offsets rays leaving a mesh by 1e-3 of its size.
+inline constexpr float kSurfaceRayOffset = 1e-3f;
+/// `count` rays from uniform random points of `mesh`'s surface (by area) in uniform random
+/// directions over the hemisphere of the face's outward normal.
+SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, float offset,
+                                uint64_t seed);
+/// Up to `count` mirror reflections of random_view_rays(box) at their exact first hits on
+/// `embree`'s mesh `mesh`: about the smooth normal (angle-weighted vertex normals), about the
+/// face's normal where that would leave below the face (as the runtime reflects).
+SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
+                                size_t count, float offset, uint64_t seed);
+
 /// The table itself (`embree` holds `mesh`): `pairs` random sample pairs on different faces; the
 /// exact cast from entry to exit sample vs the stored uv (its position read from the geometry
 /// image).
@@ -50,20 +69,26 @@ AccuracyStats verify_table(const GeometryField& field, const GeometryImage& imag
                            uint64_t seed);
 
 /// Each ray's lookup (first hit, or last hit with `last`) vs the exact cast. `embree` holds
-/// `mesh`.
+/// `mesh`. `ignored`: empty, or the triangle each ray leaves (SurfaceRays::triangles), which
+/// the exact cast from its origin ignores.
 AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
                             const TriangleMesh& mesh, const std::vector<Ray>& rays, LookupMode mode,
-                            bool last = false);
+                            bool last = false, const std::vector<int>& ignored = {});
 
 struct VerifyOptions {
   size_t rays = 1000000;  ///< arbitrary rays per family; the table subset uses as many pairs
   uint64_t seed = 1;
+  /// Bits per uv component the lookups read the field at, as the GPU stores it (8, 16; 32:
+  /// as loaded; gfield/gpu_storage.hpp quantized_field).
+  int field_bits = 32;
   std::string original;       ///< original mesh file; empty: from NAME.report.json or the source
   std::string original_part;  ///< glTF: its mesh (MeshSource::part); from the report with it
 };
 
 /// Verifies the asset NAME (NAME.gfield.exr, NAME.gimage.exr, NAME.gimage.obj) against the mesh
-/// it was built from and, where found, against the original file. The report: see
+/// it was built from and, where found, against the original file: the table, box rays and view
+/// rays with all K layers; against the built mesh also rays leaving its surface (surface_rays,
+/// mirror_rays), with the first layer (K = 1) and with all K. The report: see
 /// docs/geometry-field.md. False with an error "FILE: problem", also when the files (and
 /// NAME.report.json, where present) are of different builds (gfield/build_id.hpp).
 bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,

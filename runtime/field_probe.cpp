@@ -47,9 +47,8 @@ bool probe_field_gpu(const GpuAssets& assets, int asset, const std::vector<Ray>&
   glBindTextureUnit(gpu::UNIT_FIELDS, assets.fields());
   glBindTextureUnit(gpu::UNIT_PROBE_ORIGINS, textures[0].id());
   glBindTextureUnit(gpu::UNIT_PROBE_DIRECTIONS, textures[1].id());
-  glUniform1i(program.uniform("u_layer"), a.layer);
-  glUniform1i(program.uniform("u_samples_per_side"), a.samples_per_side);
-  glUniform1i(program.uniform("u_image_size"), a.image_size);
+  glUniform3i(program.uniform("u_asset"), a.layer, a.samples_per_side, a.image_size);
+  glUniform3i(program.uniform("u_field"), a.field_layer, a.field_layers, assets.field_bits());
   glUniform3fv(program.uniform("u_box_min"), 1, &a.box.min.x);
   glUniform3fv(program.uniform("u_box_max"), 1, &a.box.max.x);
   glUniform1i(program.uniform("u_mode"), int(mode));

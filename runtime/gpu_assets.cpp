@@ -1,6 +1,7 @@
 #include "runtime/gpu_assets.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include <glm/gtx/norm.hpp>
@@ -10,6 +11,7 @@
 #include "geometry/outward_normals.hpp"
 #include "gfield/exr_io.hpp"
 #include "gfield/field_lookup.hpp"
+#include "gfield/gpu_storage.hpp"
 
 namespace gfield {
 namespace {
@@ -167,26 +169,37 @@ bool GpuAssets::require(const Scene& scene, AssetNeeds needs, std::string& error
   if (assets_.size() != scene.meshes.size())
     assets_ = std::vector<GpuAsset>(scene.meshes.size());
   needs.images = needs.images || needs.fields || needs.parameterized_meshes;
+  const bool fields_loaded = loaded_.fields && field_bits_ == needs.field_bits;
   return (!needs.images || loaded_.images || load_images(scene, error)) &&
-         (!needs.fields || loaded_.fields || load_fields(scene, error)) &&
+         (!needs.fields || fields_loaded || load_fields(scene, needs.field_bits, error)) &&
          (!needs.source_meshes || loaded_.source_meshes || load_source_meshes(scene, error)) &&
          (!needs.parameterized_meshes || loaded_.parameterized_meshes ||
           load_parameterized_meshes(scene, error));
 }
 
 bool GpuAssets::upload(const std::vector<const GeometryImage*>& images,
-                       const std::vector<const GeometryField*>& fields, std::string& error) {
+                       const std::vector<const GeometryField*>& fields, int field_bits,
+                       std::string& error) {
   assets_ = std::vector<GpuAsset>(images.size());
   images_.clear();
   for (const GeometryImage* image : images)
     images_.push_back(*image);
   loaded_ = AssetNeeds{};
-  texture_bytes_ = 0;
   if (!upload_images("in-memory assets", error))
     return false;
-  std::vector<const GeometryField*> present(images.size(), nullptr);
-  std::copy_n(fields.begin(), std::min(fields.size(), present.size()), present.begin());
-  return upload_fields(present, "in-memory assets", error);
+  std::vector<int> sides(images.size(), 0), layers(images.size(), 0);
+  for (size_t m = 0; m < std::min(fields.size(), images.size()); ++m) {
+    sides[m] = fields[m] != nullptr ? field_side(*fields[m]) : 0;
+    layers[m] = fields[m] != nullptr ? fields[m]->layers : 0;
+  }
+  if (!make_field_array(sides, layers, field_bits, "in-memory assets", error))
+    return false;
+  for (size_t m = 0; m < std::min(fields.size(), images.size()); ++m) {
+    if (fields[m] != nullptr)
+      upload_field(m, *fields[m]);
+  }
+  loaded_.fields = true;
+  return true;
 }
 
 bool GpuAssets::load_images(const Scene& scene, std::string& error) {
@@ -234,55 +247,87 @@ bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
     assets_[m].image_size = n;
     assets_[m].box = image.box;
     assets_[m].albedo = !image.albedo.empty();
+    assets_[m].image_bytes = geometry_image_gpu_bytes(side);
   }
-  texture_bytes_ += size_t(side) * size_t(side) * size_t(count) * 40;
+  image_texture_bytes_ = geometry_image_gpu_bytes(side) * size_t(count);
   ++texture_uploads_;
   loaded_.images = true;
   return true;
 }
 
-bool GpuAssets::load_fields(const Scene& scene, std::string& error) {
-  std::vector<GeometryField> fields(scene.meshes.size());
-  std::vector<const GeometryField*> pointers;
+bool GpuAssets::load_fields(const Scene& scene, int bits, std::string& error) {
+  // Headers first (the array's size), then one field at a time: K float tables of 95 MB each at
+  // N = 24 need not all be in memory at once.
+  std::vector<int> sides(scene.meshes.size(), 0), layers(scene.meshes.size(), 0);
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const MeshAsset& mesh = scene.meshes[m];
+    ExrAssetHeader header;
     if (mesh.geometry_field.empty()) {
       error = missing_asset_message(mesh, scene.filename, "geometry field");
       return false;
     }
-    if (!load_geometry_field(mesh.geometry_field, fields[m], error))
+    if (!load_asset_header(mesh.geometry_field, header, error))
+      return false;
+    sides[m] = header.width;
+    layers[m] = header.layers;
+  }
+  if (!make_field_array(sides, layers, bits, scene.filename, error))
+    return false;
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const MeshAsset& mesh = scene.meshes[m];
+    GeometryField field;
+    if (!load_geometry_field(mesh.geometry_field, field, error))
       return false;
     FieldLookup lookup;
-    if (!make_field_lookup(fields[m], images_[m], lookup, error)) {
+    if (!make_field_lookup(field, images_[m], lookup, error)) {
       error = mesh.geometry_field + ": does not match " + mesh.geometry_image + " (" + error + ")";
       return false;
     }
-    pointers.push_back(&fields[m]);
+    upload_field(m, field);
   }
-  return upload_fields(pointers, scene.filename, error);
-}
-
-bool GpuAssets::upload_fields(const std::vector<const GeometryField*>& fields,
-                              const std::string& owner, std::string& error) {
-  int side = 1;
-  for (const GeometryField* field : fields)
-    side = field != nullptr ? std::max(side, field_side(*field)) : side;
-  const int count = std::max(1, int(fields.size()));
-  if (!fits_gl_limits(side, count, owner, error))
-    return false;
-  make_array(fields_, GL_RG32F, side, count);
-  for (size_t m = 0; m < fields.size(); ++m) {
-    if (fields[m] == nullptr)
-      continue;
-    const int n = field_side(*fields[m]);
-    glTextureSubImage3D(fields_.id(), 0, 0, 0, GLint(m), n, n, 1, GL_RG, GL_FLOAT,
-                        fields[m]->uv.data());
-    assets_[m].samples_per_side = fields[m]->samples_per_side;
-  }
-  texture_bytes_ += size_t(side) * size_t(side) * size_t(count) * 8;
-  ++texture_uploads_;
   loaded_.fields = true;
   return true;
+}
+
+bool GpuAssets::make_field_array(const std::vector<int>& sides, const std::vector<int>& layers,
+                                 int bits, const std::string& owner, std::string& error) {
+  int side = 1, total = 0;
+  for (size_t m = 0; m < sides.size(); ++m) {
+    side = std::max(side, sides[m]);
+    assets_[m].field_layer = total;
+    assets_[m].field_layers = 0;
+    assets_[m].samples_per_side = 0;
+    total += layers[m];
+  }
+  total = std::max(1, total);
+  if (!fits_gl_limits(side, total, owner, error))
+    return false;
+  const GLenum format = bits == 8 ? GL_RG8 : bits == 16 ? GL_RG16 : GL_RG32F;
+  make_array(fields_, format, side, total);
+  const size_t texel_bytes = 2 * size_t(bits / 8);
+  for (size_t m = 0; m < sides.size(); ++m)
+    assets_[m].field_bytes = size_t(side) * size_t(side) * size_t(layers[m]) * texel_bytes;
+  field_texture_bytes_ = size_t(side) * size_t(side) * size_t(total) * texel_bytes;
+  field_bits_ = bits;
+  ++texture_uploads_;
+  loaded_.fields = false;  // until every field is uploaded
+  return true;
+}
+
+void GpuAssets::upload_field(size_t m, const GeometryField& field) {
+  const int n = field_side(field);
+  const GLenum type = field_bits_ == 8    ? GL_UNSIGNED_BYTE
+                      : field_bits_ == 16 ? GL_UNSIGNED_SHORT
+                                          : GL_FLOAT;
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (int layer = 0; layer < field.layers; ++layer) {
+    const std::vector<uint8_t> texels = field_layer_texels(field, layer, field_bits_);
+    glTextureSubImage3D(fields_.id(), 0, 0, 0, assets_[m].field_layer + layer, n, n, 1, GL_RG, type,
+                        texels.data());
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  assets_[m].samples_per_side = field.samples_per_side;
+  assets_[m].field_layers = field.layers;
 }
 
 bool GpuAssets::load_source_meshes(const Scene& scene, std::string& error) {
@@ -337,7 +382,7 @@ bool GpuAssets::upload_mesh_textures(const std::vector<const Image*>& textures,
     glTextureSubImage3D(mesh_textures_.id(), 0, 0, 0, GLint(k), width, height, 1, GL_RGBA, GL_FLOAT,
                         texels.data());
   }
-  texture_bytes_ += size_t(width) * size_t(height) * size_t(count) * 8;
+  mesh_texture_bytes_ = size_t(width) * size_t(height) * size_t(count) * 8;  // RGBA16F
   return true;
 }
 
@@ -358,6 +403,22 @@ bool GpuAssets::load_parameterized_meshes(const Scene& scene, std::string& error
   }
   loaded_.parameterized_meshes = true;
   return true;
+}
+
+std::string asset_memory_lines(const Scene& scene, const GpuAssets& assets) {
+  std::string text;
+  const char* format = assets.field_bits() == 8    ? "RG8"
+                       : assets.field_bits() == 16 ? "RG16"
+                                                   : "RG32F";
+  for (size_t m = 0; m < assets.assets().size() && m < scene.meshes.size(); ++m) {
+    const GpuAsset& a = assets.assets()[m];
+    char line[256];
+    std::snprintf(line, sizeof(line), "%s: image %.1f MB, field K = %d x %s %.1f MB\n",
+                  std::filesystem::path(scene.meshes[m].file).filename().c_str(),
+                  double(a.image_bytes) / 1e6, a.field_layers, format, double(a.field_bytes) / 1e6);
+    text += line;
+  }
+  return text;
 }
 
 std::vector<unsigned> geometry_image_triangles(const GeometryImage& image) {

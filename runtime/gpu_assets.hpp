@@ -3,8 +3,10 @@
 //   - geometry images: two GL_TEXTURE_2D_ARRAY RGBA32F textures, layer = asset, texel (i, j) =
 //     P (mesh coordinates) with coverage A in w, and the unit normal; an n x n image fills the
 //     corner [0,n)^2 of its layer;
-//   - geometry fields: GL_TEXTURE_2D_ARRAY RG32F, texel (exit, entry) = the stored uv of the pair;
-//     a (6N^2)^2 table fills the corner of its layer (3D textures stop at 2048 on Mesa, a 2D array
+//   - geometry fields: one GL_TEXTURE_2D_ARRAY, a field's K layers in K consecutive array layers,
+//     texel (exit, entry) = the code of the stored uv of the pair's hit (RG8 or RG16 normalised
+//     integers, or RG32F: the contract's gf_decode_field_texel, gfield/gpu_storage.hpp); a
+//     (6N^2)^2 table fills the corner of its layer (3D textures stop at 2048 on Mesa, a 2D array
 //     layer reaches 16384);
 //   - geometry-image albedo: GL_TEXTURE_2D_ARRAY RGBA16F, layer = asset (white for an image
 //     without albedo: GpuAsset::albedo);
@@ -64,6 +66,7 @@ struct GpuMesh {
 struct AssetNeeds {
   bool images = false;                ///< geometry images
   bool fields = false;                ///< geometry fields (and their images)
+  int field_bits = 8;                 ///< bits per uv component of the fields: 8, 16, 32 (float)
   bool source_meshes = false;         ///< the mesh files themselves
   bool parameterized_meshes = false;  ///< NAME.gimage.obj (and the images)
 };
@@ -73,6 +76,10 @@ struct GpuAsset {
   int layer = -1;            ///< layer in the texture arrays (-1: no geometry image loaded)
   int image_size = 0;        ///< n of the geometry image
   int samples_per_side = 0;  ///< N of the field (0: no field loaded)
+  int field_layer = 0;       ///< first layer of the field in the field array
+  int field_layers = 0;      ///< K, the field's layers
+  size_t image_bytes = 0;    ///< GPU bytes of its geometry image (its layers of the arrays)
+  size_t field_bytes = 0;    ///< GPU bytes of its field (its K layers of the field array)
   Box box;  ///< the geometry image's box (mesh coordinates), else the mesh file's bounds
   bool albedo = false;  ///< the geometry image holds albedo (in GpuAssets::albedo)
   Box mesh_bounds;      ///< bounds of the mesh file's vertices (with the source mesh)
@@ -87,10 +94,10 @@ class GpuAssets {
   /// its image, or a size beyond the GL limits.
   bool require(const Scene& scene, AssetNeeds needs, std::string& error);
   /// Uploads in-memory geometry images, one asset each, and their fields (fields[i] null or
-  /// `fields` empty: none), replacing what is loaded (tests, tools that make assets in memory).
-  /// False when a size exceeds the GL limits.
+  /// `fields` empty: none) at `field_bits` bits, replacing what is loaded (tests, tools that make
+  /// assets in memory). False when a size exceeds the GL limits.
   bool upload(const std::vector<const GeometryImage*>& images,
-              const std::vector<const GeometryField*>& fields, std::string& error);
+              const std::vector<const GeometryField*>& fields, int field_bits, std::string& error);
 
   const std::vector<GpuAsset>& assets() const { return assets_; }
   GLuint positions() const { return positions_.id(); }
@@ -98,17 +105,24 @@ class GpuAssets {
   GLuint fields() const { return fields_.id(); }
   GLuint albedo() const { return albedo_.id(); }
   GLuint mesh_textures() const { return mesh_textures_.id(); }
+  /// Bits per uv component of the fields loaded (8, 16, 32).
+  int field_bits() const { return field_bits_; }
   /// Bytes of texture memory held.
-  size_t texture_bytes() const { return texture_bytes_; }
+  size_t texture_bytes() const {
+    return image_texture_bytes_ + field_texture_bytes_ + mesh_texture_bytes_;
+  }
   /// How many times texture arrays were filled: a scene edit must not change it.
   int texture_uploads() const { return texture_uploads_; }
 
  private:
   bool load_images(const Scene& scene, std::string& error);
-  bool load_fields(const Scene& scene, std::string& error);
+  bool load_fields(const Scene& scene, int bits, std::string& error);
   bool upload_images(const std::string& owner, std::string& error);
-  bool upload_fields(const std::vector<const GeometryField*>& fields, const std::string& owner,
-                     std::string& error);
+  /// Allocates the field array for fields of `sides` (table side, 0: none) and `layers`.
+  bool make_field_array(const std::vector<int>& sides, const std::vector<int>& layers, int bits,
+                        const std::string& owner, std::string& error);
+  /// Uploads `field` as the field of asset m (after make_field_array).
+  void upload_field(size_t m, const GeometryField& field);
   bool load_source_meshes(const Scene& scene, std::string& error);
   bool upload_mesh_textures(const std::vector<const Image*>& textures, const std::string& owner,
                             std::string& error);
@@ -122,9 +136,15 @@ class GpuAssets {
   GlTexture fields_;
   GlTexture albedo_;
   GlTexture mesh_textures_;
-  size_t texture_bytes_ = 0;
+  size_t image_texture_bytes_ = 0;  ///< geometry images (positions, normals, albedo)
+  size_t field_texture_bytes_ = 0;  ///< the field array
+  size_t mesh_texture_bytes_ = 0;   ///< the meshes' own textures
   int texture_uploads_ = 0;
+  int field_bits_ = 0;
 };
+
+/// One line per asset: "NAME: image 10.5 MB, field K = 4 x RG8 95.6 MB" (the scene's mesh files).
+std::string asset_memory_lines(const Scene& scene, const GpuAssets& assets);
 
 /// Grid triangles of a geometry image: two per quad of texel centres whose 4 corners are covered
 /// (A > 0.5), as indices j * n + i. Quads are split along the shorter diagonal.

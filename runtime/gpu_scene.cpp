@@ -59,6 +59,7 @@ gpu::GpuObject gpu_object(const GpuScene& gpu_scene, int k) {
     const GpuAsset& asset = gpu_scene.assets().assets()[size_t(o.shape.mesh)];
     g.asset =
         glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, asset.albedo ? 1 : 0);
+    g.field = glm::ivec4(asset.field_layer, asset.field_layers, gpu_scene.assets().field_bits(), 0);
   }
   return g;
 }

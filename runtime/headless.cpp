@@ -118,8 +118,10 @@ int render_headless(ViewSession& session, const Scene& scene,
   if (o.bench) {
     std::printf("renderer: %s (%s, %s)\n", context.renderer().c_str(), context.version().c_str(),
                 context.platform().c_str());
-    std::printf("scene: %s; load + upload %.3f s; texture memory %.1f MB\n", scene.filename.c_str(),
-                load_s, double(session.scene().assets().texture_bytes()) / 1e6);
+    std::printf("scene: %s; load + upload %.3f s; texture memory %.1f MB\n%s",
+                scene.filename.c_str(), load_s,
+                double(session.scene().assets().texture_bytes()) / 1e6,
+                asset_memory_lines(scene, session.scene().assets()).c_str());
     print_bench(session.method(session.current()), run, o);
   }
   if (!o.reference.empty() && !compare_with_reference(run.image, o, error))

@@ -358,6 +358,8 @@ void panel(ViewerState& s, const GlContext& context, const FrameStats& stats, do
   for (const auto& [name, value] : stats.counts)
     ImGui::Text("%s %.0f", name.c_str(), value);
   ImGui::Text("texture memory %.1f MB", double(s.session->scene().assets().texture_bytes()) / 1e6);
+  const GpuScene& scene = s.session->scene();
+  ImGui::TextUnformatted(asset_memory_lines(scene.scene(), scene.assets()).c_str());
   ImGui::Separator();
   methods_section(s);
   ImGui::Separator();

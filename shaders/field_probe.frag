@@ -5,9 +5,8 @@
 
 layout(binding = UNIT_PROBE_ORIGINS) uniform sampler2D u_ray_origins;
 layout(binding = UNIT_PROBE_DIRECTIONS) uniform sampler2D u_ray_directions;
-uniform int u_layer;
-uniform int u_samples_per_side;
-uniform int u_image_size;
+uniform ivec3 u_asset;  // image layer, N, image size n (GpuObject.asset)
+uniform ivec3 u_field;  // first field layer, layers K, bits (GpuObject.field)
 uniform vec3 u_box_min;
 uniform vec3 u_box_max;
 uniform int u_mode;
@@ -19,7 +18,7 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 origin = texelFetch(u_ray_origins, pixel, 0);
   vec4 direction = texelFetch(u_ray_directions, pixel, 0);
-  gs_select_asset(u_layer, u_samples_per_side, u_image_size, u_box_min, u_box_max);
+  gs_select_asset(u_asset, u_field, u_box_min, u_box_max);
   GfHit h = gf_trace(origin.xyz, direction.xyz, origin.w, direction.w, u_mode, u_last);
   o_hit = h.hit ? vec4(1.0f, h.t, h.uv) : vec4(0.0f, 0.0f, -1.0f, -1.0f);
 }

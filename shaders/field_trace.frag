@@ -7,8 +7,10 @@
 //   up to u_max_depth.
 // Recursion becomes a small stack of weighted rays. Dielectrics (the paper's "generalised to
 // refraction") split into the Fresnel-weighted reflection and the refraction; inside a mesh the
-// exit is the LAST hit along the line (the field read from the exit side); total internal
-// reflection keeps the ray inside. Shading follows the reference tracer (reference_tracer.cpp).
+// exit is the field's first hit beyond the ray's origin (its layers hold the hits behind the
+// entry), and a ray leaving a non-convex object looks the object up again beyond its origin (the
+// air gap, then the next part); total internal reflection keeps the ray inside. Shading follows
+// the reference tracer (reference_tracer.cpp).
 #include "lib/scene.glsl"
 #include "lib/optics.glsl"
 
@@ -129,9 +131,9 @@ void main() {
       traced++;
       SceneHit next;
       if (ray.inside >= 0) {
-        // Inside a dielectric: its own surface, from the exit side for meshes.
+        // Inside a dielectric: its own surface beyond the origin (the exit).
         float t_min = objects[ray.inside].kind.x == SHAPE_MESH ? object_epsilon(ray.inside) : 0.0f;
-        next = intersect_object(ray.inside, ray.origin, ray.direction, t_min, 3.0e38f, true);
+        next = intersect_object(ray.inside, ray.origin, ray.direction, t_min, 3.0e38f);
       } else {
         next = trace_scene(ray.origin, ray.direction, 3.0e38f, false, ray.from);
       }

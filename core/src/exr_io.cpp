@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <memory>
 #include <mutex>
@@ -115,6 +116,13 @@ bool write_exr(const std::string& filename, const Imf::Header& header,
   return tmp.commit(error);
 }
 
+/// "(x, y, z)" for messages.
+std::string vec_text(glm::vec3 v) {
+  char text[96];
+  std::snprintf(text, sizeof(text), "(%g, %g, %g)", v.x, v.y, v.z);
+  return text;
+}
+
 // Reads and checks the gfield header attributes.
 bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHeader& out,
                  std::string& error) {
@@ -142,9 +150,8 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
       !glm::all(glm::lessThan(out.box.min, out.box.max)) ||
       glm::any(glm::greaterThan(glm::abs(out.box.min), glm::vec3(limit))) ||
       glm::any(glm::greaterThan(glm::abs(out.box.max), glm::vec3(limit)))) {
-    error = filename +
-            ": invalid box (gfield.boxMin must be below gfield.boxMax, both finite and "
-            "within +-1e16)";
+    error = filename + ": invalid box " + vec_text(out.box.min) + " - " + vec_text(out.box.max) +
+            " (gfield.boxMin must be below gfield.boxMax, both finite and within +-1e16)";
     return false;
   }
   const auto* source = h.findTypedAttribute<Imf::StringAttribute>("gfield.source");
@@ -153,6 +160,8 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
   out.build_id = build_id ? build_id->value() : std::string();
   const auto* samples = h.findTypedAttribute<Imf::IntAttribute>("gfield.samplesPerSide");
   out.samples_per_side = samples ? samples->value() : 0;
+  const auto* layers = h.findTypedAttribute<Imf::IntAttribute>("gfield.layers");
+  out.layers = layers ? layers->value() : (out.format == kFieldTag && out.version == 1 ? 1 : 0);
   const Imath::Box2i dw = h.dataWindow();
   out.width = dw.max.x - dw.min.x + 1;
   out.height = dw.max.y - dw.min.y + 1;
@@ -173,35 +182,34 @@ bool check_texels(const std::string& filename, const GeometryImage& image, std::
     if (!glm::all(glm::lessThanEqual(glm::abs(image.position[t]), limit)) ||
         !glm::all(glm::lessThanEqual(glm::abs(image.normal[t]), normal_limit)) ||
         !(a >= 0.0f && a <= 1.0f) || !albedo_ok) {
-      error = filename +
-              ": position, normal, coverage or albedo not finite or out of range (positions "
-              "within +-1e16, normal components within +-2, coverage in [0,1], albedo in "
-              "[0,1e6]) at texel (" +
-              std::to_string(t % size_t(image.size)) + ", " +
-              std::to_string(t / size_t(image.size)) + ")";
+      error = filename + ": texel (" + std::to_string(t % size_t(image.size)) + ", " +
+              std::to_string(t / size_t(image.size)) + "): position " +
+              vec_text(image.position[t]) + ", normal " + vec_text(image.normal[t]) +
+              ", coverage " + std::to_string(a) +
+              (image.albedo.empty() ? std::string() : " or albedo " + vec_text(image.albedo[t])) +
+              " out of range (positions within +-1e16, normal components within +-2, coverage "
+              "in [0,1], albedo in [0,1e6])";
       return false;
     }
   }
   return true;
 }
 
-/// The format tag is `tag` and the version within [1, max_version].
+/// The format tag is `tag` and the version within [oldest_version, newest_version].
 bool check_format(const std::string& filename, const ExrAssetHeader& header, const char* tag,
-                  int max_version, std::string& error) {
+                  int oldest_version, int newest_version, std::string& error) {
   if (header.format != tag) {
     error =
         filename + ": wrong format tag '" + printable(header.format) + "' (expected '" + tag + "')";
     return false;
   }
-  if (header.version < 1 || header.version > max_version) {
-    std::string readable = std::to_string(max_version);
-    if (max_version > 1) {
-      readable.insert(0, "s 1 to ");
-    } else {
-      readable.insert(0, " ");
-    }
+  if (header.version < oldest_version || header.version > newest_version) {
+    const std::string versions = oldest_version == newest_version
+                                     ? "version " + std::to_string(newest_version)
+                                     : "versions " + std::to_string(oldest_version) + " to " +
+                                           std::to_string(newest_version);
     error = filename + ": unsupported format version " + std::to_string(header.version) +
-            " (this build reads version" + readable + ")";
+            " (this build reads " + versions + ")";
     return false;
   }
   return true;
@@ -251,6 +259,123 @@ bool read_pixels(const std::string& filename, Imf::InputFile& file,
   } catch (const std::exception& e) {
     error = filename + ": truncated or corrupt pixel data (" + exr_exception_text(e) + ")";
     return false;
+  }
+  return true;
+}
+
+// Channel of layer `layer` in a version-2 field: hit0.U, hit0.V, hit1.U, ...
+std::string field_channel(int layer, char component) {
+  return "hit" + std::to_string(layer) + "." + component;
+}
+
+// The channels of a field's layers (U, V per layer, in order) after checking that they match
+// the header: version 1 holds U and V; version 2 holds hitL.U and hitL.V for the gfield.layers
+// layers and no others. Every channel HALF or FLOAT, all alike.
+bool check_field_channels(const std::string& filename, const Imf::Header& h,
+                          const ExrAssetHeader& header, std::vector<std::string>& names,
+                          std::string& error) {
+  if (header.layers < 1 || header.layers > kMaxFieldLayers) {
+    error = filename + ": gfield.layers " + std::to_string(header.layers) +
+            " missing or out of range [1, " + std::to_string(kMaxFieldLayers) + "]";
+    return false;
+  }
+  if (header.version == 1 && header.layers != 1) {
+    error = filename + ": a version-1 field holds one layer, but gfield.layers says " +
+            std::to_string(header.layers);
+    return false;
+  }
+  names = header.version == 1 ? std::vector<std::string>{"U", "V"} : std::vector<std::string>{};
+  for (int layer = 0; header.version > 1 && layer < header.layers; ++layer) {
+    names.push_back(field_channel(layer, 'U'));
+    names.push_back(field_channel(layer, 'V'));
+  }
+  int stored_layers = 0;
+  for (auto c = h.channels().begin(); c != h.channels().end(); ++c) {
+    const std::string name = c.name();
+    stored_layers += int(name.rfind("hit", 0) == 0 && name.size() > 2 &&
+                         name.compare(name.size() - 2, 2, ".U") == 0);
+  }
+  if (header.version > 1 && stored_layers != header.layers) {
+    error = filename + ": " + std::to_string(stored_layers) +
+            " hit layers in the channels, but gfield.layers says " + std::to_string(header.layers);
+    return false;
+  }
+  const Imf::Channel* first = nullptr;
+  for (const std::string& name : names) {
+    const Imf::Channel* channel = h.channels().findChannel(name);
+    if (!channel) {
+      error = filename + ": missing channel '" + name +
+              "' (gfield.layers = " + std::to_string(header.layers) + ")";
+      return false;
+    }
+    if (channel->type != Imf::HALF && channel->type != Imf::FLOAT) {
+      error = filename + ": channel '" + name + "' is not HALF or FLOAT";
+      return false;
+    }
+    if (channel->xSampling != 1 || channel->ySampling != 1) {
+      error = filename + ": channel '" + name + "' is subsampled";
+      return false;
+    }
+    first = first ? first : channel;
+    if (channel->type != first->type) {
+      error = filename + ": channel '" + name + "' is " +
+              (channel->type == Imf::HALF ? "HALF" : "FLOAT") + " but '" + names[0] + "' is " +
+              (first->type == Imf::HALF ? "HALF" : "FLOAT") + " (one bit depth for all layers)";
+      return false;
+    }
+  }
+  return true;
+}
+
+// N in range and the data window (6N^2)^2.
+bool check_field_size(const std::string& filename, const ExrAssetHeader& header,
+                      std::string& error) {
+  const int n = header.samples_per_side;
+  if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide) {
+    error = filename + ": gfield.samplesPerSide " + std::to_string(n) + " missing or out of range";
+    return false;
+  }
+  const int side = sample_count(n);
+  if (header.width != side || header.height != side) {
+    error = filename + ": geometry field is " + std::to_string(header.width) + "x" +
+            std::to_string(header.height) + ", expected " + std::to_string(side) + "x" +
+            std::to_string(side) + " for N = " + std::to_string(n);
+    return false;
+  }
+  return true;
+}
+
+// Every stored value is a uv in [0,1]^2, a miss or "no ray"; along a line, a miss is followed by
+// misses only, and "no ray" holds in every layer or none.
+bool check_field_values(const std::string& filename, const GeometryField& field,
+                        std::string& error) {
+  const size_t side = size_t(field_side(field));
+  const size_t count = field_layer_size(field);
+  const auto where = [&](size_t k) {
+    return " at entry " + std::to_string(k / side) + ", exit " + std::to_string(k % side);
+  };
+  for (size_t k = 0; k < count; ++k) {
+    for (int layer = 0; layer < field.layers; ++layer) {
+      const glm::vec2 v = field.uv[size_t(layer) * count + k];
+      const bool hit = v.x >= 0.0f && v.x <= 1.0f && v.y >= 0.0f && v.y <= 1.0f;
+      const bool miss = v.x == kFieldMiss && v.y == kFieldMiss;
+      const bool no_ray = v.x == kFieldNoRay && v.y == kFieldNoRay;
+      if (!hit && !miss && !no_ray) {
+        error = filename + ": invalid uv (" + std::to_string(v.x) + ", " + std::to_string(v.y) +
+                ")" + where(k) + ", layer " + std::to_string(layer);
+        return false;
+      }
+      if (layer == 0) {
+        continue;
+      }
+      const glm::vec2 before = field.uv[size_t(layer - 1) * count + k];
+      if (no_ray != (before.x == kFieldNoRay) || (hit && before.x < 0.0f)) {
+        error = filename + ": layer " + std::to_string(layer) + " disagrees with layer " +
+                std::to_string(layer - 1) + where(k) +
+                " (a hit after a miss, or \"no ray\" in some layers only)";
+        return false;
+      }
+    }
   }
   return true;
 }
@@ -305,7 +430,7 @@ bool load_geometry_image(const std::string& filename, GeometryImage& image, std:
   ExrAssetHeader header;
   bool albedo = false;
   if (!read_header(filename, file->header(), header, error) ||
-      !check_format(filename, header, kImageTag, kGeometryImageVersion, error) ||
+      !check_format(filename, header, kImageTag, 1, kGeometryImageVersion, error) ||
       !check_channels(filename, file->header(), {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A"},
                       error) ||
       !albedo_channels(filename, file->header(), albedo, error)) {
@@ -366,72 +491,67 @@ bool save_geometry_field(const std::string& filename, const GeometryField& field
     error = filename + ": samples per side " + std::to_string(n) + " out of range";
     return false;
   }
-  const int side = field_side(field);
-  if (field.uv.size() != size_t(side) * size_t(side)) {
-    error = filename + ": geometry field table does not match N = " + std::to_string(n);
+  if (field.layers < 1 || field.layers > kMaxFieldLayers) {
+    error = filename + ": " + std::to_string(field.layers) + " layers out of range [1, " +
+            std::to_string(kMaxFieldLayers) + "]";
     return false;
   }
-  Imf::Header header =
-      make_header(side, side, kFieldTag, kFormatVersion, field.box, field.source, field.build_id);
+  const int side = field_side(field);
+  if (field.uv.size() != field_layer_size(field) * size_t(field.layers)) {
+    error = filename + ": geometry field table does not match N = " + std::to_string(n) + ", " +
+            std::to_string(field.layers) + " layers";
+    return false;
+  }
+  Imf::Header header = make_header(side, side, kFieldTag, kFieldFormatVersion, field.box,
+                                   field.source, field.build_id);
   header.insert("gfield.samplesPerSide", Imf::IntAttribute(n));
+  header.insert("gfield.layers", Imf::IntAttribute(field.layers));
   // zlib level 1 (docs/geometry-field.md): a 3456^2 half table writes ~30% faster than at the
   // default level 4 for ~7% more bytes; RLE is faster still but ~55% larger.
   header.zipCompressionLevel() = 1;
   OutputChannels out;
-  out.add(header, "U", pixel_type(precision), &field.uv[0].x, 2, field.uv.size(), side);
-  out.add(header, "V", pixel_type(precision), &field.uv[0].y, 2, field.uv.size(), side);
+  const size_t count = field_layer_size(field);
+  for (int layer = 0; layer < field.layers; ++layer) {
+    const float* uv = &field.uv[size_t(layer) * count].x;
+    out.add(header, field_channel(layer, 'U').c_str(), pixel_type(precision), uv, 2, count, side);
+    out.add(header, field_channel(layer, 'V').c_str(), pixel_type(precision), uv + 1, 2, count,
+            side);
+  }
   return write_exr(filename, header, out.frame_buffer, side, error);
 }
 
 bool load_geometry_field(const std::string& filename, GeometryField& field, std::string& error) {
   std::unique_ptr<Imf::InputFile> file;
-  if (!open_input(filename, kMaxFieldSide, {"U", "V"}, file, error)) {
+  if (!open_input(filename, kMaxFieldSide, {}, file, error)) {  // channels: check_field_channels
     return false;
   }
   ExrAssetHeader header;
+  std::vector<std::string> channels;
   if (!read_header(filename, file->header(), header, error) ||
-      !check_format(filename, header, kFieldTag, kFormatVersion, error) ||
-      !check_channels(filename, file->header(), {"U", "V"}, error)) {
-    return false;
-  }
-  const int n = header.samples_per_side;
-  if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide) {
-    error = filename + ": gfield.samplesPerSide " + std::to_string(n) + " missing or out of range";
-    return false;
-  }
-  const int side = sample_count(n);
-  if (header.width != side || header.height != side) {
-    error = filename + ": geometry field is " + std::to_string(header.width) + "x" +
-            std::to_string(header.height) + ", expected " + std::to_string(side) + "x" +
-            std::to_string(side) + " for N = " + std::to_string(n);
+      !check_format(filename, header, kFieldTag, 1, kFieldFormatVersion, error) ||
+      !check_field_channels(filename, file->header(), header, channels, error) ||
+      !check_field_size(filename, header, error)) {
     return false;
   }
   GeometryField out;
-  out.samples_per_side = n;
+  out.samples_per_side = header.samples_per_side;
+  out.layers = header.layers;
   out.box = header.box;
   out.source = header.source;
   out.build_id = header.build_id;
-  out.uv.resize(size_t(side) * size_t(side));
+  const int side = sample_count(out.samples_per_side);
+  const size_t count = field_layer_size(out);
+  out.uv.resize(count * size_t(out.layers));
   const Imath::Box2i dw = file->header().dataWindow();
   const ptrdiff_t origin = ptrdiff_t(dw.min.y) * side + dw.min.x;
-  float* uv = &out.uv[0].x - origin * 2;
   Imf::FrameBuffer fb;
-  fb.insert("U", float_slice(uv + 0, 2, side));
-  fb.insert("V", float_slice(uv + 1, 2, side));
-  if (!read_pixels(filename, *file, fb, error)) {
-    return false;
+  for (int layer = 0; layer < out.layers; ++layer) {
+    float* uv = &out.uv[size_t(layer) * count].x - origin * 2;
+    fb.insert(channels[size_t(2 * layer)], float_slice(uv + 0, 2, side));
+    fb.insert(channels[size_t(2 * layer + 1)], float_slice(uv + 1, 2, side));
   }
-  for (size_t k = 0; k < out.uv.size(); ++k) {
-    const glm::vec2 v = out.uv[k];
-    const bool valid = (v.x >= 0.0f && v.x <= 1.0f && v.y >= 0.0f && v.y <= 1.0f) ||
-                       (v.x == kFieldMiss && v.y == kFieldMiss) ||
-                       (v.x == kFieldNoRay && v.y == kFieldNoRay);
-    if (!valid) {
-      error = filename + ": invalid uv (" + std::to_string(v.x) + ", " + std::to_string(v.y) +
-              ") at entry " + std::to_string(k / size_t(side)) + ", exit " +
-              std::to_string(k % size_t(side));
-      return false;
-    }
+  if (!read_pixels(filename, *file, fb, error) || !check_field_values(filename, out, error)) {
+    return false;
   }
   field = std::move(out);
   return true;

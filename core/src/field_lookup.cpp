@@ -1,5 +1,6 @@
 #include "gfield/field_lookup.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "gfield/build_id.hpp"
@@ -15,14 +16,21 @@ using namespace glm;  // the GLSL vocabulary of field_lookup.glsl
 struct GlslFieldLookup {
   const GeometryField& field;
   const GeometryImage& image;
+  int layers;
 
   int gf_samples_per_side() const { return field.samples_per_side; }
-  vec2 gf_field_texel(int entry, int exit) const { return field_uv(field, entry, exit); }
+  int gf_field_layers() const { return layers; }
+  vec2 gf_field_texel(int layer, int entry, int exit) const {
+    return field_uv(field, entry, exit, layer);
+  }
   int gf_image_size() const { return image.size; }
   vec3 gf_image_position_texel(int i, int j) const {
     return image.position[texel_index(image, i, j)];
   }
   vec3 gf_image_normal_texel(int i, int j) const { return image.normal[texel_index(image, i, j)]; }
+  float gf_image_coverage_texel(int i, int j) const {
+    return image.coverage[texel_index(image, i, j)];
+  }
   vec3 gf_box_min() const { return field.box.min; }
   vec3 gf_box_max() const { return field.box.max; }
 
@@ -40,7 +48,9 @@ FieldHit trace(const FieldLookup& lookup, const Ray& ray, LookupMode mode, bool 
   if (lookup.field == nullptr || lookup.image == nullptr || !check_ray(ray, error)) {
     return {};
   }
-  GlslFieldLookup glsl{*lookup.field, *lookup.image};
+  const int layers =
+      lookup.layers > 0 ? std::min(lookup.layers, lookup.field->layers) : lookup.field->layers;
+  GlslFieldLookup glsl{*lookup.field, *lookup.image, layers};
   const auto h = glsl.gf_trace(ray.origin, ray.direction, ray.t_min, ray.t_max, int(mode), last);
   FieldHit hit;
   if (h.hit) {
@@ -81,12 +91,15 @@ bool parse_lookup_mode(const std::string& name, LookupMode& mode) {
 bool make_field_lookup(const GeometryField& field, const GeometryImage& image, FieldLookup& lookup,
                        std::string& error) {
   const size_t side = size_t(sample_count(field.samples_per_side));
-  if (field.samples_per_side <= 0 || field.uv.size() != side * side) {
-    error = "geometry field: the table does not hold (6N^2)^2 entries";
+  if (field.samples_per_side <= 0 || field.layers < 1 || field.layers > kMaxFieldLayers ||
+      field.uv.size() != side * side * size_t(field.layers)) {
+    error = "geometry field: the table does not hold K (6N^2)^2 entries (K in [1, " +
+            std::to_string(kMaxFieldLayers) + "])";
     return false;
   }
   const size_t texels = size_t(image.size) * size_t(image.size);
-  if (image.size < 2 || image.position.size() != texels || image.normal.size() != texels) {
+  if (image.size < 2 || image.position.size() != texels || image.normal.size() != texels ||
+      image.coverage.size() != texels) {
     error = "geometry image: empty or inconsistent texel arrays";
     return false;
   }

@@ -169,14 +169,16 @@ class Reader {
   static void check_color(const std::string& pointer, glm::vec3 c) {
     if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) ||
         glm::any(glm::greaterThan(c, glm::vec3(float(kMaxRadiometric))))) {
-      throw SceneError{pointer, "colour components must be in [0, 1e6]"};
+      throw SceneError{pointer, "colour components must be in [0, 1e6] (are " + fmt(c.x) + ", " +
+                                    fmt(c.y) + ", " + fmt(c.z) + ")"};
     }
   }
   /// An intensity in [0, kMaxRadiometric] (default 1).
   double intensity(const std::string& pointer) const {
     const double v = number(pointer, "intensity", 1.0);
     if (!(v >= 0.0 && v <= kMaxRadiometric))
-      throw SceneError{json_pointer_child(pointer, "intensity"), "must be in [0, 1e6]"};
+      throw SceneError{json_pointer_child(pointer, "intensity"),
+                       "must be in [0, 1e6] (is " + fmt(v) + ")"};
     return v;
   }
   /// An array of at most `max` elements.
@@ -449,9 +451,9 @@ Transform read_transform(const Reader& r, const std::string& p) {
     t.scale = r.at(sp).is_number() ? glm::vec3(float(r.number(sp))) : r.vec3(sp);
     const glm::vec3 lo{float(kMinScale)}, hi{float(kMaxScale)};
     if (glm::any(glm::lessThan(t.scale, lo)) || glm::any(glm::greaterThan(t.scale, hi))) {
-      throw SceneError{sp,
-                       "scale factors must be in [1e-6, 1e6] (mirroring and flattening are "
-                       "refused)"};
+      throw SceneError{sp, "scale factors must be in [1e-6, 1e6] (are " + Reader::fmt(t.scale.x) +
+                               ", " + Reader::fmt(t.scale.y) + ", " + Reader::fmt(t.scale.z) +
+                               "; mirroring and flattening are refused)"};
     }
   }
   return t;

@@ -13,6 +13,7 @@ namespace gfield {
 struct AssetArguments {
   int size = 512;
   int samples = 24;
+  int layers = kAutoLayers;
   bool half = false;  ///< the default; the flag exists for symmetry with --float
   bool full = false;
   size_t verify_rays = 100000;
@@ -20,7 +21,16 @@ struct AssetArguments {
   std::string components = "all";
 };
 
-/// Adds --size, --samples, --half/--float, --verify-rays, --method, --components to `cmd`.
+/// --layers of `gfield field`, `build` and `batch`.
+inline void add_layers_option(CLI::App* cmd, int& layers) {
+  cmd->add_option("--layers", layers,
+                  "K, hits stored per line (1 to " + std::to_string(kMaxFieldLayers) +
+                      "; default: the smallest K that stores every hit of 99.9% of the lines)")
+      ->check(CLI::Range(1, kMaxFieldLayers));
+}
+
+/// Adds --size, --samples, --layers, --half/--float, --verify-rays, --method, --components to
+/// `cmd`.
 inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArguments>& args) {
   cmd->add_option("--size", args->size, "geometry image texels per side")
       ->check(CLI::Range(kMinImageSize, kMaxImageSize))
@@ -30,6 +40,7 @@ inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArgument
                       std::to_string(kMinSamplesPerSide) + " to " +
                       std::to_string(kMaxSamplesPerSide) + ")")
       ->capture_default_str();
+  add_layers_option(cmd, args->layers);
   auto* half = cmd->add_flag("--half", args->half, "field U, V as half floats (default)");
   cmd->add_flag("--float", args->full, "field U, V as 32-bit floats")->excludes(half);
   cmd->add_option("--verify-rays", args->verify_rays,
@@ -52,6 +63,7 @@ inline AssetOptions asset_options(const AssetArguments& args) {
   options.image.components =
       args.components == "largest" ? ComponentSelection::kLargest : ComponentSelection::kAll;
   options.samples_per_side = args.samples;
+  options.field_layers = args.layers;
   options.field_precision = args.full ? ExrPrecision::kFloat : ExrPrecision::kHalf;
   options.verify_rays = args.verify_rays;
   return options;
@@ -61,11 +73,15 @@ inline AssetOptions asset_options(const AssetArguments& args) {
 inline std::string asset_summary(const nlohmann::json& report) {
   char line[512];
   const nlohmann::json& f = report["geometry_field"];
-  std::snprintf(line, sizeof(line), "image %d^2 (%s), field N = %d (casts %.2f s, write %.2f s)",
+  std::snprintf(line, sizeof(line),
+                "image %d^2 (%s), field N = %d, K = %d (casts %.2f s, write %.2f s), GPU %.1f MB "
+                "(image) + %.1f MB (field at 8 bits)",
                 report["geometry_image"]["size"].get<int>(),
                 report["geometry_image"].value("route", std::string("?")).c_str(),
-                f["samples_per_side"].get<int>(), f["cast_seconds"].get<double>(),
-                f["write_seconds"].get<double>());
+                f["samples_per_side"].get<int>(), f["layers"].get<int>(),
+                f["cast_seconds"].get<double>(), f["write_seconds"].get<double>(),
+                f["gpu_bytes"]["geometry_image"].get<double>() / 1e6,
+                f["gpu_bytes"]["geometry_field_8bit"].get<double>() / 1e6);
   std::string text = line;
   if (report.contains("accuracy")) {
     const nlohmann::json& r = report["accuracy"]["references"][0];

@@ -9,6 +9,7 @@
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/exr_io.hpp"
 #include "preprocess/asset_build.hpp"
+#include "preprocess/cli/asset_options.hpp"
 #include "preprocess/cli/commands.hpp"
 
 namespace gfield {
@@ -18,10 +19,12 @@ void add_field_command(CLI::App& app) {
       "field",
       "Build the geometry field of a geometry image: for every pair of the 6N^2 box-face\n"
       "samples, the image uv of the first hit of the ray between them, cast with Embree against\n"
-      "the parameterised mesh beside the image (X.gimage.obj). Writes a (6N^2)^2 EXR (U, V).");
+      "the parameterised mesh beside the image (X.gimage.obj), and the next hits along it up to\n"
+      "K layers. Writes a (6N^2)^2 EXR (hitL.U, hitL.V per layer L).");
   struct Arguments {
     std::string mesh, image, output;
     int samples = 24;
+    int layers = kAutoLayers;
     bool half = false;
     bool full = false;
   };
@@ -35,12 +38,13 @@ void add_field_command(CLI::App& app) {
                   "N, samples per side of each box face (" + std::to_string(kMinSamplesPerSide) +
                       " to " + std::to_string(kMaxSamplesPerSide) + ")")
       ->capture_default_str();
+  add_layers_option(cmd, args->layers);
   auto* half = cmd->add_flag("--half", args->half, "store U, V as half floats (default)");
   cmd->add_flag("--float", args->full, "store U, V as 32-bit floats")->excludes(half);
   cmd->callback([args] {
     std::string error;
     const bool use_half = !args->full;
-    if (!check_field_size(args->samples, use_half, error)) {
+    if (!check_field_size(args->samples, args->layers, use_half, error)) {
       throw CommandError(args->output + ": " + error);
     }
     ExrAssetHeader header;
@@ -68,21 +72,22 @@ void add_field_command(CLI::App& app) {
     }
     const int side = sample_count(args->samples);
     std::printf("field N = %d: %d x %d sample pairs, ~%.0f MB in memory (%s)\n", args->samples,
-                side, side, double(field_memory_estimate(args->samples, use_half)) / 1e6,
+                side, side,
+                double(field_memory_estimate(args->samples, args->layers, use_half)) / 1e6,
                 use_half ? "half" : "float");
     std::fflush(stdout);
     FieldFileReport report;
-    if (!write_field_file(image, pm, args->samples,
+    if (!write_field_file(image, pm, args->samples, args->layers,
                           use_half ? ExrPrecision::kHalf : ExrPrecision::kFloat, args->output,
                           report, error)) {
       throw CommandError(error);
     }
     std::printf(
-        "%zu rays, %zu hits (%.1f%%)\nBVH %.3f s, casts %.3f s (%.1f Mrays/s), write %.3f s\n"
+        "%zu rays, %zu hits (%.1f%%)\n%s\nBVH %.3f s, casts %.3f s (%.1f Mrays/s), write %.3f s\n"
         "wrote %s (%.1f MB)\n",
         report.build.rays, report.build.hits,
         100.0 * double(report.build.hits) / double(std::max<size_t>(1, report.build.rays)),
-        report.bvh_seconds, report.build.seconds,
+        field_layers_summary(report).c_str(), report.bvh_seconds, report.build.seconds,
         double(report.build.rays) / std::max(1e-9, report.build.seconds) / 1e6,
         report.write_seconds, args->output.c_str(), double(report.file_bytes) / 1e6);
   });

@@ -16,13 +16,16 @@ void add_verify_command(CLI::App& app) {
       "Check the asset NAME (NAME.gfield.exr, NAME.gimage.exr, NAME.gimage.obj) against exact\n"
       "Embree casts on the mesh it was built from and on the original mesh file: the stored\n"
       "table (random sample pairs) and every lookup mode (nearest, linear, refined, refined\n"
-      "last hit) on random rays between box faces and from outside viewpoints: hit/miss\n"
-      "agreement, position error (median, p95, p99 in % of the box diagonal), normal error.");
+      "last hit) on random rays between box faces and from outside viewpoints, and on rays\n"
+      "leaving the surface (random points and directions, mirror reflections of view rays)\n"
+      "with K = 1 and all K layers: hit/miss agreement, position error (median, p95, p99 in %\n"
+      "of the box diagonal), normal error.");
   struct Arguments {
     std::string name;
     size_t rays = 1000000;
     uint64_t seed = 1;
     std::string original;
+    int field_bits = 32;
     bool json = false;
   };
   auto args = std::make_shared<Arguments>();
@@ -33,12 +36,18 @@ void add_verify_command(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "random seed")->capture_default_str();
   cmd->add_option("--original", args->original,
                   "original mesh file (default: NAME.report.json's source_path, or the source)");
+  cmd->add_option("--field-bits", args->field_bits,
+                  "look the field up as the GPU stores it: 8 or 16 bits per uv component (32: "
+                  "as in the file)")
+      ->check(CLI::IsMember({8, 16, 32}))
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "print the report as JSON");
   cmd->callback([args] {
     VerifyOptions options;
     options.rays = args->rays;
     options.seed = args->seed;
     options.original = args->original;
+    options.field_bits = args->field_bits;
     nlohmann::json report;
     std::string error;
     if (!verify_asset(args->name, options, report, error)) {

@@ -18,6 +18,10 @@ std::vector<MethodOption> GeometryFieldMethod::options() {
   return {
       choice_option("mode", "lookup", "Geometry-field lookup: nearest, linear or refined", &s.mode,
                     {"nearest", "linear", "refined"}),
+      choice_option("field-bits", "field bits",
+                    "Bits per uv component of the fields on the GPU: 8 (RG8), 16 (RG16) or 32 "
+                    "(RG32F)",
+                    &s.field_bits, {"8", "16", "32"}),
       int_option("depth", "depth",
                  "Reflections/refractions after the camera ray (as gfield render --depth)",
                  &s.max_depth, 0, 64),
@@ -31,13 +35,18 @@ std::vector<MethodOption> GeometryFieldMethod::options() {
   };
 }
 
+AssetNeeds GeometryFieldMethod::needs() const {
+  AssetNeeds needs;
+  needs.fields = true;
+  needs.field_bits = field_bits(settings_.field_bits);
+  needs.source_meshes = true;  // the G-buffer holds the surfaces the reference tracer sees
+  return needs;
+}
+
 bool GeometryFieldMethod::load(GpuScene& scene, const std::filesystem::path& shader_dir,
                                std::string& error) {
   scene_ = &scene;
-  AssetNeeds needs;
-  needs.fields = true;
-  needs.source_meshes = true;  // the G-buffer holds the surfaces the reference tracer sees
-  return scene.require(needs, error) &&
+  return scene.require(needs(), error) &&
          gbuffer_program_.build(shader_dir, {"gbuffer.vert", "gbuffer.frag"}, "", error) &&
          trace_program_.build(shader_dir, {"fullscreen.vert", "field_trace.frag"}, "", error);
 }
@@ -93,6 +102,12 @@ void GeometryFieldMethod::render_tracing(const Camera& camera, Framebuffer& targ
 
 void GeometryFieldMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 jitter,
                                  FrameStats* stats) {
+  std::string error;
+  if (scene_->assets().field_bits() != field_bits(settings_.field_bits) &&
+      !scene_->require(needs(), error)) {  // --field-bits changed in the panel
+    std::fprintf(stderr, "%s\n", error.c_str());
+    settings_.field_bits = FieldBits(scene_->assets().field_bits() / 16);  // 8, 16, 32 -> 0, 1, 2
+  }
   const Stopwatch clock;
   render_gbuffer(camera, target.width(), target.height(), jitter);
   const double gbuffer_ms = timed_ms(stats != nullptr, clock);

@@ -13,8 +13,17 @@
 
 namespace gfield {
 
+/// Bits per uv component of the fields on the GPU (RG8, RG16, RG32F).
+enum class FieldBits { k8 = 0, k16 = 1, k32 = 2 };
+inline int field_bits(FieldBits bits) {
+  return 8 << int(bits);
+}
+
 struct GeometryFieldSettings {
   LookupMode mode = LookupMode::kRefined;
+  /// The fields' storage on the GPU: 8 bits keep the refined lookup within 0.05 points of the
+  /// float field's hit/miss agreement (docs/runtime.md) at a quarter of its memory.
+  FieldBits field_bits = FieldBits::k8;
   /// Reflections/refractions after the camera ray; a path needing more ends black (as
   /// `gfield render --depth`).
   int max_depth = 10;
@@ -42,6 +51,8 @@ class GeometryFieldMethod : public Method {
   GeometryFieldSettings& settings() { return settings_; }
 
  private:
+  /// The assets this method needs (the fields at the settings' bits).
+  AssetNeeds needs() const;
   void render_gbuffer(const Camera& camera, int width, int height, glm::vec2 jitter);
   void render_tracing(const Camera& camera, Framebuffer& target, glm::vec2 jitter);
 

@@ -48,7 +48,7 @@ GF_CONST int BUFFER_LIGHTS = 1;   // GpuLight[], one per light
 // same texture in every pass.
 GF_CONST int UNIT_GI_POSITIONS = 0;   // 2D array RGBA32F: P (mesh coordinates), coverage A in w
 GF_CONST int UNIT_GI_NORMALS = 1;     // 2D array RGBA32F: unit normals
-GF_CONST int UNIT_FIELDS = 2;         // 2D array RG32F: stored uv, texel (exit, entry)
+GF_CONST int UNIT_FIELDS = 2;         // 2D array RG8/RG16/RG32F: uv codes, texel (exit, entry)
 GF_CONST int UNIT_PROBE_ORIGINS = 3;  // field probe: ray origins (xyz) and t_min (w)
 GF_CONST int UNIT_PROBE_DIRECTIONS = 4;  // field probe: ray directions (xyz) and t_max (w)
 GF_CONST int UNIT_ENVIRONMENT = 5;    // 2D array RGBA32F: equirect layer 0 or six cube faces
@@ -70,7 +70,29 @@ GF_CONST int UNIT_MESH_TEXTURES = 23;  // 2D array RGBA16F: the meshes' own text
                                        // rgb, row 0 at v = 0), bilinear, repeating
 GF_CONST int UNIT_GBUFFER_ALBEDO = 24;  // rgb albedo of the first hit (diffuse surfaces)
 
-// One scene object (std430, 288 bytes).
+// Geometry-field texels on the GPU (runtime/gpu_assets): each uv component as a normalised
+// integer of `bits` bits (8: RG8, 16: RG16; 32: RG32F, the float as is). A uv in [0,1] is the
+// code round(uv * (2^bits - 3)); code 2^bits - 2 stands for "no ray" (-2), 2^bits - 1 for a
+// miss (-1). The texture unit returns code / (2^bits - 1).
+GF_INLINE float gf_encode_field_component(float uv, int bits) {
+  float top = float((1 << bits) - 1);
+  if (uv < -1.5f) return top - 1.0f;
+  if (uv < 0.0f) return top;
+  return round(min(uv, 1.0f) * (top - 2.0f));
+}
+GF_INLINE float gf_decode_field_component(float texel, int bits) {
+  if (bits >= 32) return texel;
+  float top = float((1 << bits) - 1);
+  float code = round(texel * top);
+  if (code > top - 0.5f) return -1.0f;
+  if (code > top - 1.5f) return -2.0f;
+  return code / (top - 2.0f);
+}
+GF_INLINE vec2 gf_decode_field_texel(vec2 texel, int bits) {
+  return vec2(gf_decode_field_component(texel.x, bits), gf_decode_field_component(texel.y, bits));
+}
+
+// One scene object (std430, 304 bytes).
 struct GpuObject {
   mat4 to_world;    // object -> world
   mat4 to_object;   // world -> object
@@ -83,8 +105,9 @@ struct GpuObject {
   vec4 box_min;     // object-space bounds (mesh: the asset's box, mesh coordinates)
   vec4 box_max;
   ivec4 kind;   // SHAPE_*, MATERIAL_*, TEXTURE_*, 0
-  ivec4 asset;  // mesh: layer, samples per side N, geometry-image size n, 1 when the geometry
-                // image holds albedo (UNIT_GI_ALBEDO) else 0
+  ivec4 asset;  // mesh: image layer, samples per side N, geometry-image size n, 1 when the
+                // geometry image holds albedo (UNIT_GI_ALBEDO) else 0
+  ivec4 field;  // mesh: first layer of its field in the field array, layers K, bits, 0
 };
 
 // One light (std430, 48 bytes).

@@ -1,18 +1,23 @@
-// Geometry-field lookup (Li et al. 2006, section 3.2 step 1, plus the `refined` mode of issue 4).
+// Geometry-field lookup (Li et al. 2006, section 3.2 step 1, plus the `refined` mode of issue 4
+// and the layered lookup beyond the ray's origin of issue 15).
 //
 // ONE source for the CPU and the GPU: this file is valid GLSL 4.50 and valid C++ with GLM, and
 // is included verbatim by core/src/field_lookup.cpp (inside a struct whose members supply the
 // fetches below) and by the runtime's shaders. Keep it in the common subset: float literals with
 // an `f` suffix, no swizzles beyond .x/.y/.z/.w, no arrays as parameters, no `const` locals, no
 // builtin names (step, length, sign, in, out, ...) as variable names, callees defined before
-// their callers, GF_OUT/GF_INOUT for output parameters.
+// their callers, GF_OUT/GF_INOUT for output parameters, GF_IN for structs passed in (a const
+// reference in C++).
 //
 // The includer defines, before including this file (GLSL) or as members (C++):
 //   int  gf_samples_per_side();             N of the field
-//   vec2 gf_field_texel(int entry, int exit);  stored uv of the pair (texelFetch, row = entry)
+//   int  gf_field_layers();                 K, hits stored per line (layers looked up)
+//   vec2 gf_field_texel(int layer, int entry, int exit);  stored uv of the pair's hit `layer`
+//                                           (texelFetch, row = entry; < 0: miss or no ray)
 //   int  gf_image_size();                    n of the geometry image (n >= 2)
 //   vec3 gf_image_position_texel(int i, int j);  position texel, column i, scanline j (texelFetch)
 //   vec3 gf_image_normal_texel(int i, int j);    normal texel (texelFetch)
+//   float gf_image_coverage_texel(int i, int j); coverage A (> 0: on the surface, 0: padding)
 //   vec3 gf_box_min();  vec3 gf_box_max();   the box (mesh coordinates) mapped to the unit cube
 //
 // Bilinear filtering is done here from 4 texelFetches (GL_LINEAR + GL_CLAMP_TO_EDGE semantics,
@@ -23,9 +28,11 @@
 // coordinates, t in [t_min, t_max]; a hit's t is along the given (unnormalised) direction.
 
 #ifdef __cplusplus
+#define GF_IN(T) const T&
 #define GF_OUT(T) T&
 #define GF_INOUT(T) T&
 #else
+#define GF_IN(T) in T
 #define GF_OUT(T) out T
 #define GF_INOUT(T) inout T
 #endif
@@ -42,6 +49,16 @@
 #define GF_NEWTON_TOLERANCE 1.0e-5f
 // Least weight of the hitting pairs among the 16 for a chart border to count as a seam.
 #define GF_SEAM_WEIGHT 0.999f
+// A point at a chart border (across a seam, or on a patch with padding corners) is accepted only
+// when the ray's start lies farther than this many texels off the surface's tangent plane there:
+// a ray leaving the surface next to a chart border runs within a texel of the border's patches
+// near its start, which are the surface it leaves, not a surface it hits.
+#define GF_SEAM_CLEARANCE 2.0f
+// Rays starting inside the box, nearest and linear modes: a stored hit counts as beyond the
+// ray's origin only when it projects onto the ray at least this many sample spacings (box
+// diagonal / N) beyond t_min. A pair's line passes up to half a spacing beside the ray, so the
+// unverified stored hit of the surface a ray leaves can project beyond its origin.
+#define GF_UNVERIFIED_MARGIN 0.5f
 
 struct GfHit {
   bool hit;       // false: miss (or an invalid ray)
@@ -176,13 +193,32 @@ GfHit gf_hit_at(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
   return h;
 }
 
+// Whether a chart-border point p (at uv, patches of squared size `texel`) is clear of the ray's
+// start: the start lies more than GF_SEAM_CLEARANCE texels off the tangent plane at p.
+bool gf_clear_of_start(vec2 uv, vec3 p, vec3 start, float texel) {
+  float height = dot(gf_image_normal(uv), p - start);
+  return height * height > GF_SEAM_CLEARANCE * GF_SEAM_CLEARANCE * texel;
+}
+
+// Covered corners (0..4) of the patch with lower-left texel c.
+int gf_patch_coverage(ivec2 c) {
+  int covered = gf_image_coverage_texel(c.x, c.y) > 0.0f ? 1 : 0;
+  covered += gf_image_coverage_texel(c.x + 1, c.y) > 0.0f ? 1 : 0;
+  covered += gf_image_coverage_texel(c.x, c.y + 1) > 0.0f ? 1 : 0;
+  covered += gf_image_coverage_texel(c.x + 1, c.y + 1) > 0.0f ? 1 : 0;
+  return covered;
+}
+
 // Newton's method for the intersection of the line through o (directions e1, e2 span the plane
 // orthogonal to it) with the geometry image's surface of bilinear patches between texel centres.
 // Starts at uv, moves across patches (steps of at most GF_NEWTON_MAX_STEP texels) and succeeds
 // when the surface point p is within `tolerance` (mesh units) of the line; uv and p are then the
-// intersection. `seams`: also accept chart-border points across seams (see below).
-bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, GF_INOUT(vec2) uv,
-               GF_OUT(vec3) p) {
+// intersection. A point on a patch of padding texels only is no intersection (padding copies
+// other texels); one on a patch with padding corners (a chart's border strip) must be clear of
+// `start` (gf_clear_of_start; `start`: the point the ray starts from). `seams`: also accept
+// chart-border points across seams (see below), clear of `start` too.
+bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start,
+               GF_INOUT(vec2) uv, GF_OUT(vec3) p) {
   int n = gf_image_size();
   vec2 x = gf_image_grid(uv, n);
   p = vec3(0.0f);
@@ -201,7 +237,9 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, GF_INOUT(v
     vec2 r = vec2(dot(p - o, e1), dot(p - o, e2));
     if (dot(r, r) <= tolerance * tolerance) {
       uv = (x + 0.5f) / float(n);
-      return true;
+      int covered = gf_patch_coverage(c);
+      return covered == 4 ||
+             (covered > 0 && gf_clear_of_start(uv, p, start, max(dot(pu, pu), dot(pv, pv))));
     }
     float j11 = dot(pu, e1);
     float j12 = dot(pv, e1);
@@ -215,12 +253,13 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, GF_INOUT(v
       // accept the border point when the line passes within one texel of it, moved onto the
       // line. At an open boundary of the surface this would be a false hit.
       float texel = max(dot(pu, pu), dot(pv, pv));
-      if (seams && dot(r, r) <= texel) {
-        p -= r.x * e1 + r.y * e2;
-        uv = (x + 0.5f) / float(n);
-        return true;
+      if (!seams || dot(r, r) > texel) {
+        return false;
       }
-      return false;
+      uv = (x + 0.5f) / float(n);
+      bool clear = gf_clear_of_start(uv, p, start, texel);
+      p -= r.x * e1 + r.y * e2;
+      return clear;
     }
     vec2 delta = vec2(j22 * r.x - j12 * r.y, j11 * r.y - j21 * r.x) / -det;
     float delta_length = sqrt(dot(delta, delta));
@@ -232,18 +271,144 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, GF_INOUT(v
   return false;
 }
 
-// The first hit (last = false) or the last hit (last = true: the field read from the exit side,
-// i.e. the reversed line) of o + t d, t in [t_min, t_max], in mesh coordinates.
-//   GF_MODE_NEAREST: the stored uv of the nearest entry and exit samples.
-//   GF_MODE_LINEAR:  the paper's linear kernel over the 16 surrounding sample pairs (4 entry x 4
-//                    exit samples, quadrilinear weights): a hit when the pairs that hit carry at
-//                    least half the weight; uv = their weighted mean.
-//   GF_MODE_REFINED: every hit uv of the 16 pairs is refined with gf_refine against the ray; the
-//                    nearest (or, for `last`, farthest) verified intersection in [t_min, t_max].
-GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
+// One lookup's line: the ray, its range, and its 2 x 2 entry and exit samples with weights (the
+// nearest entry and exit samples in k_entry.x / k_exit.x for GF_MODE_NEAREST).
+struct GfLine {
+  vec3 o;
+  vec3 d;
+  float t_min;
+  float t_max;
+  bool last;    // the last hit: the table read from the exit side
+  bool beyond;  // the range starts inside the box: layers before the origin are skipped
+  float margin;  // GF_UNVERIFIED_MARGIN in units of t
+  ivec4 k_entry;
+  ivec4 k_exit;
+  vec4 w_entry;
+  vec4 w_exit;
+};
+
+// The first layer from `layer` on whose stored hit of the pair (entry, exit) lies beyond the
+// line's origin: its projection onto the ray at least t_min + margin (for `last`, whose layers
+// run from the exit side: at most t_max - margin); the last layer K - 1 is taken as it is (K = 1
+// is the single-layer lookup). uv: that layer's stored uv. -1 when the line has no further hit.
+int gf_layer_beyond(GF_IN(GfLine) line, int layer, int entry, int exit, float margin,
+                    GF_OUT(vec2) uv) {
+  uv = vec2(-1.0f);
+  for (int l = layer; l < gf_field_layers(); l++) {
+    uv = gf_field_texel(l, entry, exit);
+    if (uv.x < 0.0f) {
+      return -1;
+    }
+    if (!line.beyond || l == gf_field_layers() - 1) {
+      return l;
+    }
+    float t = dot(gf_image_position(uv) - line.o, line.d) / dot(line.d, line.d);
+    if (line.last ? t <= line.t_max - margin : t >= line.t_min + margin) {
+      return l;
+    }
+  }
+  return -1;
+}
+
+// GF_MODE_NEAREST: the first stored hit beyond the origin (GF_UNVERIFIED_MARGIN) of the nearest
+// entry and exit samples.
+GfHit gf_trace_nearest(GF_IN(GfLine) line) {
+  vec2 uv;
+  if (gf_layer_beyond(line, 0, line.k_entry.x, line.k_exit.x, line.margin, uv) < 0) {
+    return gf_miss();
+  }
+  return gf_hit_at(line.o, line.d, line.t_min, line.t_max, uv);
+}
+
+// GF_MODE_LINEAR: the paper's linear kernel over the 16 pairs' first stored hits beyond the
+// origin (GF_UNVERIFIED_MARGIN): a hit when the pairs that hit carry at least half the weight;
+// uv = their weighted mean.
+GfHit gf_trace_linear(GF_IN(GfLine) line) {
+  float weight = 0.0f;
+  vec2 uv_sum = vec2(0.0f);
+  for (int i = 0; i < 4; i++) {
+    for (int j = 0; j < 4; j++) {
+      vec2 uv;
+      if (gf_layer_beyond(line, 0, line.k_entry[i], line.k_exit[j], line.margin, uv) >= 0) {
+        weight += line.w_entry[i] * line.w_exit[j];
+        uv_sum += (line.w_entry[i] * line.w_exit[j]) * uv;
+      }
+    }
+  }
+  if (weight < 0.5f) {
+    return gf_miss();
+  }
+  return gf_hit_at(line.o, line.d, line.t_min, line.t_max, uv_sum / weight);
+}
+
+// GF_MODE_REFINED: for each of the 16 pairs, its stored hits that project beyond t_min in order
+// along the line, each refined with gf_refine against the ray until one is verified in
+// [t_min, t_max]; the nearest (for `last`, the farthest) of the pairs' verified hits. A candidate
+// verified before t_min (the surface the ray starts from, or one behind it) hands over to the
+// pair's next layer; one that fails to verify (the ray passes beside that surface) to the layer
+// after next: crossings of a closed surface alternate between entering and leaving it, and the
+// next one leaves the part the ray missed.
+GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   GfHit result = gf_miss();
+  // An orthonormal basis of the plane orthogonal to d (Duff et al. 2017).
+  vec3 dn = normalize(line.d);
+  float s = dn.z >= 0.0f ? 1.0f : -1.0f;
+  float ka = -1.0f / (s + dn.z);
+  float kb = dn.x * dn.y * ka;
+  vec3 e1 = vec3(1.0f + s * dn.x * dn.x * ka, s * kb, -s * dn.x);
+  vec3 e2 = vec3(kb, s + dn.y * dn.y * ka, -dn.y);
+  float tolerance = GF_NEWTON_TOLERANCE * diagonal;
+  // When nearly all of the neighbourhood's lines hit, the surface around the ray is closed and a
+  // chart border there is a seam.
+  float weight = 0.0f;
+  for (int i = 0; i < 4; i++) {
+    for (int j = 0; j < 4; j++) {
+      if (gf_field_texel(0, line.k_entry[i], line.k_exit[j]).x >= 0.0f) {
+        weight += line.w_entry[i] * line.w_exit[j];
+      }
+    }
+  }
+  bool seams = weight >= GF_SEAM_WEIGHT;
+  vec3 start = line.o + (line.last ? line.t_max : line.t_min) * line.d;
+  for (int i = 0; i < 4; i++) {
+    for (int j = 0; j < 4; j++) {
+      vec2 uv;
+      int layer = gf_layer_beyond(line, 0, line.k_entry[i], line.k_exit[j], 0.0f, uv);
+      while (layer >= 0) {
+        vec3 p;
+        int next = layer + 2;
+        if (gf_refine(line.o, e1, e2, tolerance, seams, start, uv, p)) {
+          float t = dot(p - line.o, line.d) / dot(line.d, line.d);
+          if (t >= line.t_min && t <= line.t_max) {
+            if (!result.hit || (line.last ? t > result.t : t < result.t)) {
+              result.hit = true;
+              result.t = t;
+              result.uv = uv;
+              result.position = p;
+            }
+            break;
+          }
+          if (line.last ? t < line.t_min : t > line.t_max) {
+            break;  // beyond the range: the pair's next layers lie farther still
+          }
+          next = layer + 1;
+        }
+        layer = gf_layer_beyond(line, next, line.k_entry[i], line.k_exit[j], 0.0f, uv);
+      }
+    }
+  }
+  if (result.hit) {
+    result.normal = gf_image_normal(result.uv);
+  }
+  return result;
+}
+
+// The first hit beyond the ray's origin (last = false) or the last hit before its end (last =
+// true: the field read from the exit side, i.e. the reversed line) of o + t d, t in
+// [t_min, t_max], in mesh coordinates, over the stored hits of all layers (see the modes above).
+GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
   if (!(dot(d, d) > 0.0f)) {
-    return result;  // zero or NaN direction
+    return gf_miss();  // zero or NaN direction
   }
   vec3 box_min = gf_box_min();
   vec3 extent = gf_box_max() - box_min;
@@ -254,86 +419,38 @@ GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
   int f0;
   int f1;
   if (!gf_clip_unit_cube(ou, du, t0, t1, f0, f1) || t1 < t_min || t0 > t_max) {
-    return result;
+    return gf_miss();
   }
   int face_entry = last ? f1 : f0;
   int face_exit = last ? f0 : f1;
   if (face_entry == face_exit) {
-    return result;
+    return gf_miss();
   }
   vec2 st_entry = gf_face_coords(face_entry, ou + (last ? t1 : t0) * du);
   vec2 st_exit = gf_face_coords(face_exit, ou + (last ? t0 : t1) * du);
   int n = gf_samples_per_side();
+  float diagonal = sqrt(dot(extent, extent));
+  GfLine line;
+  line.o = o;
+  line.d = d;
+  line.t_min = t_min;
+  line.t_max = t_max;
+  line.last = last;
+  // A start within 10^-4 of the chord from the box face is on the face (box-face rays, t0 ~ 0).
+  float face = 1.0e-4f * (t1 - t0);
+  line.beyond = last ? t_max < t1 - face : t_min > t0 + face;
+  line.margin = GF_UNVERIFIED_MARGIN * diagonal / (float(n) * sqrt(dot(d, d)));
   if (mode == GF_MODE_NEAREST) {
-    vec2 uv = gf_field_texel(gf_nearest_sample(face_entry, st_entry, n),
-                             gf_nearest_sample(face_exit, st_exit, n));
-    return uv.x >= 0.0f ? gf_hit_at(o, d, t_min, t_max, uv) : result;
+    line.k_entry = ivec4(gf_nearest_sample(face_entry, st_entry, n));
+    line.k_exit = ivec4(gf_nearest_sample(face_exit, st_exit, n));
+    line.w_entry = vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    line.w_exit = vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    return gf_trace_nearest(line);
   }
-  ivec4 k_entry;
-  ivec4 k_exit;
-  vec4 w_entry;
-  vec4 w_exit;
-  gf_sample_cell(face_entry, st_entry, n, k_entry, w_entry);
-  gf_sample_cell(face_exit, st_exit, n, k_exit, w_exit);
+  gf_sample_cell(face_entry, st_entry, n, line.k_entry, line.w_entry);
+  gf_sample_cell(face_exit, st_exit, n, line.k_exit, line.w_exit);
   if (mode == GF_MODE_LINEAR) {
-    float weight = 0.0f;
-    vec2 uv_sum = vec2(0.0f);
-    for (int i = 0; i < 4; i++) {
-      for (int j = 0; j < 4; j++) {
-        vec2 uv = gf_field_texel(k_entry[i], k_exit[j]);
-        if (uv.x >= 0.0f) {
-          weight += w_entry[i] * w_exit[j];
-          uv_sum += (w_entry[i] * w_exit[j]) * uv;
-        }
-      }
-    }
-    return weight >= 0.5f ? gf_hit_at(o, d, t_min, t_max, uv_sum / weight) : result;
+    return gf_trace_linear(line);
   }
-  // Refined: an orthonormal basis of the plane orthogonal to d (Duff et al. 2017).
-  vec3 dn = normalize(d);
-  float s = dn.z >= 0.0f ? 1.0f : -1.0f;
-  float ka = -1.0f / (s + dn.z);
-  float kb = dn.x * dn.y * ka;
-  vec3 e1 = vec3(1.0f + s * dn.x * dn.x * ka, s * kb, -s * dn.x);
-  vec3 e2 = vec3(kb, s + dn.y * dn.y * ka, -dn.y);
-  float tolerance = GF_NEWTON_TOLERANCE * sqrt(dot(extent, extent));
-  // The candidates, and the weight of the pairs that hit: when nearly all of the neighbourhood
-  // hits, the surface around the ray is closed and a chart border there is a seam.
-  vec2 candidates[16];
-  float weight = 0.0f;
-  for (int i = 0; i < 4; i++) {
-    for (int j = 0; j < 4; j++) {
-      candidates[4 * i + j] = gf_field_texel(k_entry[i], k_exit[j]);
-      if (candidates[4 * i + j].x >= 0.0f) {
-        weight += w_entry[i] * w_exit[j];
-      }
-    }
-  }
-  bool seams = weight >= GF_SEAM_WEIGHT;
-  for (int i = 0; i < 4; i++) {
-    for (int j = 0; j < 4; j++) {
-      vec2 uv = candidates[4 * i + j];
-      if (uv.x < 0.0f) {
-        continue;
-      }
-      vec3 p;
-      if (!gf_refine(o, e1, e2, tolerance, seams, uv, p)) {
-        continue;
-      }
-      float t = dot(p - o, d) / dot(d, d);
-      if (t < t_min || t > t_max) {
-        continue;
-      }
-      if (!result.hit || (last ? t > result.t : t < result.t)) {
-        result.hit = true;
-        result.t = t;
-        result.uv = uv;
-        result.position = p;
-      }
-    }
-  }
-  if (result.hit) {
-    result.normal = gf_image_normal(result.uv);
-  }
-  return result;
+  return gf_trace_refined(line, diagonal);
 }

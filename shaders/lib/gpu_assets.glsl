@@ -1,38 +1,51 @@
 // The scene's geometry images and geometry fields on the GPU (runtime/gpu_assets.hpp): four
-// 2D-array textures (positions, normals, albedo, fields), one layer per asset, read with
-// texelFetch. A lookup first selects its asset
-// with gs_select_asset(); the functions that shaders/lib/field_lookup.glsl expects then read
-// that asset's layer.
+// 2D-array textures read with texelFetch (positions, normals, albedo: one layer per geometry
+// image; fields: K consecutive layers per geometry field, its hits along each line, the field's
+// uvs as the contract's codes, gf_decode_field_texel). A lookup first selects its asset with
+// gs_select_asset(); the functions that shaders/lib/field_lookup.glsl expects then read that
+// asset's layers.
 
 #include "lib/contract.glsl"
 
 layout(binding = UNIT_GI_POSITIONS) uniform sampler2DArray u_gi_positions;  // xyz P, w A
 layout(binding = UNIT_GI_NORMALS) uniform sampler2DArray u_gi_normals;      // xyz unit normal
-layout(binding = UNIT_FIELDS) uniform sampler2DArray u_fields;  // xy uv, texel (exit, entry)
+layout(binding = UNIT_FIELDS) uniform sampler2DArray u_fields;  // xy uv code, texel (exit, entry)
 layout(binding = UNIT_GI_ALBEDO) uniform sampler2DArray u_gi_albedo;  // rgb linear albedo
 
 int gs_layer = 0;
 int gs_samples_per_side = 0;
 int gs_image_size = 2;
+int gs_field_layer = 0;
+int gs_field_layers = 1;
+int gs_field_bits = 32;
 vec3 gs_box_min = vec3(0.0f);
 vec3 gs_box_max = vec3(1.0f);
 
-void gs_select_asset(int layer, int samples_per_side, int image_size, vec3 box_min,
-                     vec3 box_max) {
-  gs_layer = layer;
-  gs_samples_per_side = samples_per_side;
-  gs_image_size = image_size;
+// image_layer, samples_per_side, image_size: GpuObject.asset.xyz; field_layer, field_layers,
+// field_bits: GpuObject.field.xyz; the box: GpuObject.box_min/box_max.
+void gs_select_asset(ivec3 asset, ivec3 field, vec3 box_min, vec3 box_max) {
+  gs_layer = asset.x;
+  gs_samples_per_side = asset.y;
+  gs_image_size = asset.z;
+  gs_field_layer = field.x;
+  gs_field_layers = field.y;
+  gs_field_bits = field.z;
   gs_box_min = box_min;
   gs_box_max = box_max;
 }
 
 int gf_samples_per_side() { return gs_samples_per_side; }
-vec2 gf_field_texel(int entry, int exit) {
-  return texelFetch(u_fields, ivec3(exit, entry, gs_layer), 0).xy;
+int gf_field_layers() { return gs_field_layers; }
+vec2 gf_field_texel(int layer, int entry, int exit) {
+  vec2 texel = texelFetch(u_fields, ivec3(exit, entry, gs_field_layer + layer), 0).xy;
+  return gf_decode_field_texel(texel, gs_field_bits);
 }
 int gf_image_size() { return gs_image_size; }
 vec3 gf_image_position_texel(int i, int j) {
   return texelFetch(u_gi_positions, ivec3(i, j, gs_layer), 0).xyz;
+}
+float gf_image_coverage_texel(int i, int j) {
+  return texelFetch(u_gi_positions, ivec3(i, j, gs_layer), 0).w;
 }
 vec3 gf_image_normal_texel(int i, int j) {
   return texelFetch(u_gi_normals, ivec3(i, j, gs_layer), 0).xyz;

@@ -49,17 +49,18 @@ float object_epsilon(int k) {
                                          : 1.0e-5f * u_scene_extent;
 }
 
-// The nearest (or, with `last`, the farthest: meshes only) hit of o + t d (world, d unit) on
-// object k with t in (t_min, t_max).
-SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, bool last) {
+// The nearest hit of o + t d (world, d unit) on object k with t in (t_min, t_max): for meshes the
+// field's first hit beyond t_min over its layers (a ray leaving the surface or inside the solid
+// sees the surface beyond its origin).
+SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max) {
   SceneHit h = scene_miss();
   vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
   vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
   vec3 local_normal;
   if (objects[k].kind.x == SHAPE_MESH) {
-    ivec4 a = objects[k].asset;
-    gs_select_asset(a.x, a.y, a.z, objects[k].box_min.xyz, objects[k].box_max.xyz);
-    GfHit g = gf_trace(lo, ld, t_min, t_max, u_mode, last);
+    gs_select_asset(objects[k].asset.xyz, objects[k].field.xyz, objects[k].box_min.xyz,
+                    objects[k].box_max.xyz);
+    GfHit g = gf_trace(lo, ld, t_min, t_max, u_mode, false);
     if (!g.hit) return h;
     h.t = g.t;
     h.position = (objects[k].to_world * vec4(g.position, 1.0f)).xyz;
@@ -93,8 +94,8 @@ vec3 hit_albedo(int k, vec2 uv) {
   if (objects[k].kind.x != SHAPE_MESH || objects[k].kind.z != TEXTURE_MESH ||
       objects[k].asset.w == 0)
     return object_albedo(k, uv);
-  ivec4 a = objects[k].asset;
-  gs_select_asset(a.x, a.y, a.z, objects[k].box_min.xyz, objects[k].box_max.xyz);
+  gs_select_asset(objects[k].asset.xyz, objects[k].field.xyz, objects[k].box_min.xyz,
+                  objects[k].box_max.xyz);
   return objects[k].color.rgb * gs_image_albedo(uv);
 }
 
@@ -111,8 +112,7 @@ SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, int from) {
       if (!u_self_reflection) continue;
       t_min = 2.0f * object_epsilon(k);
     }
-    SceneHit h = intersect_object(k, o, d, t_min, best.t, false);
-    if (!h.hit && k == from && opaque_only) h = intersect_object(k, o, d, t_min, best.t, true);
+    SceneHit h = intersect_object(k, o, d, t_min, best.t);
     if (h.hit && h.t < best.t) best = h;
   }
   if (best.hit && !opaque_only) best.albedo = hit_albedo(best.object, best.uv);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -81,6 +82,46 @@ TEST(ExrIo, GeometryImageRoundTripsInFloatAndHalf) {
   }
 }
 
+/// make_field(n) with `layers` layers: layer l of a pair holds a hit where l < the pair's hits
+/// ((entry + exit) % 5 of them), a miss after; "no ray" in every layer.
+GeometryField make_layered_field(int n, int layers) {
+  const GeometryField first = make_field(n);
+  GeometryField field = first;
+  field.layers = layers;
+  const size_t side = size_t(sample_count(n));
+  field.uv.clear();
+  for (int layer = 0; layer < layers; ++layer) {
+    for (size_t k = 0; k < side * side; ++k) {
+      const glm::vec2 uv = first.uv[k];
+      const int hits = is_field_hit(uv) ? int((k / side + k % side) % 5) + 1 : 0;
+      field.uv.push_back(!is_field_hit(uv) ? uv
+                         : layer < hits    ? glm::fract(uv + 0.37f * float(layer))
+                                           : glm::vec2(kFieldMiss));
+    }
+  }
+  return field;
+}
+
+TEST(ExrIo, LayeredGeometryFieldRoundTrips) {
+  const GeometryField field = make_layered_field(3, kMaxFieldLayers);
+  const std::string path = temp_path("layers.gfield.exr");
+  std::string error;
+  ASSERT_TRUE(save_geometry_field(path, field, ExrPrecision::kHalf, error)) << error;
+  ExrAssetHeader header;
+  ASSERT_TRUE(load_asset_header(path, header, error)) << error;
+  EXPECT_EQ(header.version, kFieldFormatVersion);
+  EXPECT_EQ(header.layers, kMaxFieldLayers);
+  GeometryField back;
+  ASSERT_TRUE(load_geometry_field(path, back, error)) << error;
+  EXPECT_EQ(back.layers, kMaxFieldLayers);
+  ASSERT_EQ(back.uv.size(), field.uv.size());
+  for (size_t k = 0; k < field.uv.size(); ++k) {
+    ASSERT_NEAR(back.uv[k].x, field.uv[k].x, 5e-4f) << k;
+    ASSERT_NEAR(back.uv[k].y, field.uv[k].y, 5e-4f) << k;
+  }
+  EXPECT_EQ(field_uv(back, 1, 40, 2), field_uv(field, 1, 40, 2));
+}
+
 TEST(ExrIo, GeometryFieldRoundTripsInFloatAndHalf) {
   const GeometryField field = make_field(3);
   for (const ExrPrecision precision : {ExrPrecision::kFloat, ExrPrecision::kHalf}) {
@@ -111,9 +152,11 @@ TEST(ExrIo, GeometryFieldRoundTripsInFloatAndHalf) {
   }
 }
 
-// Writes an EXR with the given attributes and channels (all FLOAT zeros).
+// Writes an EXR with the given attributes and channels (all zeros, FLOAT or `half_channels`
+// HALF); gfield.layers when `layers` > 0.
 void write_raw(const std::string& path, int width, int height, const char* format, int version,
-               std::initializer_list<const char*> channels, int samples_per_side = 0) {
+               std::initializer_list<const char*> channels, int samples_per_side = 0,
+               int layers = 0, std::initializer_list<const char*> half_channels = {}) {
   Imf::Header header(width, height);
   if (format) {
     header.insert("gfield.format", Imf::StringAttribute(format));
@@ -124,8 +167,17 @@ void write_raw(const std::string& path, int width, int height, const char* forma
   if (samples_per_side) {
     header.insert("gfield.samplesPerSide", Imf::IntAttribute(samples_per_side));
   }
+  if (layers) {
+    header.insert("gfield.layers", Imf::IntAttribute(layers));
+  }
   std::vector<float> zeros(size_t(width) * size_t(height), 0.0f);
+  std::vector<half> half_zeros(zeros.size(), half(0.0f));
   Imf::FrameBuffer fb;
+  for (const char* c : half_channels) {
+    header.channels().insert(c, Imf::Channel(Imf::HALF));
+    fb.insert(c, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(half_zeros.data()), sizeof(half),
+                            sizeof(half) * size_t(width)));
+  }
   for (const char* c : channels) {
     header.channels().insert(c, Imf::Channel(Imf::FLOAT));
     fb.insert(c, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(zeros.data()), sizeof(float),
@@ -213,6 +265,68 @@ TEST(ExrIo, RejectsBadGeometryFields) {
   write_raw(path, 54, 54, "geometry-field", 1, {"U", "V"}, 0);
   EXPECT_FALSE(load_geometry_field(path, field, error));
   EXPECT_NE(error.find("samplesPerSide"), std::string::npos) << error;
+}
+
+TEST(ExrIo, VersionOneFieldsLoadAsOneLayer) {
+  const std::string path = temp_path("v1.gfield.exr");
+  write_raw(path, 54, 54, "geometry-field", 1, {"U", "V"}, 3);
+  GeometryField field;
+  std::string error;
+  ASSERT_TRUE(load_geometry_field(path, field, error)) << error;
+  EXPECT_EQ(field.layers, 1);
+  EXPECT_EQ(field.uv.size(), size_t(54) * 54);
+  ExrAssetHeader header;
+  ASSERT_TRUE(load_asset_header(path, header, error)) << error;
+  EXPECT_EQ(header.layers, 1);
+}
+
+void expect_field_error(const std::string& path, const std::string& fragment) {
+  GeometryField field;
+  std::string error;
+  EXPECT_FALSE(load_geometry_field(path, field, error));
+  EXPECT_NE(error.find(path), std::string::npos) << error;
+  EXPECT_NE(error.find(fragment), std::string::npos) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;  // one line
+}
+
+TEST(ExrIo, RejectsFieldsWhoseLayersOrBitDepthDisagreeWithTheHeader) {
+  const std::string path = temp_path("bad-layers.gfield.exr");
+  write_raw(path, 54, 54, "geometry-field", 2, {"hit0.U", "hit0.V"}, 3, 2);
+  expect_field_error(path, "1 hit layers in the channels, but gfield.layers says 2");
+  write_raw(path, 54, 54, "geometry-field", 2, {"hit0.U", "hit0.V", "hit1.U", "hit1.V"}, 3, 1);
+  expect_field_error(path, "2 hit layers in the channels, but gfield.layers says 1");
+  write_raw(path, 54, 54, "geometry-field", 2, {"hit0.U", "hit0.V", "hit1.U", "hit2.V"}, 3, 2);
+  expect_field_error(path, "missing channel 'hit1.V'");
+  write_raw(path, 54, 54, "geometry-field", 2, {"hit0.U", "hit0.V"}, 3, 0);
+  expect_field_error(path, "gfield.layers 0 missing or out of range");
+  write_raw(path, 54, 54, "geometry-field", 2, {"hit0.U", "hit0.V"}, 3, kMaxFieldLayers + 1);
+  expect_field_error(path, "out of range");
+  write_raw(path, 54, 54, "geometry-field", 1, {"U", "V"}, 3, 2);
+  expect_field_error(path, "a version-1 field holds one layer");
+  write_raw(path, 54, 54, "geometry-field", 2, {"hit0.U", "hit0.V"}, 3, 2, {"hit1.U", "hit1.V"});
+  expect_field_error(path, "one bit depth for all layers");
+  write_raw(path, 54, 54, "geometry-field", 2, {"hit0.U", "hit0.V"}, 4, 1);
+  expect_field_error(path, "expected 96x96 for N = 4");
+  write_raw(path, 54, 54, "geometry-field", 3, {"hit0.U", "hit0.V"}, 3, 1);
+  expect_field_error(path, "unsupported format version 3 (this build reads versions 1 to 2)");
+}
+
+TEST(ExrIo, RejectsFieldsWhoseLayersAreOutOfOrder) {
+  // A hit stored after a miss along the same line: the layers are not the line's hits in order.
+  GeometryField field = make_layered_field(3, 2);
+  const size_t side = size_t(sample_count(3));
+  size_t k = 0;
+  while (is_field_hit(field.uv[k])) {  // a miss in layer 0 ...
+    ++k;
+  }
+  while (field.uv[k].x != kFieldMiss) {
+    ++k;
+  }
+  field.uv[side * side + k] = glm::vec2(0.5f);  // ... followed by a hit in layer 1
+  const std::string path = temp_path("out-of-order.gfield.exr");
+  std::string error;
+  ASSERT_TRUE(save_geometry_field(path, field, ExrPrecision::kFloat, error)) << error;
+  expect_field_error(path, "layer 1 disagrees with layer 0 at entry " + std::to_string(k / side));
 }
 
 TEST(ExrIo, TruncatedFileIsAnErrorAndAFailedSaveLeavesNothing) {

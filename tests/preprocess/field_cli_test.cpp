@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,13 @@
 #include <thread>
 
 #include <nlohmann/json.hpp>
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfOutputFile.h>
 
 #include "gfield/exr_io.hpp"
 
@@ -84,6 +92,16 @@ TEST_F(FieldCli, BuildWritesTheAssetAndItsReport) {
   ASSERT_TRUE(load_asset_header(name() + ".gfield.exr", header, error)) << error;
   EXPECT_EQ(header.source, "spot.obj");
   EXPECT_EQ(header.samples_per_side, 8);
+  // K chosen by default (spot's lines cross it up to 4 times and more) and the GPU bytes.
+  const nlohmann::json& field = report["geometry_field"];
+  EXPECT_EQ(header.layers, field["layers"].get<int>());
+  EXPECT_TRUE(field["layers_chosen"].get<bool>());
+  EXPECT_GE(field["layers"].get<int>(), 2);
+  const size_t side = 6 * 8 * 8;
+  EXPECT_EQ(field["gpu_bytes"]["geometry_field_8bit"].get<size_t>(),
+            side * side * 2 * field["layers"].get<size_t>());
+  // Positions and normals RGBA32F, albedo RGBA16F (runtime/gpu_assets.hpp).
+  EXPECT_EQ(field["gpu_bytes"]["geometry_image"].get<size_t>(), size_t(256) * 256 * (16 + 16 + 8));
 }
 
 TEST_F(FieldCli, VerifyReportsEveryModeAgainstExactCasts) {
@@ -108,6 +126,82 @@ TEST_F(FieldCli, VerifyReportsEveryModeAgainstExactCasts) {
     }
     EXPECT_TRUE(reference["box_rays"].contains("refined_last"));
   }
+  // Rays leaving the surface, against the built mesh: with K = 1 and with all K layers.
+  const nlohmann::json& built = report["references"][0];
+  const std::string k = std::to_string(report["layers"].get<int>());
+  for (const std::string family : {"surface_rays", "mirror_rays"}) {
+    const double k1 = built[family + "_k1"]["refined"]["hit_agreement"].get<double>();
+    const double all = built[family + "_k" + k]["refined"]["hit_agreement"].get<double>();
+    EXPECT_GT(all, k1) << family;
+    EXPECT_GE(all, 0.97) << family;
+    EXPECT_FALSE(report["references"][1].contains(family + "_k1"));
+  }
+}
+
+TEST_F(FieldCli, FieldLayersAndVerifyFieldBits) {
+  const std::string out = (kDir / "two").string();
+  fs::copy_file(name() + ".gimage.exr", out + ".gimage.exr", fs::copy_options::overwrite_existing);
+  fs::copy_file(name() + ".gimage.obj", out + ".gimage.obj", fs::copy_options::overwrite_existing);
+  CliRun r = run("field " + kSpot + " --image " + out + ".gimage.exr -o " + out +
+                 ".gfield.exr --samples 8 --layers 2");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("K = 2"), std::string::npos) << r.output;
+  ExrAssetHeader header;
+  std::string error;
+  ASSERT_TRUE(load_asset_header(out + ".gfield.exr", header, error)) << error;
+  EXPECT_EQ(header.layers, 2);
+  r = run("verify " + out + " --rays 2000 --field-bits 8");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("K = 2, uv bits 8"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("surface_rays_k2 refined"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("mirror_rays_k1 refined"), std::string::npos) << r.output;
+  r = run("field " + kSpot + " --image " + out + ".gimage.exr -o " + out +
+          ".gfield.exr --layers 5");
+  EXPECT_NE(r.status, 0);
+  r = run("verify " + out + " --rays 100 --field-bits 12");
+  EXPECT_NE(r.status, 0);
+}
+
+TEST_F(FieldCli, VerifyRefusesAFieldWhoseLayersDisagreeWithItsHeader) {
+  // The header says 3 layers, the file holds 2: one line naming the file, exit code 2.
+  GeometryField field;
+  std::string error;
+  ASSERT_TRUE(load_geometry_field(name() + ".gfield.exr", field, error)) << error;
+  const std::string other = (kDir / "layers").string();
+  fs::copy_file(name() + ".gimage.exr", other + ".gimage.exr",
+                fs::copy_options::overwrite_existing);
+  fs::copy_file(name() + ".gimage.obj", other + ".gimage.obj",
+                fs::copy_options::overwrite_existing);
+  field.layers = 2;
+  field.uv.resize(field_layer_size(field) * 2, glm::vec2(kFieldMiss));
+  ASSERT_TRUE(save_geometry_field(other + ".gfield.exr", field, ExrPrecision::kHalf, error));
+  {
+    Imf::InputFile in((other + ".gfield.exr").c_str());
+    Imf::Header header = in.header();
+    header.insert("gfield.layers", Imf::IntAttribute(3));
+    const Imath::Box2i dw = header.dataWindow();
+    const int width = dw.max.x - dw.min.x + 1;
+    std::vector<half> pixels(size_t(width) * size_t(width) * 4);
+    Imf::FrameBuffer fb;
+    int c = 0;
+    for (const char* name : {"hit0.U", "hit0.V", "hit1.U", "hit1.V"}) {
+      fb.insert(name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(pixels.data() + c++),
+                                 4 * sizeof(half), 4 * sizeof(half) * size_t(width)));
+    }
+    in.setFrameBuffer(fb);
+    in.readPixels(dw.min.y, dw.max.y);
+    Imf::OutputFile out((other + ".bad.exr").c_str(), header);
+    out.setFrameBuffer(fb);
+    out.writePixels(width);
+  }
+  fs::rename(other + ".bad.exr", other + ".gfield.exr");
+  const CliRun r = run("verify " + other + " --rays 100");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find(other + ".gfield.exr: 2 hit layers in the channels, but gfield.layers "
+                                  "says 3"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 }
 
 TEST_F(FieldCli, FieldRefusesBadInput) {

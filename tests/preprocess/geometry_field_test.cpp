@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include <glm/gtc/constants.hpp>
 
@@ -106,8 +108,8 @@ class GeometryFieldTorus : public ::testing::Test {
     }
     const Box box = padded_bounds(points.data(), points.size(), 0.02f);
     asset_->image = rasterize_torus(asset_->pm, 256, box);
-    ASSERT_TRUE(build_geometry_field(asset_->pm, asset_->embree, asset_->image, 10, asset_->field,
-                                     error, &asset_->stats))
+    ASSERT_TRUE(build_geometry_field(asset_->pm, asset_->embree, asset_->image, 10, kAutoLayers,
+                                     asset_->field, error, &asset_->stats))
         << error;
     asset_->field.source = asset_->image.source;
     ready_ = true;
@@ -124,7 +126,7 @@ TEST_F(GeometryFieldTorus, TableLayoutAndBareCastAgree) {
   const GeometryField& field = asset_->field;
   const int n = field.samples_per_side;
   const int side = field_side(field);
-  ASSERT_EQ(field.uv.size(), size_t(side) * size_t(side));
+  ASSERT_EQ(field.uv.size(), size_t(side) * size_t(side) * size_t(field.layers));
   size_t hits = 0;
   for (int entry = 0; entry < side; ++entry) {
     for (int exit = 0; exit < side; ++exit) {
@@ -146,6 +148,99 @@ TEST_F(GeometryFieldTorus, TableLayoutAndBareCastAgree) {
   // A torus seen through the box: a good share of rays hit, some miss through the hole.
   EXPECT_GT(hits, asset_->stats.rays / 4);
   EXPECT_LT(hits, asset_->stats.rays);
+}
+
+TEST_F(GeometryFieldTorus, LayersHoldTheLinesHitsInOrder) {
+  // The torus: lines through the box cross it 0, 2 or 4 times (tangent lines aside), so the
+  // chosen K is 4 and holds every hit of nearly all lines.
+  const GeometryField& field = asset_->field;
+  const FieldBuildStats& stats = asset_->stats;
+  EXPECT_EQ(stats.layers, 4);
+  EXPECT_EQ(field.layers, 4);
+  EXPECT_EQ(stats.collected, kMaxFieldLayers + 1);
+  size_t lines = 0;
+  for (size_t count : stats.lines_by_hits) {
+    lines += count;
+  }
+  EXPECT_EQ(lines, stats.rays);
+  EXPECT_GT(stats.lines_by_hits[4], stats.rays / 50);  // lines through both sides of the ring
+  EXPECT_GE(layer_coverage(stats, 4), 0.999);
+  EXPECT_LT(layer_coverage(stats, 2), layer_coverage(stats, 4));
+  // Every layer against the exact hits along the line, cast one after the other.
+  const int n = field.samples_per_side;
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> sample(0, sample_count(n) - 1);
+  size_t compared = 0, agree = 0, close = 0, hits = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const int entry = sample(rng), exit = sample(rng);
+    if (entry / (n * n) == exit / (n * n)) {
+      continue;
+    }
+    const glm::vec3 a = from_unit_cube(field.box, sample_point(face_sample(entry, n), n));
+    const glm::vec3 d = from_unit_cube(field.box, sample_point(face_sample(exit, n), n)) - a;
+    float t = 0.0f;
+    for (int layer = 0; layer < field.layers; ++layer) {
+      const RayHit h = intersect(asset_->embree, a, d, layer == 0 ? 0.0f : t + 1e-5f, 1.0f);
+      const glm::vec2 uv = field_uv(field, entry, exit, layer);
+      ++compared;
+      agree += size_t(h.hit == is_field_hit(uv));
+      if (h.hit && is_field_hit(uv)) {
+        ++hits;
+        const float error = glm::distance(sample_position(asset_->image, uv), a + h.t * d);
+        close += size_t(error < 0.005f * diagonal(field.box));
+      }
+      t = h.hit ? h.t : 2.0f;
+    }
+  }
+  std::printf("layers: %zu of %zu (pair, layer) hit/miss agree, %zu of %zu hits within 0.5%%\n",
+              agree, compared, close, hits);
+  EXPECT_GE(double(agree) / double(compared), 0.999);
+  EXPECT_GE(double(close) / double(hits), 0.99);
+  EXPECT_GT(hits, compared / 4);
+}
+
+TEST_F(GeometryFieldTorus, ExplicitLayersAreTheChosenFieldsFirstLayers) {
+  // One traversal per line collecting K hits stores the same hits as collecting 5: K = 1 (a
+  // plain first-hit cast) is the first layer, K = 2 the first two.
+  std::string error;
+  for (int layers : {1, 2}) {
+    GeometryField field;
+    FieldBuildStats stats;
+    ASSERT_TRUE(build_geometry_field(asset_->pm, asset_->embree, asset_->image, 10, layers, field,
+                                     error, &stats))
+        << error;
+    EXPECT_EQ(field.layers, layers);
+    EXPECT_EQ(stats.collected, layers);
+    EXPECT_EQ(stats.hits, asset_->stats.hits);
+    EXPECT_LT(layer_coverage(stats, layers), 0.0);  // unknown: no more hits were looked for
+    const size_t count = field_layer_size(field) * size_t(layers);
+    ASSERT_EQ(field.uv.size(), count);
+    // Equal up to rounding: a ray through an edge hits both triangles there at one t, and the
+    // plain first-hit cast (K = 1) may keep the other one (9 of 360,000 uvs differ by 1e-6).
+    EXPECT_TRUE(std::equal(field.uv.begin(), field.uv.end(), asset_->field.uv.begin(),
+                           [](glm::vec2 a, glm::vec2 b) { return glm::distance(a, b) < 1e-5f; }));
+  }
+}
+
+TEST_F(GeometryFieldTorus, SurfaceRaysSeeTheTorusBeyondTheirOrigin) {
+  // Rays leaving the torus: the single-layer field holds the hits of lines from the box faces,
+  // which lie behind a ray starting on the far side of the tube; the layers hold them.
+  FieldLookup lookup;
+  std::string error;
+  ASSERT_TRUE(make_field_lookup(asset_->field, asset_->image, lookup, error)) << error;
+  const SurfaceRays rays = random_surface_rays(asset_->pm.mesh, 5000,
+                                               kSurfaceRayOffset * diagonal(asset_->field.box), 5);
+  AccuracyStats k[2];
+  for (int i = 0; i < 2; ++i) {
+    lookup.layers = i == 0 ? 1 : 0;
+    k[i] = verify_lookup(lookup, asset_->embree, asset_->pm.mesh, rays.rays, LookupMode::kRefined,
+                         false, rays.triangles);
+    std::printf("surface rays K = %d: hit/miss %.4f median %.4f%%\n", i == 0 ? 1 : 4,
+                k[i].hit_agreement(), k[i].position_median);
+  }
+  EXPECT_GE(k[1].hit_agreement(), 0.995);
+  EXPECT_LE(k[1].position_median, 0.01);
+  EXPECT_GT(k[1].hit_agreement(), k[0].hit_agreement() + 0.03);
 }
 
 TEST_F(GeometryFieldTorus, TableMatchesExactCasts) {
@@ -192,20 +287,24 @@ TEST_F(GeometryFieldTorus, LookupModesAgainstExactCasts) {
 
 TEST(GeometryField, SamplesPerSideOutOfRangeIsRefused) {
   std::string error;
-  EXPECT_FALSE(check_field_size(3, true, error));
+  EXPECT_FALSE(check_field_size(3, 1, true, error));
   EXPECT_NE(error.find("out of range"), std::string::npos);
-  EXPECT_FALSE(check_field_size(49, true, error));
-  EXPECT_TRUE(check_field_size(24, true, error)) << error;
-  EXPECT_EQ(field_memory_estimate(24, true), size_t(3456) * 3456 * 12);
+  EXPECT_FALSE(check_field_size(49, 1, true, error));
+  EXPECT_FALSE(check_field_size(24, kMaxFieldLayers + 1, true, error));
+  EXPECT_NE(error.find("layers"), std::string::npos);
+  EXPECT_TRUE(check_field_size(24, 1, true, error)) << error;
+  EXPECT_EQ(field_memory_estimate(24, 1, true), size_t(3456) * 3456 * 12);
+  EXPECT_EQ(field_memory_estimate(24, kAutoLayers, true), size_t(3456) * 3456 * 12 * 4);
 
   ParameterizedMesh pm = make_torus();
   EmbreeMesh embree;
   ASSERT_TRUE(embree.build(pm.mesh, error)) << error;
   const GeometryImage image = rasterize_torus(pm, 16, Box{glm::vec3(-1.5f), glm::vec3(1.5f)});
   GeometryField field;
-  EXPECT_FALSE(build_geometry_field(pm, embree, image, 2, field, error));
+  EXPECT_FALSE(build_geometry_field(pm, embree, image, 2, 1, field, error));
+  EXPECT_FALSE(build_geometry_field(pm, embree, image, 8, kMaxFieldLayers + 1, field, error));
   pm.corner_uv.pop_back();
-  EXPECT_FALSE(build_geometry_field(pm, embree, image, 8, field, error));
+  EXPECT_FALSE(build_geometry_field(pm, embree, image, 8, 1, field, error));
   EXPECT_NE(error.find("corner uvs"), std::string::npos);
 }
 

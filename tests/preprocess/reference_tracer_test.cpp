@@ -302,7 +302,9 @@ TEST(ReferenceTracer, HollowCylinderRefractsFourTimes) {
 
 TEST(ReferenceTracer, MeshInstancesSitWhereTheirTransformsPutThem) {
   Scene scene = base_scene(8);
-  scene.meshes.push_back({std::string(GFIELD_DATA_DIR) + "/meshes/torus.obj", "", ""});
+  MeshAsset torus_mesh;
+  torus_mesh.file = std::string(GFIELD_DATA_DIR) + "/meshes/torus.obj";
+  scene.meshes.push_back(torus_mesh);
   for (const float x : {-3.0f, 3.0f}) {
     SceneObject torus;
     torus.shape.type = ShapeType::kMesh;

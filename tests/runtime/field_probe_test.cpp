@@ -1,5 +1,6 @@
 // The GPU geometry-field lookup (shaders/lib/field_lookup.glsl through the runtime's textures)
-// against the CPU lookup (core/field_lookup) for the same rays, in every mode, and both against
+// against the CPU lookup (core/field_lookup) for the same rays, in every mode, with the field's
+// two layers stored as RG8, RG16 and RG32F (the CPU reading the same codes), and both against
 // the exact sphere.
 
 #include <random>
@@ -7,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "gfield/field_lookup.hpp"
+#include "gfield/gpu_storage.hpp"
 #include "runtime/field_probe.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/shader_program.hpp"
@@ -34,22 +36,21 @@ std::vector<Ray> test_rays() {
     const glm::vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
     rays.push_back({a, b - a, -10.0f, 10.0f});
   }
+  // Rays starting inside the box, half of them on the sphere: the first hit beyond the origin
+  // often needs the second layer.
+  for (int k = 0; k < 4096; ++k) {
+    const glm::vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
+    const glm::vec3 origin = k % 2 == 0 ? a : glm::normalize(a);
+    rays.push_back({origin, b - a, 1e-3f, 3.0e38f});
+  }
   return rays;
 }
 
-TEST(FieldProbe, GpuLookupAgreesWithCpuLookup) {
+/// Every mode, first and last hit: the GPU lookup against the CPU lookup of the same codes;
+/// refined first hits of the camera rays against the exact sphere.
+void expect_gpu_agrees(const GpuAssets& assets, const FieldLookup& lookup,
+                       const std::vector<Ray>& rays, int bits) {
   std::string error;
-  auto context = GlContext::create_headless(error);
-  ASSERT_NE(context, nullptr) << error;
-  GeometryImage image;
-  GeometryField field;
-  test::make_sphere_assets(64, 8, image, field);
-  FieldLookup lookup;
-  ASSERT_TRUE(make_field_lookup(field, image, lookup, error)) << error;
-  GpuAssets assets;
-  ASSERT_TRUE(assets.upload({&image}, {&field}, error)) << error;
-  const std::vector<Ray> rays = test_rays();
-
   for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
     for (bool last : {false, true}) {
       std::vector<glm::vec4> gpu;
@@ -72,15 +73,37 @@ TEST(FieldProbe, GpuLookupAgreesWithCpuLookup) {
         }
       }
       const double agreement = double(agree) / double(rays.size());
-      SCOPED_TRACE(std::string(lookup_mode_name(mode)) + (last ? " last" : " first"));
+      SCOPED_TRACE(std::string(lookup_mode_name(mode)) + (last ? " last" : " first") + ", " +
+                   std::to_string(bits) + " bits");
       EXPECT_GE(agreement, 0.999) << agree << " of " << rays.size();
       EXPECT_GT(hits, rays.size() / 4);  // the rays do exercise hits
       if (!last && mode == LookupMode::kRefined) {
         EXPECT_GE(double(truth) / (96.0 * 96.0), 0.99);
       }
-      std::printf("%s %s: %.4f%% agree, %zu CPU hits of %zu rays\n", lookup_mode_name(mode),
-                  last ? "last" : "first", 100.0 * agreement, hits, rays.size());
+      std::printf("%d bits, %s %s: %.4f%% agree, %zu CPU hits of %zu rays\n", bits,
+                  lookup_mode_name(mode), last ? "last" : "first", 100.0 * agreement, hits,
+                  rays.size());
     }
+  }
+}
+
+TEST(FieldProbe, GpuLookupAgreesWithCpuLookup) {
+  std::string error;
+  auto context = GlContext::create_headless(error);
+  ASSERT_NE(context, nullptr) << error;
+  GeometryImage image;
+  GeometryField field;
+  test::make_sphere_assets(64, 8, image, field);
+  const std::vector<Ray> rays = test_rays();
+  for (int bits : {8, 16, 32}) {
+    const GeometryField stored = quantized_field(field, bits);  // what the GPU reads
+    FieldLookup lookup;
+    ASSERT_TRUE(make_field_lookup(stored, image, lookup, error)) << error;
+    GpuAssets assets;
+    ASSERT_TRUE(assets.upload({&image}, {&field}, bits, error)) << error;
+    EXPECT_EQ(assets.assets()[0].field_layers, 2);
+    EXPECT_EQ(assets.assets()[0].field_bytes, field_gpu_bytes(8, 2, bits));
+    expect_gpu_agrees(assets, lookup, rays, bits);
   }
 }
 

@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "gfield/image_metrics.hpp"
 #include "geometry/scene_file.hpp"
+#include "gfield/image_metrics.hpp"
 #include "gfield/scene.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
@@ -73,7 +73,7 @@ std::vector<TestScene> test_scenes() {
                            "transform": {"translate": [0.5, -0.3, 0.6]},
                            "material": {"type": "mirror", "tint": [0.8, 0.85, 1.0]}})",
            kCamera),
-       29.5, true},
+       31.5, true},
       {"mirror-spheres",
        scene_text(R"({"name": "left", "shape": "sphere", "radius": 0.5,
                       "transform": {"translate": [-0.55, 0, 0]},
@@ -84,7 +84,7 @@ std::vector<TestScene> test_scenes() {
                       spot_object("spot", R"({"translate": [0, 0.1, -1.2], "rotate": [0, 20, 0]})",
                                   R"({"type": "diffuse", "color": [0.9, 0.8, 0.3]})"),
                   kCamera),
-       40.0, true},
+       48.5, true},
       {"refraction",
        scene_text(spot_object("glass spot", R"({"translate": [0, 0, 0.3], "rotate": [0, 40, 0]})",
                               R"({"type": "dielectric", "ior": "crown-glass"})") +
@@ -92,7 +92,7 @@ std::vector<TestScene> test_scenes() {
                            "transform": {"translate": [0, 0.3, -1.0]},
                            "material": {"type": "diffuse", "texture": "color-chart"}})",
                   kCamera),
-       19.0, true},
+       20.3, true},
   };
 }
 
@@ -182,22 +182,23 @@ TEST_F(RenderTest, MatchesReferenceTracerAndRefinedBeatsLinearBeatsNearest) {
 }
 
 /// An example scene of data/scenes with its mesh objects' assets built into the test folder by
-/// `gfield build` with its defaults (as scripts/demo.sh builds them).
+/// `gfield batch` with the defaults of `gfield build` (as scripts/demo.sh builds them); batch
+/// rebuilds an asset whose build id no longer matches its mesh and options, so a test folder
+/// left by an older build is never used.
 std::string example_scene(const std::string& name) {
   const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes" / (name + ".json");
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
+  const fs::path folder = kDir / "examples";
   for (auto& object : scene["objects"]) {
     if (object["shape"] != "mesh")
       continue;
     const fs::path mesh =
         fs::weakly_canonical(source.parent_path() / object["file"].get<std::string>());
-    const fs::path asset = kDir / ("example-" + mesh.stem().string());
-    if (!fs::exists(asset.string() + ".gfield.exr")) {
-      const std::string command = std::string("\"") + GFIELD_CLI + "\" build \"" + mesh.string() +
-                                  "\" -o \"" + asset.string() +
-                                  "\" --verify-rays 0 > /dev/null 2>&1";
-      EXPECT_EQ(std::system(command.c_str()), 0) << command;
-    }
+    const fs::path asset = folder / mesh.stem();
+    const std::string command = std::string("\"") + GFIELD_CLI + "\" batch \"" + mesh.string() +
+                                "\" -o \"" + folder.string() +
+                                "\" --verify-rays 0 > /dev/null 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
     object["file"] = mesh.string();
     object["gimage"] = asset.string() + ".gimage.exr";
     object["gfield"] = asset.string() + ".gfield.exr";
@@ -211,10 +212,13 @@ TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
   constexpr int kDepth = 4, kExampleSize = 256, kExampleSamples = 4;
   // Refined-mode PSNR measured on llvmpipe minus a margin (docs/runtime.md). two-mirror-spheres
   // has no mesh objects: no field lookups, the three modes are the same picture.
-  const std::pair<const char*, double> scenes[] = {{"mirror-torus-instances", 32.0},
+  // Measured with the layered fields (K chosen: 4 for spot and the torus) at 8 bits: 39.8, 54.3,
+  // 28.9 and 39.4 dB (before the layers 32.9, 54.3, 26.0 and 32.9); textured-mirror is issue 17's
+  // (target 30 dB).
+  const std::pair<const char*, double> scenes[] = {{"mirror-torus-instances", 39.0},
                                                    {"two-mirror-spheres", 53.5},
-                                                   {"davis-wyman-color-chart", 25.5},
-                                                   {"textured-mirror", 32.0}};
+                                                   {"davis-wyman-color-chart", 28.3},
+                                                   {"textured-mirror", 38.5}};
   for (const auto& [name, min_psnr] : scenes) {
     SCOPED_TRACE(name);
     Scene scene;

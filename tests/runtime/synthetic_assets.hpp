@@ -44,8 +44,8 @@ inline float sphere_hit(glm::vec3 o, glm::vec3 d) {
   return t0 >= 0.0f ? t0 : (t1 >= 0.0f ? t1 : -1.0f);
 }
 
-/// The unit sphere's geometry image (n x n) and field (N samples per side) in the box
-/// [-1.2, 1.2]^3.
+/// The unit sphere's geometry image (n x n) and field (N samples per side, two layers: where each
+/// line enters the sphere and where it leaves) in the box [-1.2, 1.2]^3.
 inline void make_sphere_assets(int n, int samples_per_side, GeometryImage& image,
                                GeometryField& field) {
   const Box box{glm::vec3(-1.2f), glm::vec3(1.2f)};
@@ -64,10 +64,12 @@ inline void make_sphere_assets(int n, int samples_per_side, GeometryImage& image
   }
   field = {};
   field.samples_per_side = samples_per_side;
+  field.layers = 2;
   field.box = box;
   field.source = "sphere";
   const int side = sample_count(samples_per_side);
-  field.uv.assign(size_t(side) * size_t(side), glm::vec2(kFieldNoRay));
+  const size_t layer_size = size_t(side) * size_t(side);
+  field.uv.assign(2 * layer_size, glm::vec2(kFieldNoRay));
   for (int entry = 0; entry < side; ++entry) {
     const FaceSample se = face_sample(entry, samples_per_side);
     const glm::vec3 s = from_unit_cube(box, sample_point(se, samples_per_side));
@@ -77,8 +79,11 @@ inline void make_sphere_assets(int n, int samples_per_side, GeometryImage& image
         continue;
       const glm::vec3 e = from_unit_cube(box, sample_point(sx, samples_per_side));
       const float t = sphere_hit(s, e - s);
-      field.uv[size_t(entry) * size_t(side) + size_t(exit)] =
-          (t >= 0.0f && t <= 1.0f) ? octahedral_uv(s + t * (e - s)) : glm::vec2(kFieldMiss);
+      const bool hit = t >= 0.0f && t <= 1.0f;
+      const float t_exit = hit ? sphere_hit(e, s - e) : -1.0f;  // from the far end back
+      const size_t k = size_t(entry) * size_t(side) + size_t(exit);
+      field.uv[k] = hit ? octahedral_uv(s + t * (e - s)) : glm::vec2(kFieldMiss);
+      field.uv[layer_size + k] = hit ? octahedral_uv(e + t_exit * (s - e)) : glm::vec2(kFieldMiss);
     }
   }
 }

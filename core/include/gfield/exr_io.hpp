@@ -1,6 +1,7 @@
 #pragma once
-// OpenEXR files of geometry images (format version 2: optional albedo channels; version 1 still
-// reads) and geometry fields (version 1) (docs/formats.md).
+// OpenEXR files of geometry images (version 2: optional albedo channels; version-1 images are
+// read without them) and geometry fields (version 2: K layers; version-1 fields are read as
+// K = 1) (docs/formats.md).
 // Loaders validate the header (format tag, version, size, channels) and return false with an
 // error "FILE: problem". Savers write a temporary file beside the target and rename it.
 
@@ -15,10 +16,14 @@ namespace gfield {
 /// normal and coverage channels of images and to the U, V channels of fields.
 enum class ExrPrecision { kHalf, kFloat };
 
-/// Format version of geometry fields and thickness maps, written and accepted.
+/// Format version of thickness maps, written and accepted.
 inline constexpr int kFormatVersion = 1;
-/// Format version of geometry images written; versions 1 (no albedo) to this are read.
+/// Format version of geometry images written (optional channels albedo.R, albedo.G, albedo.B);
+/// versions 1 (no albedo) and 2 are read.
 inline constexpr int kGeometryImageVersion = 2;
+/// Format version of geometry fields written (channels hitL.U, hitL.V per layer L, attribute
+/// gfield.layers); versions 1 (channels U, V: one layer) and 2 are read.
+inline constexpr int kFieldFormatVersion = 2;
 
 bool save_geometry_image(const std::string& filename, const GeometryImage& image,
                          ExrPrecision precision, std::string& error);
@@ -29,8 +34,8 @@ bool save_geometry_field(const std::string& filename, const GeometryField& field
 bool load_geometry_field(const std::string& filename, GeometryField& field, std::string& error);
 
 /// Reads only the header of a gfield EXR: format tag ("geometry-image"/"geometry-field"), box,
-/// source, build id and samples per side (0 for images). For matching a field with its image
-/// cheaply.
+/// source, build id, samples per side and layers (0 for images; 1 for version-1 fields). For
+/// matching a field with its image cheaply.
 struct ExrAssetHeader {
   std::string format;
   int version = 0;
@@ -40,6 +45,7 @@ struct ExrAssetHeader {
   std::string source;
   std::string build_id;  ///< gfield.buildId (gfield/build_id.hpp); empty when absent
   int samples_per_side = 0;
+  int layers = 0;
 };
 bool load_asset_header(const std::string& filename, ExrAssetHeader& header, std::string& error);
 

@@ -1,7 +1,8 @@
 #pragma once
-// CPU lookup of a geometry field: the first (or last) hit of any ray on an object stored as a
-// geometry field + geometry image. The math is shaders/lib/field_lookup.glsl, compiled as C++,
-// so that the runtime's GLSL gives the same answers (docs/geometry-field.md).
+// CPU lookup of a geometry field: the first hit beyond the ray's origin (or the last hit) of any
+// ray on an object stored as a geometry field (K layers of hits) + geometry image. The math is
+// shaders/lib/field_lookup.glsl, compiled as C++, so that the runtime's GLSL gives the same answers
+// (docs/geometry-field.md).
 
 #include <string>
 
@@ -17,6 +18,8 @@ namespace gfield {
 ///  - kLinear: the paper's linear kernel over the 16 surrounding sample pairs;
 ///  - kRefined: the 16 pairs' uvs refined against the geometry image's surface by Newton's
 ///    method and verified against the ray; the nearest verified hit.
+/// Each pair's uv is its first stored hit (over the K layers) beyond the ray's origin t_min;
+/// refined goes on to the pair's next layers while a candidate fails to verify.
 enum class LookupMode { kNearest = 0, kLinear = 1, kRefined = 2 };
 
 /// "nearest", "linear", "refined".
@@ -46,6 +49,7 @@ struct FieldHit {
 struct FieldLookup {
   const GeometryField* field = nullptr;
   const GeometryImage* image = nullptr;
+  int layers = 0;  ///< layers looked up: the first min(layers, K); 0: all K
 };
 
 /// Pairs a field with its image. False with an error when they do not belong together (different
@@ -57,7 +61,8 @@ bool make_field_lookup(const GeometryField& field, const GeometryImage& image, F
 /// t_min > t_max (NaN included). Lookups return a miss for such rays.
 bool check_ray(const Ray& ray, std::string& error);
 
-/// The first hit of `ray` (mesh coordinates) in [t_min, t_max].
+/// The first hit of `ray` (mesh coordinates) in [t_min, t_max]: beyond its origin t_min, also
+/// when the origin lies inside the box behind parts of the surface (reached through the layers).
 FieldHit lookup_first_hit(const FieldLookup& lookup, const Ray& ray, LookupMode mode);
 /// The last hit of `ray` in [t_min, t_max]: the first hit of the reversed line, read from the
 /// table with entry and exit swapped (rays leaving a refracting object).

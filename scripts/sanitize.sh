@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Builds gfield with AddressSanitizer and UndefinedBehaviorSanitizer (gcc, RelWithDebInfo,
+# benchmarks off; cmake -DGFIELD_SANITIZE=ON) in build-asan/ and runs the whole test suite there
+# (docs/reliability.md). Any ASan or UBSan report fails its test; LeakSanitizer reports too,
+# except for the leaks of Mesa's own drivers listed in tests/lsan-mesa.supp (the GL tests); a
+# preloaded shim (tests/sanitizer/keep_libraries.c) keeps Mesa's driver loaded at eglTerminate so
+# that its leaks carry its name.
+# $GFIELD_JOBS sets the build jobs (default 2).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+launcher=()
+if command -v ccache > /dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+export CCACHE_BASEDIR="$PWD"
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGFIELD_SANITIZE=ON \
+  -DGFIELD_BUILD_BENCH=OFF "${launcher[@]}" > /dev/null
+cmake --build build-asan -j "${GFIELD_JOBS:-2}"
+cc -shared -fPIC -O2 -o build-asan/keep_libraries.so tests/sanitizer/keep_libraries.c
+export LD_PRELOAD=$PWD/build-asan/keep_libraries.so
+export ASAN_OPTIONS=verify_asan_link_order=0:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1
+export LSAN_OPTIONS=suppressions=$PWD/tests/lsan-mesa.supp:print_suppressions=0
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+cd build-asan
+ctest --output-on-failure -j 2
