@@ -9,7 +9,6 @@
 // hardware threads estimate the time on an otherwise idle machine, and are printed beside them.
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -18,6 +17,7 @@
 
 #include "bench/bench_assets.hpp"
 #include "gfield/exr_io.hpp"
+#include "gfield/stopwatch.hpp"
 #include "preprocess/field_build.hpp"
 
 namespace {
@@ -35,10 +35,9 @@ struct Timing {
 
   void run(const auto& work) {
     const double cpu_start = process_cpu_seconds();
-    const auto start = std::chrono::steady_clock::now();
+    gfield::Stopwatch watch;
     work();
-    wall = std::min(
-        wall, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    wall = std::min(wall, watch.seconds());
     cpu = std::min(cpu, process_cpu_seconds() - cpu_start);
   }
 };

@@ -4,12 +4,12 @@
 // chosen), against rtcIntersect1 past the origin's triangle. Usage: bench_field_lookup [rays] [N]
 // (100000 rays, N = 24, meshes spot, homer and the bunny at 512^2).
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 
 #include "bench/bench_assets.hpp"
 #include "gfield/field_lookup.hpp"
+#include "gfield/stopwatch.hpp"
 #include "preprocess/field_build.hpp"
 #include "preprocess/verify.hpp"
 
@@ -44,12 +44,11 @@ int main(int argc, char** argv) {
       size_t hits = 0;
       for (int r = 0; r < 3; ++r) {
         hits = 0;
-        const auto start = std::chrono::steady_clock::now();
+        Stopwatch watch;
         for (size_t i = 0; i < rays.size(); ++i) {
           hits += size_t(cast(rays[i], i));
         }
-        best = std::min(
-            best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        best = std::min(best, watch.seconds());
       }
       return std::make_pair(best, hits);
     };

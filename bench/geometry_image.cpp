@@ -6,18 +6,16 @@
 // Prints the median of R runs (default 3) of every stage, without and then with measurements.
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "preprocess/geometry_image_build.hpp"
 #include "geometry/mesh_io.hpp"
+#include "gfield/stopwatch.hpp"
+#include "preprocess/geometry_image_build.hpp"
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
@@ -49,14 +47,14 @@ int main(int argc, char** argv) {
     gfield::GeometryImageReport report;
     size_t faces = 0;
     for (int run = 0; run < runs; ++run) {
-      const auto start = Clock::now();
+      gfield::Stopwatch watch;
       gfield::TriangleMesh mesh;
       std::string error;
       if (!gfield::load_mesh(path, mesh, error)) {
         std::fprintf(stderr, "%s\n", error.c_str());
         return 1;
       }
-      load.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+      load.push_back(watch.seconds());
       faces = mesh.triangles.size();
       gfield::GeometryImageOptions options;
       options.size = size;
@@ -67,7 +65,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s: %s\n", path.c_str(), error.c_str());
         return 1;
       }
-      total.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+      total.push_back(watch.seconds());
       repair.push_back(report.seconds.repair);
       parameterize.push_back(report.seconds.parameterize);
       pack.push_back(report.seconds.pack);

@@ -9,13 +9,13 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "gfield/scene.hpp"
+#include "gfield/stopwatch.hpp"
 #include "preprocess/reference_tracer.hpp"
 
 namespace {
@@ -58,13 +58,12 @@ int main(int argc, char** argv) {
       return 1;
     }
     gfield::ReferenceTracer tracer;
-    const auto t0 = std::chrono::steady_clock::now();
+    gfield::Stopwatch watch;
     if (!tracer.build(scene, error)) {
       std::fprintf(stderr, "%s\n", error.c_str());
       return 1;
     }
-    const double build =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double build = watch.seconds();
     const gfield::RenderStats raw = tracer.cast_camera_rays(options);
     gfield::RenderStats stats;
     const double cpu0 = cpu_seconds();

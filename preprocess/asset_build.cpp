@@ -1,6 +1,5 @@
 #include "preprocess/asset_build.hpp"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
@@ -8,6 +7,7 @@
 #include "gfield/atomic_file.hpp"
 #include "gfield/gpu_storage.hpp"
 #include "gfield/printable.hpp"
+#include "gfield/stopwatch.hpp"
 #include "preprocess/asset_files.hpp"
 #include "preprocess/asset_staging.hpp"
 #include "preprocess/topology.hpp"
@@ -15,10 +15,6 @@
 
 namespace gfield {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 nlohmann::json box_to_json(const Box& box) {
   return {{"min", {box.min.x, box.min.y, box.min.z}}, {"max", {box.max.x, box.max.y, box.max.z}}};
@@ -85,13 +81,13 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
     error = output + ": " + error;
     return false;
   }
-  auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   EmbreeMesh embree;
   if (!embree.build(pm.mesh, error)) {
     error = output + ": " + error;
     return false;
   }
-  report.bvh_seconds = seconds_since(start);
+  report.bvh_seconds = watch.seconds();
   GeometryField field;
   if (!build_geometry_field(pm, embree, image, samples_per_side, layers, field, error,
                             &report.build)) {
@@ -100,11 +96,11 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
   }
   field.source = image.source;
   field.build_id = image.build_id;
-  start = std::chrono::steady_clock::now();
+  watch.restart();
   if (!save_geometry_field(output, field, precision, error)) {
     return false;
   }
-  report.write_seconds = seconds_since(start);
+  report.write_seconds = watch.seconds();
   std::error_code ec;
   report.file_bytes = size_t(std::filesystem::file_size(output, ec));
   return true;
@@ -160,14 +156,14 @@ bool write_image_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
   image.source = std::filesystem::path(mesh_path).filename().string();
   image.build_id = build_id;
   pm.build_id = build_id;
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   if (!save_parameterized_mesh(staged.parameterized_mesh, pm, error) ||
       !save_geometry_image(staged.image, image, ExrPrecision::kFloat, error)) {
     return false;
   }
   report["geometry_image"] = geometry_image_report_to_json(image_report);
   report["geometry_image"]["size"] = image.size;
-  report["geometry_image"]["write_seconds"] = seconds_since(start);
+  report["geometry_image"]["write_seconds"] = watch.seconds();
   report["box"] = box_to_json(image.box);
   return true;
 }
@@ -176,7 +172,7 @@ bool write_image_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
 
 bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
                  const BuildInputs& inputs, nlohmann::json& report, std::string& error) {
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   if (options.samples_per_side < kMinSamplesPerSide ||
       options.samples_per_side > kMaxSamplesPerSide || options.field_layers < kAutoLayers ||
       options.field_layers > kMaxFieldLayers) {
@@ -240,7 +236,7 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
                      {"geometry_field", printable(files.field)},
                      {"geometry_image_bytes", size_t(std::filesystem::file_size(staged.image, ec))},
                      {"geometry_field_bytes", field_report.file_bytes}};
-  report["seconds"] = seconds_since(start);
+  report["seconds"] = watch.seconds();
   return write_text_file(staged.report, report.dump(2) + "\n", error) && staging.publish(error);
 }
 

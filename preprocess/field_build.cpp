@@ -6,11 +6,11 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <vector>
+#include "gfield/stopwatch.hpp"
 
 namespace gfield {
 namespace {
@@ -344,7 +344,7 @@ glm::vec2 snap_to_covered(const GeometryImage& image, const std::vector<uint8_t>
 bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
                           const GeometryImage& image, int samples_per_side, int layers,
                           GeometryField& field, std::string& error, FieldBuildStats* stats) {
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   if (image.size < 2 || image.coverage.size() != size_t(image.size) * size_t(image.size) ||
       image.position.size() != image.coverage.size()) {
     error = "the geometry image is empty or inconsistent";
@@ -401,7 +401,7 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
   field.layers = s.layers;
   field.uv.resize(count * size_t(s.layers));
   field.uv.shrink_to_fit();  // the layers beyond the chosen K
-  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  s.seconds = watch.seconds();
   if (stats != nullptr) {
     *stats = s;
   }

@@ -3,7 +3,6 @@
 #include "preprocess/geometry_image_build.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <unordered_map>
@@ -12,6 +11,7 @@
 
 #include "geometry/edge_key.hpp"
 #include "geometry/outward_normals.hpp"
+#include "gfield/stopwatch.hpp"
 #include "preprocess/chart_split.hpp"
 #include "preprocess/cut_graph.hpp"
 #include "preprocess/parameterize.hpp"
@@ -20,11 +20,6 @@
 
 namespace gfield {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// One connected component of the repaired mesh, re-indexed.
 struct Component {
@@ -539,30 +534,30 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
                           GeometryImage& image, ParameterizedMesh& parameterized,
                           GeometryImageReport& report, std::string& error,
                           const MeshAppearance* appearance) {
-  const auto start = Clock::now();
+  Stopwatch watch;
   report = {};
   if (!check_build_input(input, options, error))
     return false;
-  auto stage = Clock::now();
+  Stopwatch stage;
   RepairedMesh repaired;
   std::vector<Component> components;
   if (!repair_and_split(input, options, repaired, components, report, error))
     return false;
-  report.seconds.repair = seconds_since(stage);
-  stage = Clock::now();
+  report.seconds.repair = stage.seconds();
+  stage.restart();
   std::vector<Chart> charts;
   if (!parameterize_pieces(repaired.mesh, components, options, charts, report, error))
     return false;
-  report.seconds.parameterize = seconds_since(stage);
-  stage = Clock::now();
+  report.seconds.parameterize = stage.seconds();
+  stage.restart();
   std::vector<double> areas;
   for (const Component& c : components)
     areas.push_back(c.area);
   std::vector<ChartRect> rects;
   if (!pack_charts(areas, options.size, options.gutter, rects, error))
     return false;
-  report.seconds.pack = seconds_since(stage);
-  stage = Clock::now();
+  report.seconds.pack = stage.seconds();
+  stage.restart();
   const MeshAppearance none;
   const bool albedo = appearance != nullptr && carries_base_color(*appearance);
   const AlbedoSource source(input, albedo ? *appearance : none, repaired.mesh,
@@ -571,11 +566,11 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
   rasterize_image(repaired, components, charts, rects, options, albedo ? &source : nullptr, image,
                   parameterized, report);
   report.route = route_summary(report.charts);
-  report.seconds.rasterize = seconds_since(stage);
-  stage = Clock::now();
+  report.seconds.rasterize = stage.seconds();
+  stage.restart();
   measure_image(input, image, parameterized, options, report);
-  report.seconds.measure = seconds_since(stage);
-  report.seconds.total = seconds_since(start);
+  report.seconds.measure = stage.seconds();
+  report.seconds.total = watch.seconds();
   return true;
 }
 

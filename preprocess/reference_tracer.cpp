@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -21,6 +20,7 @@
 #include "gfield/environment.hpp"
 #include "gfield/limits.hpp"
 #include "gfield/optics.hpp"
+#include "gfield/stopwatch.hpp"
 #include "preprocess/embree_mesh.hpp"
 
 namespace gfield {
@@ -653,7 +653,7 @@ Image ReferenceTracer::render(const RenderOptions& options, RenderStats* stats) 
   Image image(width, height);
   std::atomic<std::uint64_t> secondary{0}, shadow{0};
   Progress progress(options.progress, height);
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   tbb::parallel_for(
       tbb::blocked_range<int>(0, height, 1), [&](const tbb::blocked_range<int>& rows) {
         Counters counters;
@@ -673,8 +673,7 @@ Image ReferenceTracer::render(const RenderOptions& options, RenderStats* stats) 
         shadow += counters.shadow;
       });
   if (stats) {
-    stats->seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats->seconds = watch.seconds();
     stats->camera_rays = std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(spp);
     stats->secondary_rays = secondary;
     stats->shadow_rays = shadow;
@@ -689,7 +688,7 @@ RenderStats ReferenceTracer::cast_camera_rays(const RenderOptions& options) cons
   const int spp = std::max(1, options.samples_per_pixel);
   const glm::ivec2 grid = strata(spp);
   std::atomic<std::uint64_t> hits{0};
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   tbb::parallel_for(
       tbb::blocked_range<int>(0, height, 1), [&](const tbb::blocked_range<int>& rows) {
         std::uint64_t local = 0;
@@ -707,7 +706,7 @@ RenderStats ReferenceTracer::cast_camera_rays(const RenderOptions& options) cons
         hits += local;
       });
   RenderStats stats;
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.seconds = watch.seconds();
   stats.camera_rays = std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(spp);
   return stats;
 }

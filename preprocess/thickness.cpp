@@ -1,19 +1,19 @@
 #include "preprocess/thickness.hpp"
 
 #include <atomic>
-#include <chrono>
 
 #include <tbb/parallel_for.h>
 
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/exr_io.hpp"
+#include "gfield/stopwatch.hpp"
 #include "preprocess/embree_mesh.hpp"
 
 namespace gfield {
 
 bool compute_thickness(const GeometryImage& image, const TriangleMesh& mesh, ThicknessMap& map,
                        ThicknessStats& stats, std::string& error) {
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   EmbreeMesh embree;
   if (!embree.build(mesh, error))
     return false;
@@ -43,7 +43,7 @@ bool compute_thickness(const GeometryImage& image, const TriangleMesh& mesh, Thi
   });
   stats.covered_texels = covered;
   stats.misses = misses;
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.seconds = watch.seconds();
   return true;
 }
 

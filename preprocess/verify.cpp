@@ -3,7 +3,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +17,7 @@
 #include "gfield/exr_io.hpp"
 #include "gfield/gpu_storage.hpp"
 #include "gfield/printable.hpp"
+#include "gfield/stopwatch.hpp"
 
 namespace gfield {
 namespace {
@@ -110,13 +110,13 @@ std::vector<Answer> exact_answers(const Exact& exact, const Box& box, const std:
 std::vector<Answer> lookup_answers(const FieldLookup& lookup, const std::vector<Ray>& rays,
                                    LookupMode mode, bool last, double& seconds) {
   std::vector<Answer> answers(rays.size());
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
     const FieldHit h =
         last ? lookup_last_hit(lookup, rays[i], mode) : lookup_first_hit(lookup, rays[i], mode);
     answers[i] = {h.hit, h.position, h.normal};
   });
-  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  seconds = watch.seconds();
   return answers;
 }
 
@@ -323,15 +323,14 @@ AccuracyStats verify_table(const GeometryField& field, const GeometryImage& imag
   }
   std::vector<Answer> stored(pairs);
   std::vector<Answer> cast(pairs);
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch watch;
   tbb::parallel_for(size_t(0), pairs, [&](size_t i) {
     const glm::vec2 uv = field_uv(field, chosen[i].x, chosen[i].y);
     if (is_field_hit(uv)) {
       stored[i] = {true, sample_position(image, uv), sample_normal(image, uv)};
     }
   });
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = watch.seconds();
   tbb::parallel_for(size_t(0), pairs, [&](size_t i) {
     const glm::vec3 entry = from_unit_cube(field.box, sample_point(face_sample(chosen[i].x, n), n));
     const glm::vec3 exit = from_unit_cube(field.box, sample_point(face_sample(chosen[i].y, n), n));

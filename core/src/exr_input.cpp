@@ -92,10 +92,62 @@ bool read_channels(HeaderBytes& in, size_t end, ExrLayout& layout) {
   return false;
 }
 
+/// Bytes of the attribute types OpenEXR reads with a fixed size whatever the header's size field
+/// says (it would then parse the rest of the header from the wrong place); 0 for other types.
+std::uint32_t fixed_attribute_size(const std::string& type) {
+  static const std::map<std::string, std::uint32_t> kSizes = {{"int", 4},
+                                                              {"float", 4},
+                                                              {"double", 8},
+                                                              {"v2i", 8},
+                                                              {"v2f", 8},
+                                                              {"v2d", 16},
+                                                              {"v3i", 12},
+                                                              {"v3f", 12},
+                                                              {"v3d", 24},
+                                                              {"box2i", 16},
+                                                              {"box2f", 16},
+                                                              {"m33f", 36},
+                                                              {"m33d", 72},
+                                                              {"m44f", 64},
+                                                              {"m44d", 128},
+                                                              {"compression", 1},
+                                                              {"lineOrder", 1},
+                                                              {"envmap", 1},
+                                                              {"deepImageState", 1},
+                                                              {"tiledesc", 9},
+                                                              {"chromaticities", 32},
+                                                              {"keycode", 28},
+                                                              {"timecode", 8},
+                                                              {"rational", 8}};
+  const auto found = kSizes.find(type);
+  return found == kSizes.end() ? 0 : found->second;
+}
+
+/// A stringvector's entries (a 32-bit length, then the bytes) fill exactly `size` bytes.
+bool read_string_vector(HeaderBytes& in, std::uint32_t size) {
+  std::uint64_t left = size;
+  while (left > 0) {
+    std::uint32_t length = 0;
+    if (left < 4 || !in.value(length) || length > left - 4 || !in.skip(length)) {
+      return false;
+    }
+    left -= 4 + std::uint64_t(length);
+  }
+  return true;
+}
+
 /// One attribute's value, `size` bytes; false when it does not parse as its type says.
 bool read_attribute(HeaderBytes& in, const std::string& name, const std::string& type,
                     std::uint32_t size, ExrLayout& layout) {
   const size_t end = in.position() + size;
+  const std::uint32_t fixed = fixed_attribute_size(type);
+  if ((fixed != 0 && size != fixed) || type == "idmanifest" ||
+      (type == "floatvector" && size % 4 != 0)) {
+    return false;  // idmanifest: compressed sizes inside that OpenEXR trusts; gfield writes none
+  }
+  if (type == "stringvector") {
+    return read_string_vector(in, size);
+  }
   if (name == "dataWindow" && type == "box2i" && size == 16) {
     std::int32_t w[4];
     in.value(w);

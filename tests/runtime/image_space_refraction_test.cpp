@@ -44,19 +44,21 @@ class ImageSpaceTest : public ::testing::Test {
     const std::string mesh = std::string(GFIELD_DATA_DIR) + "/meshes/spot.obj";
     const std::string name = (dir / "spot").string();
     // The geometry image the runtime rasterises (a small field: these methods do not use it),
-    // its thickness map, and the reference picture.
-    test::CliRun run =
-        test::run_cli("build " + mesh + " -o " + name + " --size 256 --samples 4 --verify-rays 0");
-    ASSERT_EQ(run.exit_code, 0) << run.err;
-    run = test::run_cli("thickness " + name);
-    ASSERT_EQ(run.exit_code, 0) << run.err;
+    // its thickness map, and the reference picture, made once for the suite's tests.
     const std::string scene_file =
         std::string(GFIELD_DATA_DIR) + "/scenes/davis-wyman-color-chart.json";
     const std::string reference = (dir / "reference_tir_only.exr").string();
-    // 256 samples: converged (a 16-sample picture is only 25 dB from it over the refractor).
-    run = test::run_cli("render " + scene_file + " -o " + reference +
-                        " --size 256x256 --spp 256 --dielectric tir-only -q");
-    ASSERT_EQ(run.exit_code, 0) << run.err;
+    if (!test::up_to_date(reference, {mesh, scene_file})) {
+      test::CliRun run = test::run_cli("build " + mesh + " -o " + name +
+                                       " --size 256 --samples 4 --verify-rays 0");
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+      run = test::run_cli("thickness " + name);
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+      // 256 samples: converged (a 16-sample picture is only 25 dB from it over the refractor).
+      run = test::run_cli("render " + scene_file + " -o " + reference +
+                          " --size 256x256 --spp 256 --dielectric tir-only -q");
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+    }
     scene_ = new Scene;
     ASSERT_TRUE(load_scene(scene_file, *scene_, error)) << error;
     ASSERT_EQ(scene_->meshes.size(), 1u);

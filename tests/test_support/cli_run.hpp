@@ -7,7 +7,9 @@
 #include <unistd.h>
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iterator>
 #include <string>
 
@@ -42,6 +44,23 @@ inline CliRun run_program(const std::string& executable, const std::string& args
 /// Runs `gfield ARGS`.
 inline CliRun run_cli(const std::string& args) {
   return run_program(GFIELD_CLI, args);
+}
+
+/// True when `output` exists and is newer than `gfield` itself and every one of `inputs`. CTest
+/// runs each test in a process of its own, so a suite's set-up runs once per test: with this it
+/// reuses what the set-up of an earlier test of the same build made, and redoes it after a
+/// rebuild of the tool or a change of an input.
+inline bool up_to_date(const std::string& output, std::initializer_list<std::string> inputs) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_time_type made = fs::last_write_time(output, ec);
+  if (ec || fs::last_write_time(GFIELD_CLI, ec) >= made || ec)
+    return false;
+  for (const std::string& input : inputs) {
+    if (fs::last_write_time(input, ec) >= made || ec)
+      return false;
+  }
+  return true;
 }
 
 }  // namespace gfield::test
