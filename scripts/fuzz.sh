@@ -23,7 +23,7 @@ cmake --build build-fuzz -j "${GFIELD_JOBS:-2}"
 
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(mesh_obj mesh_ply mesh_off mesh_stl scene gimage gfield gimage_obj)
+  targets=(mesh_obj mesh_ply mesh_off mesh_stl mesh_gltf mesh_glb scene gimage gfield gimage_obj)
 fi
 corpus_root=${GFIELD_FUZZ_CORPUS:-}
 if [ -z "$corpus_root" ]; then

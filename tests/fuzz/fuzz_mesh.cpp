@@ -1,5 +1,6 @@
 // Fuzz target: one mesh format's reader (load_mesh), the format chosen at compile time by
-// GFIELD_FUZZ_EXTENSION (".obj", ".ply", ".off", ".stl").
+// GFIELD_FUZZ_EXTENSION (".obj", ".ply", ".off", ".stl", ".gltf", ".glb": all of a glTF file's
+// mesh primitives as one mesh, through gfield's own checks and then tinygltf).
 
 #include <cmath>
 
