@@ -91,6 +91,9 @@ bool AssetStaging::open(const std::string& name, std::string& error) {
   const fs::path dir = folder_of(name);
   const std::string stem = fs::path(name).filename().string();
   target_ = asset_files(name);
+  // A signal between creating the folder and registering it for removal would leave it behind:
+  // it waits until the end of open(), then removes what is registered.
+  const SignalsDeferred deferred;
   for (int n = 0;; ++n) {
     const fs::path folder =
         dir / (stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(n));
