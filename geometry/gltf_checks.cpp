@@ -86,7 +86,8 @@ constexpr Reference kReferences[] = {
 bool check_index(const json& value, size_t size, const char* target, std::string& what) {
   if (!value.is_number_integer() || value.get<std::int64_t>() < 0 ||
       std::uint64_t(value.get<std::int64_t>()) >= size) {
-    what = "index " + value.dump() + " out of range (" + std::to_string(size) + " " + target + ")";
+    what = "index " + value.dump(-1, ' ', false, json::error_handler_t::replace) +
+           " out of range (" + std::to_string(size) + " " + target + ")";
     return false;
   }
   return true;

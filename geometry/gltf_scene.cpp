@@ -286,7 +286,8 @@ bool gltf_scene_settings(const GltfDocument& d, Scene& scene, bool& has_image, b
     has_image = has_image || key == "image";
     has_ambient = has_ambient || key == "ambient";
   }
-  if (!parse_scene(text.dump(), d.file + " (extras.gfield)", scene, error))
+  if (!parse_scene(text.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
+                   d.file + " (extras.gfield)", scene, error))
     return false;
   scene.filename = d.file;
   if (scene.purpose.empty())

@@ -64,7 +64,7 @@ class GlbBuilder {
   std::string glb() {
     if (!bin.empty())
       doc["buffers"] = json::array({{{"byteLength", bin.size()}}});
-    std::string text = doc.dump();
+    std::string text = doc.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     while (text.size() % 4 != 0)
       text += ' ';
     while (bin.size() % 4 != 0)
@@ -185,7 +185,7 @@ bool export_mesh(GlbBuilder& b, const Scene& scene, const SceneObject& o, Export
   const bool own = material.texture == TextureType::kMesh;
   const std::string key = json{o.shape.mesh,        int(material.type), int(material.texture),
                                vec(material.color), material.ior,       vec(material.absorption)}
-                              .dump();
+                              .dump(-1, ' ', false, json::error_handler_t::replace);
   if (const auto found = cache.meshes.find(key); found != cache.meshes.end()) {
     mesh_index = found->second;
     return true;
