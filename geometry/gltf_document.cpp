@@ -268,8 +268,12 @@ std::vector<float> read_accessor_floats(const GltfDocument& document, int index)
 std::vector<std::int64_t> read_accessor_integers(const GltfDocument& document, int index) {
   const tinygltf::Accessor& accessor = document.model.accessors[size_t(index)];
   std::vector<std::int64_t> values(accessor.count);
-  for_each_value(document, index,
-                 [&](size_t e, int k, double v) { values[e] = k == 0 ? std::int64_t(v) : 0; });
+  // An accessor of floats may hold any value: one no int64 can hold becomes -1, an index out of
+  // range for whoever checks it (converting it would be undefined behaviour).
+  for_each_value(document, index, [&](size_t e, int k, double v) {
+    const bool representable = v > -9.0e18 && v < 9.0e18;
+    values[e] = k != 0 ? 0 : representable ? std::int64_t(v) : -1;
+  });
   return values;
 }
 
