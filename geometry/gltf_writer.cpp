@@ -337,9 +337,11 @@ json extensions_used(const json& doc) {
   std::set<std::string> used;
   if (doc.contains("extensions"))
     used.insert("KHR_lights_punctual");
-  for (const json& m : doc.value("materials", json::array()))
-    for (const auto& [name, value] : m.value("extensions", json::object()).items())
+  for (const json& m : doc.value("materials", json::array())) {
+    const json extensions = m.value("extensions", json::object());  // items() only refers to it
+    for (const auto& [name, value] : extensions.items())
       used.insert(name);
+  }
   return json(used);
 }
 
