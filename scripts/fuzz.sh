@@ -17,6 +17,7 @@ if command -v ccache > /dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
 export CCACHE_BASEDIR="$PWD"
+export CCACHE_NOHASHDIR=1  # -g would otherwise put the folder into the hash: no hits across clones
 cmake -S . -B build-fuzz -G Ninja -DGFIELD_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 "${launcher[@]}" > /dev/null
 cmake --build build-fuzz -j "${GFIELD_JOBS:-2}"

@@ -13,6 +13,7 @@ if command -v ccache > /dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
 export CCACHE_BASEDIR="$PWD"
+export CCACHE_NOHASHDIR=1  # -g would otherwise put the folder into the hash: no hits across clones
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGFIELD_SANITIZE=ON \
   -DGFIELD_BUILD_BENCH=OFF "${launcher[@]}" > /dev/null
 cmake --build build-asan -j "${GFIELD_JOBS:-2}"
