@@ -275,7 +275,6 @@ bool mesh_inside_box(const ParameterizedMesh& pm, const Box& box) {
   return true;
 }
 
-
 bool read_parameterized_mesh_build_id(const std::string& filename, std::string& build_id,
                                       std::string& error) {
   std::ifstream in(filename);

@@ -5,12 +5,8 @@
 # jobs. ccache is used when installed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-launcher=()
-if command -v ccache > /dev/null; then
-  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-fi
+source scripts/ccache-launcher.sh
 # shellcheck disable=SC2086
-export CCACHE_BASEDIR="$PWD"  # one cache for every clone of the project
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" ${GFIELD_CMAKE_ARGS:-}
 targets=()
 for t in "$@"; do

@@ -12,12 +12,7 @@
 # fix it and copy the input to tests/fuzz/regressions/TARGET/. Usage: scripts/fuzz.sh [TARGET...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-launcher=()
-if command -v ccache > /dev/null; then
-  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-fi
-export CCACHE_BASEDIR="$PWD"
-export CCACHE_NOHASHDIR=1  # -g would otherwise put the folder into the hash: no hits across clones
+source scripts/ccache-launcher.sh
 cmake -S . -B build-fuzz -G Ninja -DGFIELD_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 "${launcher[@]}" > /dev/null
 cmake --build build-fuzz -j "${GFIELD_JOBS:-2}"

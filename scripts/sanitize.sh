@@ -8,12 +8,7 @@
 # $GFIELD_JOBS sets the build jobs (default 2).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-launcher=()
-if command -v ccache > /dev/null; then
-  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-fi
-export CCACHE_BASEDIR="$PWD"
-export CCACHE_NOHASHDIR=1  # -g would otherwise put the folder into the hash: no hits across clones
+source scripts/ccache-launcher.sh
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGFIELD_SANITIZE=ON \
   -DGFIELD_BUILD_BENCH=OFF "${launcher[@]}" > /dev/null
 cmake --build build-asan -j "${GFIELD_JOBS:-2}"
