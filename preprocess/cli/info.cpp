@@ -47,7 +47,7 @@ std::string appearance_text(const nlohmann::json& j) {
 void add_info_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "info",
-      "Read a mesh (OBJ/PLY/OFF/STL) and print its topology: vertices, faces, components,\n"
+      "Read a mesh (OBJ/PLY/OFF/STL/glTF) and print its topology: vertices, faces, components,\n"
       "boundary loops, non-manifold edges and vertices, degenerate faces, Euler\n"
       "characteristic and genus per component, bounding box.");
   auto mesh_path = std::make_shared<std::string>();
