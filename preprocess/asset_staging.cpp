@@ -36,22 +36,28 @@ bool is_staging_name(const std::string& file) {
   return std::regex_match(file, pattern);
 }
 
-/// True when the staging folder `folder` has no living builder.
-bool is_stale(const fs::path& folder) {
+/// Removes the staging folder `folder` when it has no living builder: its lock is free (taken
+/// and held while the folder is removed), or it has no lock file and is over a minute old (its
+/// builder was killed between mkdir and creating the lock). True when it was removed.
+bool remove_if_stale(const fs::path& folder) {
+  std::error_code ec;
   const int fd = ::open((folder / kLockName).c_str(), O_RDWR | O_CLOEXEC | O_NOFOLLOW);
   if (fd < 0) {
-    // No lock file: a builder between mkdir and creating it, or killed right there.
-    std::error_code ec;
     const auto age = fs::file_time_type::clock::now() - fs::last_write_time(folder, ec);
-    return !ec && age > std::chrono::minutes(1);
+    return !ec && age > std::chrono::minutes(1) && fs::remove_all(folder, ec) > 0;
   }
-  const bool stale = lock_whole_file(fd, false) == 0;
-  ::close(fd);  // a stale folder is removed right after; its builder cannot come back
-  return stale;
+  bool removed = false;
+  if (lock_whole_file(fd, false) == 0) {
+    removed = fs::remove_all(folder, ec) > 0;  // under the lock: see make_locked_folder
+  }
+  ::close(fd);
+  return removed;
 }
 
 /// Makes and locks the staging folder `folder` (its .lock file). 0 on success, else the errno:
-/// EEXIST when the folder exists, EAGAIN when a cleaner took its lock first (it removes it).
+/// EEXIST when the folder exists, EAGAIN when a cleaner took its lock first. A cleaner that
+/// opened the lock file before the builder locked it may win the lock and remove the folder
+/// (remove_if_stale): the builder then holds the lock of an unlinked file, and tries again.
 int make_locked_folder(const fs::path& folder, int& lock_fd) {
   if (::mkdir(folder.c_str(), 0777) != 0) {
     return errno;
@@ -60,7 +66,9 @@ int make_locked_folder(const fs::path& folder, int& lock_fd) {
   if (lock_fd < 0) {
     return errno;
   }
-  if (lock_whole_file(lock_fd, false) == EAGAIN) {
+  struct stat lock_file {};
+  if (lock_whole_file(lock_fd, false) == EAGAIN ||
+      (::fstat(lock_fd, &lock_file) == 0 && lock_file.st_nlink == 0)) {
     ::close(lock_fd);
     lock_fd = -1;
     return EAGAIN;
@@ -154,8 +162,8 @@ size_t remove_stale_staging(const std::string& dir) {
   for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
     std::error_code entry_ec;
     if (entry.is_directory(entry_ec) && !entry.is_symlink(entry_ec) &&
-        is_staging_name(entry.path().filename().string()) && is_stale(entry.path())) {
-      removed += fs::remove_all(entry.path(), entry_ec) > 0 ? 1 : 0;
+        is_staging_name(entry.path().filename().string()) && remove_if_stale(entry.path())) {
+      ++removed;
     }
   }
   return removed;

@@ -6,9 +6,10 @@
 // mesh the geometry image was built from. Its first K hits are stored in order, one layer each,
 // as the geometry-image uv of the hit point, interpolated from the hit triangle's corner uvs with
 // Embree's barycentrics; a layer past the line's last hit stores kFieldMiss, a pair on one face
-// kFieldNoRay. Rays are cast in coherent packets (one entry sample, 8 consecutive exit samples,
-// rtcIntersect8) with TBB over the entry samples; for K > 1 one traversal per ray collects its K
-// nearest hits with an intersection filter (collect_hits in field_build.cpp), not K casts.
+// kFieldNoRay. The casts (field_casts.hpp), in coherent packets of 8 rays (rtcIntersect8, TBB):
+// K = 1, a first-hit cast of every ray; K > 1, one traversal per line (the rays entry -> exit
+// and exit -> entry are one line) that collects its hits with an intersection filter, 2K of
+// them nearest the entry, and a traversal from the exit only for a line with more.
 
 #include <array>
 #include <cstddef>
@@ -76,6 +77,11 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
 /// (texels i..i+1, j..j+1) at j * (n-1) + i.
 std::vector<uint8_t> covered_patches(const GeometryImage& image);
 
+/// True when the bilinear patch under `uv` has all 4 texels covered. `patches` =
+/// covered_patches(image).
+bool in_covered_patch(const GeometryImage& image, const std::vector<uint8_t>& patches,
+                      glm::vec2 uv);
+
 /// `uv` itself when the 2 x 2 texels of its bilinear patch are all covered; otherwise, of `uv`
 /// and the points of the fully covered patches within 2 texels, the one whose image position is
 /// closest to `hit` (padding texels are copies of other texels, so a lookup there can land far
@@ -84,9 +90,9 @@ glm::vec2 snap_to_covered(const GeometryImage& image, const std::vector<uint8_t>
                           glm::vec2 uv, glm::vec3 hit);
 
 /// Casts exactly the rays and packets of build_geometry_field and stores nothing (the references
-/// of the build benchmark): `layers` = 1, bare first-hit casts; K > 1, the same single traversal
-/// per ray collecting its K nearest hits as the build of K layers. Returns the number of rays that
-/// hit.
+/// of the build benchmark): `layers` = 1, the bare first-hit cast of every ray; K > 1, the
+/// traversals of every line of the build of K layers (K = kMaxFieldLayers + 1: of the chosen K).
+/// Returns the number of rays that hit.
 size_t cast_field_rays(const EmbreeMesh& embree, const Box& box, int samples_per_side,
                        int layers = 1);
 

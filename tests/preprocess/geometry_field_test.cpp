@@ -144,7 +144,11 @@ TEST_F(GeometryFieldTorus, TableLayoutAndBareCastAgree) {
   }
   EXPECT_EQ(hits, asset_->stats.hits);
   EXPECT_EQ(asset_->stats.rays, size_t(side) * size_t(side) - 6 * size_t(n * n) * size_t(n * n));
-  EXPECT_EQ(cast_field_rays(asset_->embree, field.box, n), asset_->stats.hits);
+  // The chosen field's rays take their hits from one traversal per line, the bare cast casts
+  // every ray: they differ only where a grazing ray slips between triangles in one direction.
+  const size_t bare_hits = cast_field_rays(asset_->embree, field.box, n);
+  EXPECT_LE(std::max(bare_hits, hits) - std::min(bare_hits, hits), hits / 10000);
+  EXPECT_EQ(cast_field_rays(asset_->embree, field.box, n, kMaxFieldLayers + 1), hits);
   // A torus seen through the box: a good share of rays hit, some miss through the hole.
   EXPECT_GT(hits, asset_->stats.rays / 4);
   EXPECT_LT(hits, asset_->stats.rays);
@@ -200,8 +204,8 @@ TEST_F(GeometryFieldTorus, LayersHoldTheLinesHitsInOrder) {
 }
 
 TEST_F(GeometryFieldTorus, ExplicitLayersAreTheChosenFieldsFirstLayers) {
-  // One traversal per line collecting K hits stores the same hits as collecting 5: K = 1 (a
-  // plain first-hit cast) is the first layer, K = 2 the first two.
+  // Building K layers stores the same hits as collecting 5 per line: K = 1 (the first-hit cast)
+  // is the first layer, K = 2 the first two.
   std::string error;
   for (int layers : {1, 2}) {
     GeometryField field;
@@ -211,14 +215,27 @@ TEST_F(GeometryFieldTorus, ExplicitLayersAreTheChosenFieldsFirstLayers) {
         << error;
     EXPECT_EQ(field.layers, layers);
     EXPECT_EQ(stats.collected, layers);
-    EXPECT_EQ(stats.hits, asset_->stats.hits);
+    EXPECT_LE(std::max(stats.hits, asset_->stats.hits) - std::min(stats.hits, asset_->stats.hits),
+              stats.hits / 10000);
     EXPECT_LT(layer_coverage(stats, layers), 0.0);  // unknown: no more hits were looked for
     const size_t count = field_layer_size(field) * size_t(layers);
     ASSERT_EQ(field.uv.size(), count);
-    // Equal up to rounding: a ray through an edge hits both triangles there at one t, and the
-    // plain first-hit cast (K = 1) may keep the other one (9 of 360,000 uvs differ by 1e-6).
-    EXPECT_TRUE(std::equal(field.uv.begin(), field.uv.end(), asset_->field.uv.begin(),
-                           [](glm::vec2 a, glm::vec2 b) { return glm::distance(a, b) < 1e-5f; }));
+    // Equal up to rounding (a ray through an edge hits both triangles there at one t, and the
+    // traversals may keep either one), and up to grazing rays: Embree's non-robust traversal lets
+    // an occasional ray slip between two triangles, and K = 1 casts every ray where K > 1 takes
+    // both rays of a line from one traversal (9 of 360,000 first-layer uvs on this torus, lines
+    // tangent to the tube; none of the second layer's).
+    size_t differ = 0;
+    for (size_t i = 0; i < count; ++i) {
+      if (glm::distance(field.uv[i], asset_->field.uv[i]) >= 1e-5f && differ++ < 5) {
+        const size_t side = size_t(field_side(field));
+        std::printf("K = %d: layer %zu, entry %zu, exit %zu: (%g %g) vs (%g %g)\n", layers,
+                    i / (side * side), i / side % side, i % side, field.uv[i].x, field.uv[i].y,
+                    asset_->field.uv[i].x, asset_->field.uv[i].y);
+      }
+    }
+    std::printf("K = %d: %zu of %zu uvs differ\n", layers, differ, count);
+    EXPECT_LE(differ, count / 10000);
   }
 }
 

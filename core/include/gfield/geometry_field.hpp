@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "gfield/box.hpp"
+#include "gfield/uninitialized_allocator.hpp"
 
 namespace gfield {
 
@@ -22,12 +23,14 @@ inline constexpr int kMaxFieldLayers = 4;
 /// K layers of the (6N^2) x (6N^2) table. Entry sample index = scanline (row), exit sample index
 /// = column; layer l holds the (l+1)-th hit along the line from the entry sample.
 struct GeometryField {
-  int samples_per_side = 0;   ///< N, samples per side of each cube face
-  int layers = 1;             ///< K, hits stored per line (1..kMaxFieldLayers)
-  Box box;                    ///< the box that maps to the unit cube (mesh coordinates)
-  std::string source;         ///< mesh file name the field was built from
-  std::string build_id;       ///< the build's id, the image's (gfield/build_id.hpp); empty: none
-  std::vector<glm::vec2> uv;  ///< K (6N^2)^2 uvs, index (layer * 6N^2 + entry) * 6N^2 + exit
+  int samples_per_side = 0;  ///< N, samples per side of each cube face
+  int layers = 1;            ///< K, hits stored per line (1..kMaxFieldLayers)
+  Box box;                   ///< the box that maps to the unit cube (mesh coordinates)
+  std::string source;        ///< mesh file name the field was built from
+  std::string build_id;      ///< the build's id, the image's (gfield/build_id.hpp); empty: none
+  /// K (6N^2)^2 uvs, index (layer * 6N^2 + entry) * 6N^2 + exit; resize() leaves new entries
+  /// unset (UninitializedAllocator).
+  std::vector<glm::vec2, UninitializedAllocator<glm::vec2>> uv;
 };
 
 /// Side of the table: 6 N^2.
