@@ -13,7 +13,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/ccache-launcher.sh
+# -O1 -g1 as in scripts/sanitize.sh: libFuzzer's usual level, line tables for the reports.
 cmake -S . -B build-fuzz -G Ninja -DGFIELD_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 "${launcher[@]}" > /dev/null
 cmake --build build-fuzz -j "${GFIELD_JOBS:-2}"
 

@@ -165,8 +165,10 @@ bool read_attribute(HeaderBytes& in, const std::string& name, const std::string&
     in.value(layout.tile_y);
     in.value(mode);
     layout.tile_mode = mode;
-  } else if (name == "channels" && type == "chlist") {
-    return read_channels(in, end, layout);
+  } else if (type == "chlist") {
+    // Any chlist, whatever its name: OpenEXR reads channels up to the empty name, not by size.
+    ExrLayout other;
+    return read_channels(in, end, name == "channels" ? layout : other);
   } else if (type == "preview") {
     std::uint32_t w = 0, h = 0;
     return in.value(w) && in.value(h) && 8 + 4 * std::uint64_t(w) * h == size && in.skip(size - 8);
