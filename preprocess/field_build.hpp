@@ -8,8 +8,8 @@
 // Embree's barycentrics; a layer past the line's last hit stores kFieldMiss, a pair on one face
 // kFieldNoRay. The casts (field_casts.hpp), in coherent packets of 8 rays (rtcIntersect8, TBB):
 // K = 1, a first-hit cast of every ray; K > 1, one traversal per line (the rays entry -> exit
-// and exit -> entry are one line) that collects its hits with an intersection filter, 2K of
-// them nearest the entry, and a traversal from the exit only for a line with more.
+// and exit -> entry are one line) that collects its hits with an intersection filter, K + 1 of
+// them nearest the entry, and a traversal from the exit only for a line with more than K.
 
 #include <array>
 #include <cstddef>
