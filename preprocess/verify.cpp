@@ -264,10 +264,11 @@ SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, float of
                          r * (1.0 - b) * mesh.positions[size_t(t[1])] +
                          r * b * mesh.positions[size_t(t[2])];
     glm::vec3 d = random_direction(rng);
-    if (glm::dot(d, outward * face_normal(mesh, face)) < 0.0f) {
+    const glm::vec3 g = outward * face_normal(mesh, face);
+    if (glm::dot(d, g) < 0.0f) {
       d = -d;
     }
-    out.rays.push_back({glm::vec3(p), d, offset, 3.0e38f});
+    out.rays.push_back({glm::vec3(p) + offset * g, d, 2.0f * offset, 3.0e38f});
     out.triangles.push_back(face);
   }
   return out;
@@ -302,7 +303,7 @@ SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
     if (glm::dot(r, g) <= 0.0f) {
       r = glm::reflect(d, g);
     }
-    out.rays.push_back({origin, glm::normalize(r), offset, 3.0e38f});
+    out.rays.push_back({origin + offset * g, glm::normalize(r), 2.0f * offset, 3.0e38f});
     out.triangles.push_back(h.triangle);
   }
   return out;

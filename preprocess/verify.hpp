@@ -42,15 +42,17 @@ std::vector<Ray> random_box_rays(const Box& box, size_t count, uint64_t seed);
 /// the box centre, each aimed at a uniform random point of the box (unit direction, t >= 0).
 std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed);
 
-/// Rays that start on the surface of a mesh, with the triangle each leaves (the exact cast
-/// ignores it). Unit directions; t_min = the offset (mesh units) the lookups start at.
+/// Rays that leave the surface of a mesh, with the triangle each leaves (the exact cast ignores
+/// it). Unit directions; as the runtime casts them (shaders/lib/scene.glsl, object_epsilon): the
+/// origin moved off the surface by `offset` (mesh units) along the face's normal on the ray's
+/// side, and t_min = 2 offset.
 struct SurfaceRays {
   std::vector<Ray> rays;
   std::vector<int> triangles;
 };
-/// Lookups of rays leaving the surface start this far from their origin (in box diagonals), as
-/// the runtime offsets rays leaving a mesh by 1e-3 of its size.
-inline constexpr float kSurfaceRayOffset = 1e-3f;
+/// The offset of rays leaving a mesh's surface, in box diagonals: the runtime's 1e-4 of the
+/// object's size.
+inline constexpr float kSurfaceRayOffset = 1e-4f;
 /// `count` rays from uniform random points of `mesh`'s surface (by area) in uniform random
 /// directions over the hemisphere of the face's outward normal.
 SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, float offset,
