@@ -1,12 +1,9 @@
 #include "preprocess/field_build.hpp"
 
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <vector>
@@ -35,6 +32,22 @@ using Histogram = std::array<size_t, kMaxFieldLayers + 2>;
 template <class T>
 using PerThread =
     tbb::enumerable_thread_specific<T, tbb::cache_aligned_allocator<T>, tbb::ets_key_per_instance>;
+
+/// The bilinear patch of an n^2 image under `uv`: its lower-left texel; x = uv in texel-centre
+/// coordinates, clamped to the grid.
+glm::ivec2 patch_under(int n, glm::vec2 uv, glm::vec2& x) {
+  x = glm::clamp(uv * float(n) - 0.5f, glm::vec2(0.0f), glm::vec2(float(n - 1)));
+  return glm::min(glm::ivec2(glm::floor(x)), glm::ivec2(n - 2));
+}
+
+/// True when the bilinear patch under `uv` has all 4 texels covered (`patches`:
+/// covered_patches(image)).
+bool in_covered_patch(const GeometryImage& image, const std::vector<uint8_t>& patches,
+                      glm::vec2 uv) {
+  glm::vec2 x;
+  const glm::ivec2 c = patch_under(image.size, uv, x);
+  return patches[size_t(c.y) * size_t(image.size - 1) + size_t(c.x)] != 0;
+}
 
 /// Writes the hits of the casts into the layers of the table.
 struct TableWriter {
@@ -216,25 +229,17 @@ std::vector<uint8_t> covered_patches(const GeometryImage& image) {
   return covered;
 }
 
-bool in_covered_patch(const GeometryImage& image, const std::vector<uint8_t>& patches,
-                      glm::vec2 uv) {
-  const int n = image.size;
-  const glm::vec2 x = glm::clamp(uv * float(n) - 0.5f, glm::vec2(0.0f), glm::vec2(float(n - 1)));
-  const glm::ivec2 c = glm::min(glm::ivec2(glm::floor(x)), glm::ivec2(n - 2));
-  return patches[size_t(c.y) * size_t(n - 1) + size_t(c.x)] != 0;
-}
-
 glm::vec2 snap_to_covered(const GeometryImage& image, const std::vector<uint8_t>& patches,
                           glm::vec2 uv, glm::vec3 hit) {
   const int n = image.size;
   const auto covered = [&](int i, int j) {
     return patches[size_t(j) * size_t(n - 1) + size_t(i)] != 0;
   };
-  if (in_covered_patch(image, patches, uv)) {
+  glm::vec2 x;
+  const glm::ivec2 c = patch_under(n, uv, x);
+  if (covered(c.x, c.y)) {
     return uv;
   }
-  const glm::vec2 x = glm::clamp(uv * float(n) - 0.5f, glm::vec2(0.0f), glm::vec2(float(n - 1)));
-  const glm::ivec2 c = glm::min(glm::ivec2(glm::floor(x)), glm::ivec2(n - 2));
   glm::vec2 best = uv;
   const glm::vec3 d0 = sample_position(image, uv) - hit;
   float best_distance = glm::dot(d0, d0);  // squared

@@ -77,11 +77,6 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
 /// (texels i..i+1, j..j+1) at j * (n-1) + i.
 std::vector<uint8_t> covered_patches(const GeometryImage& image);
 
-/// True when the bilinear patch under `uv` has all 4 texels covered. `patches` =
-/// covered_patches(image).
-bool in_covered_patch(const GeometryImage& image, const std::vector<uint8_t>& patches,
-                      glm::vec2 uv);
-
 /// `uv` itself when the 2 x 2 texels of its bilinear patch are all covered; otherwise, of `uv`
 /// and the points of the fully covered patches within 2 texels, the one whose image position is
 /// closest to `hit` (padding texels are copies of other texels, so a lookup there can land far
