@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
                   double(count) / seconds / 1e6, 1e9 * seconds / double(count), ratio);
     }
     const SurfaceRays surface =
-        random_surface_rays(asset.pm.mesh, count, kSurfaceRayOffset * diagonal(field.box), 2);
+        random_surface_rays(asset.pm.mesh, count, asset.image.ray_offset * diagonal(field.box), 2);
     const auto [surface_seconds, surface_hits] = time(
         [&](const Ray& ray, size_t i) {
           return intersect(embree, ray.origin, ray.direction, 0.0f, ray.t_max, surface.triangles[i])

@@ -131,8 +131,12 @@ ErrorStats error_stats(std::vector<double> distances, double diagonal) {
   for (double d : distances)
     sum += d;
   stats.mean = sum / double(distances.size()) * scale;
-  const size_t p99 = size_t(std::ceil(0.99 * double(distances.size()))) - 1;
-  stats.p99 = distances[std::min(p99, distances.size() - 1)] * scale;
+  const auto percentile = [&](double p) {
+    const size_t k = size_t(std::ceil(p * double(distances.size()))) - 1;
+    return distances[std::min(k, distances.size() - 1)] * scale;
+  };
+  stats.p98 = percentile(0.98);
+  stats.p99 = percentile(0.99);
   stats.max = distances.back() * scale;
   return stats;
 }
@@ -509,6 +513,11 @@ void measure_image(const TriangleMesh& input, const GeometryImage& image,
   report.mesh_to_image = error_stats(
       distances_to_surface(sample_surface(input, options.error_samples, options.seed), surface),
       report.diagonal);
+  const double box_diagonal = double(diagonal(image.box));
+  if (box_diagonal > 0.0)
+    report.ray_offset =
+        std::clamp(report.mesh_to_image.p98 / 100.0 * report.diagonal / box_diagonal,
+                   double(kMinRayOffset), double(kMaxRayOffset));
   report.image_to_mesh = error_stats(
       distances_to_surface(sample_surface(surface, options.error_samples, options.seed + 1), input),
       report.diagonal);
@@ -569,6 +578,7 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
   report.seconds.rasterize = stage.seconds();
   stage.restart();
   measure_image(input, image, parameterized, options, report);
+  image.ray_offset = float(report.ray_offset);
   report.seconds.measure = stage.seconds();
   report.seconds.total = watch.seconds();
   return true;
@@ -578,6 +588,7 @@ nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
   using nlohmann::json;
   auto stats = [](const ErrorStats& s) {
     return json{{"mean_percent", s.mean},
+                {"p98_percent", s.p98},
                 {"p99_percent", s.p99},
                 {"max_percent", s.max},
                 {"samples", s.samples}};
@@ -626,6 +637,7 @@ nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
        {{"mesh_to_image", stats(r.mesh_to_image)},
         {"image_to_mesh", stats(r.image_to_mesh)},
         {"diagonal", r.diagonal}}},
+      {"ray_offset", r.ray_offset},
       {"seconds",
        {{"repair", r.seconds.repair},
         {"parameterize", r.seconds.parameterize},
@@ -676,6 +688,8 @@ std::string geometry_image_report_to_text(const GeometryImageReport& r) {
       r.diagonal, r.mesh_to_image.mean, r.mesh_to_image.p99, r.mesh_to_image.max);
   add("reconstruction error, image -> mesh: mean %.4f, p99 %.4f, max %.4f", r.image_to_mesh.mean,
       r.image_to_mesh.p99, r.image_to_mesh.max);
+  add("ray offset: %.3g of the box diagonal (mesh -> image p98, at least %.0e)", r.ray_offset,
+      double(kMinRayOffset));
   add("seconds: repair %.3f, parameterize %.3f, pack %.3f, rasterize %.3f, measure %.3f, total "
       "%.3f",
       r.seconds.repair, r.seconds.parameterize, r.seconds.pack, r.seconds.rasterize,

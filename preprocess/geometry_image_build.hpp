@@ -46,6 +46,7 @@ struct GeometryImageOptions {
 /// Error statistics in percent of the input's bounding-box diagonal.
 struct ErrorStats {
   double mean = 0.0;
+  double p98 = 0.0;
   double p99 = 0.0;
   double max = 0.0;
   size_t samples = 0;
@@ -87,6 +88,8 @@ struct GeometryImageReport {
   ErrorStats mesh_to_image;  ///< input surface -> image surface
   ErrorStats image_to_mesh;  ///< image surface -> input surface
   double diagonal = 0.0;     ///< input bounding-box diagonal (mesh units)
+  /// GeometryImage::ray_offset (box diagonals): mesh_to_image's p98, at least kMinRayOffset.
+  double ray_offset = kMinRayOffset;
   /// What the albedo was resampled from: "none", or e.g. "1 texture, 2 materials".
   std::string albedo = "none";
   StageTimes seconds;

@@ -440,15 +440,16 @@ struct Run {
 /// The ray families: box and view rays with all layers; rays leaving the built mesh's surface
 /// (random points and hemisphere directions; mirror reflections of view rays) with K = 1 and
 /// with all K.
-std::vector<Family> make_families(const GeometryField& field, const EmbreeMesh& built,
-                                  const TriangleMesh& mesh, const VerifyOptions& options) {
+std::vector<Family> make_families(const GeometryField& field, const GeometryImage& image,
+                                  const EmbreeMesh& built, const TriangleMesh& mesh,
+                                  const VerifyOptions& options) {
   std::vector<Family> families;
   Family box{"box_rays", random_box_rays(field.box, options.rays, options.seed), true, {}, {0}};
   families.push_back(std::move(box));
   Family view{
       "view_rays", random_view_rays(field.box, options.rays, options.seed + 1), false, {}, {0}};
   families.push_back(std::move(view));
-  const float offset = kSurfaceRayOffset * diagonal(field.box);
+  const float offset = image.ray_offset * diagonal(field.box);
   const std::vector<int> layers =
       field.layers > 1 ? std::vector<int>{1, field.layers} : std::vector<int>{1};
   SurfaceRays surface = random_surface_rays(mesh, options.rays, offset, options.seed + 3);
@@ -554,7 +555,7 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
     error = shown.parameterized_mesh + ": " + error;
     return false;
   }
-  const std::vector<Family> families = make_families(field, built, pm.mesh, options);
+  const std::vector<Family> families = make_families(field, image, built, pm.mesh, options);
   const std::vector<Run> runs = lookup_runs(lookup, families);
 
   report = nlohmann::json::object();
@@ -564,6 +565,7 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   report["layers"] = field.layers;
   report["field_bits"] = options.field_bits;
   report["image_size"] = image.size;
+  report["ray_offset"] = image.ray_offset;
   report["source"] = printable(image.source);
   report["rays_per_family"] = options.rays;
   report["seed"] = options.seed;
@@ -590,6 +592,10 @@ std::string verify_report_to_text(const nlohmann::json& report) {
       << ", K = " << report["layers"] << ", uv bits " << report["field_bits"] << ", image "
       << report["image_size"] << "^2, " << report["rays_per_family"] << " rays per family, seed "
       << report["seed"] << "\n";
+  if (report.contains("ray_offset")) {
+    out << "surface rays leave the surface " << report["ray_offset"].get<float>()
+        << " of the box diagonal off it (the geometry image's ray offset)\n";
+  }
   out << "position error in % of the box diagonal, normal error in degrees\n";
   char line[256];
   for (const nlohmann::json& r : report["references"]) {

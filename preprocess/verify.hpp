@@ -44,15 +44,12 @@ std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed);
 
 /// Rays that leave the surface of a mesh, with the triangle each leaves (the exact cast ignores
 /// it). Unit directions; as the runtime casts them (shaders/lib/scene.glsl, object_epsilon): the
-/// origin moved off the surface by `offset` (mesh units) along the face's normal on the ray's
-/// side, and t_min = 2 offset.
+/// origin moved off the surface by `offset` (mesh units: the geometry image's ray_offset times
+/// the box diagonal) along the face's normal on the ray's side, and t_min = 2 offset.
 struct SurfaceRays {
   std::vector<Ray> rays;
   std::vector<int> triangles;
 };
-/// The offset of rays leaving a mesh's surface, in box diagonals: the runtime's 1e-4 of the
-/// object's size.
-inline constexpr float kSurfaceRayOffset = 1e-4f;
 /// `count` rays from uniform random points of `mesh`'s surface (by area) in uniform random
 /// directions over the hemisphere of the face's outward normal.
 SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, float offset,

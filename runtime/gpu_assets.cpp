@@ -247,6 +247,7 @@ bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
     assets_[m].image_size = n;
     assets_[m].box = image.box;
     assets_[m].albedo = !image.albedo.empty();
+    assets_[m].ray_offset = image.ray_offset;
     assets_[m].image_bytes = geometry_image_gpu_bytes(side);
   }
   image_texture_bytes_ = geometry_image_gpu_bytes(side) * size_t(count);

@@ -57,6 +57,7 @@ gpu::GpuObject gpu_object(const GpuScene& gpu_scene, int k) {
   g.box_max = glm::vec4(hi, 0.0f);
   if (o.shape.type == ShapeType::kMesh) {
     const GpuAsset& asset = gpu_scene.assets().assets()[size_t(o.shape.mesh)];
+    g.box_min.w = asset.ray_offset;
     g.asset =
         glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, asset.albedo ? 1 : 0);
     g.field = glm::ivec4(asset.field_layer, asset.field_layers, gpu_scene.assets().field_bits(), 0);

@@ -36,21 +36,26 @@ struct PathRay {
   int depth;
   int inside;  // the dielectric object the ray travels in, -1 for air
   int from;    // the object it leaves
+  vec3 self_origin;  // where the lookup of the object it leaves starts (intersect_self)
+  float self_t_min;  // and beyond what
 };
 
 PathRay stack_rays[STACK_SIZE];
 int stack_count = 0;
 
-void push_ray(vec3 origin, vec3 direction, vec3 weight, int depth, int inside, int from) {
+// A ray leaving object `from` at `hit` on the side of `g` (the geometric normal, or its negation).
+void push_ray(SceneHit hit, vec3 g, vec3 direction, vec3 weight, int depth, int inside, int from) {
   if (max(weight.r, max(weight.g, weight.b)) < u_min_weight) return;
   if (stack_count >= STACK_SIZE) return;
   PathRay r;
-  r.origin = origin;
+  r.origin = hit.position + object_epsilon(from, false) * g;
   r.direction = normalize(direction);
   r.weight = weight;
   r.depth = depth;
   r.inside = inside;
   r.from = from;
+  r.self_origin = hit.position + hit.self_offset * g;
+  r.self_t_min = 2.0f * hit.self_offset;
   stack_rays[stack_count] = r;
   stack_count++;
 }
@@ -68,12 +73,11 @@ void shade_hit(SceneHit hit, vec3 geometric, PathRay ray, inout vec3 radiance) {
   bool front = dot(d, geometric) < 0.0f;
   vec3 n = front ? hit.normal : -hit.normal;
   vec3 g = front ? geometric : -geometric;
-  float eps = object_epsilon(k);
   if (material == MATERIAL_MIRROR) {
     if (ray.depth >= u_max_depth) return;
     vec3 r = reflect(d, n);
     if (dot(r, g) <= 0.0f) r = reflect(d, g);
-    push_ray(hit.position + eps * g, r, ray.weight * objects[k].color.rgb, ray.depth + 1, -1, k);
+    push_ray(hit, g, r, ray.weight * objects[k].color.rgb, ray.depth + 1, -1, k);
     return;
   }
   // Dielectric: the segment just travelled was inside when the surface is hit from the back.
@@ -89,12 +93,11 @@ void shade_hit(SceneHit hit, vec3 geometric, PathRay ray, inout vec3 radiance) {
   bool tir = r >= 1.0f || dot(transmitted, transmitted) == 0.0f;
   int outside_of = front ? -1 : k;  // where the reflected ray travels
   if (tir) {
-    push_ray(hit.position + eps * g, reflected, weight, ray.depth + 1, outside_of, k);
+    push_ray(hit, g, reflected, weight, ray.depth + 1, outside_of, k);
     return;
   }
-  push_ray(hit.position + eps * g, reflected, weight * r, ray.depth + 1, outside_of, k);
-  push_ray(hit.position - eps * g, transmitted, weight * (1.0f - r), ray.depth + 1,
-           front ? k : -1, k);
+  push_ray(hit, g, reflected, weight * r, ray.depth + 1, outside_of, k);
+  push_ray(hit, -g, transmitted, weight * (1.0f - r), ray.depth + 1, front ? k : -1, k);
 }
 
 void main() {
@@ -124,6 +127,7 @@ void main() {
     hit.normal = g_normal.xyz;
     hit.uv = vec2(g_normal.w, g_geometric.w);
     hit.albedo = texelFetch(u_g_albedo, pixel, 0).rgb;
+    hit.self_offset = object_epsilon(first, true);
     shade_hit(hit, g_geometric.xyz, camera, radiance);
     while (stack_count > 0 && traced < u_max_rays) {
       stack_count--;
@@ -132,10 +136,13 @@ void main() {
       SceneHit next;
       if (ray.inside >= 0) {
         // Inside a dielectric: its own surface beyond the origin (the exit).
-        float t_min = objects[ray.inside].kind.x == SHAPE_MESH ? object_epsilon(ray.inside) : 0.0f;
-        next = intersect_object(ray.inside, ray.origin, ray.direction, t_min, 3.0e38f);
+        next = objects[ray.inside].kind.x == SHAPE_MESH
+                   ? intersect_self(ray.inside, ray.origin, ray.direction, ray.self_origin,
+                                    ray.self_t_min, 3.0e38f)
+                   : intersect_object(ray.inside, ray.origin, ray.direction, 0.0f, 3.0e38f);
       } else {
-        next = trace_scene(ray.origin, ray.direction, 3.0e38f, false, ray.from);
+        next = trace_scene(ray.origin, ray.direction, 3.0e38f, false, ray.from, ray.self_origin,
+                           ray.self_t_min);
       }
       if (!next.hit) {
         radiance += ray.weight * environment_radiance(ray.direction);

@@ -2,6 +2,7 @@
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
@@ -165,6 +166,21 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
   const Imath::Box2i dw = h.dataWindow();
   out.width = dw.max.x - dw.min.x + 1;
   out.height = dw.max.y - dw.min.y + 1;
+  return true;
+}
+
+/// The optional gfield.rayOffset of a geometry image (kMinRayOffset when absent).
+bool read_ray_offset(const std::string& filename, const Imf::Header& h, float& ray_offset,
+                     std::string& error) {
+  const auto* attribute = h.findTypedAttribute<Imf::FloatAttribute>("gfield.rayOffset");
+  ray_offset = attribute ? attribute->value() : kMinRayOffset;
+  if (!(ray_offset >= kMinRayOffset && ray_offset <= kMaxRayOffset)) {
+    char text[160];
+    std::snprintf(text, sizeof(text), ": gfield.rayOffset %g outside [%g, %g] (box diagonals)",
+                  double(ray_offset), double(kMinRayOffset), double(kMaxRayOffset));
+    error = filename + text;
+    return false;
+  }
   return true;
 }
 
@@ -396,8 +412,13 @@ bool save_geometry_image(const std::string& filename, const GeometryImage& image
         filename + ": geometry image albedo does not match its size " + std::to_string(image.size);
     return false;
   }
+  if (!(image.ray_offset >= kMinRayOffset && image.ray_offset <= kMaxRayOffset)) {
+    error = filename + ": ray offset " + std::to_string(image.ray_offset) + " out of range";
+    return false;
+  }
   Imf::Header header = make_header(image.size, image.size, kImageTag, kGeometryImageVersion,
                                    image.box, image.source, image.build_id);
+  header.insert("gfield.rayOffset", Imf::FloatAttribute(image.ray_offset));
   const Imf::PixelType type = pixel_type(precision);
   const float* p = &image.position[0].x;
   const float* n = &image.normal[0].x;
@@ -429,11 +450,13 @@ bool load_geometry_image(const std::string& filename, GeometryImage& image, std:
   }
   ExrAssetHeader header;
   bool albedo = false;
+  GeometryImage out;
   if (!read_header(filename, file->header(), header, error) ||
       !check_format(filename, header, kImageTag, 1, kGeometryImageVersion, error) ||
       !check_channels(filename, file->header(), {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A"},
                       error) ||
-      !albedo_channels(filename, file->header(), albedo, error)) {
+      !albedo_channels(filename, file->header(), albedo, error) ||
+      !read_ray_offset(filename, file->header(), out.ray_offset, error)) {
     return false;
   }
   if (albedo && header.version < 2) {
@@ -445,7 +468,6 @@ bool load_geometry_image(const std::string& filename, GeometryImage& image, std:
             std::to_string(header.width) + "x" + std::to_string(header.height);
     return false;
   }
-  GeometryImage out;
   out.size = header.width;
   out.box = header.box;
   out.source = header.source;

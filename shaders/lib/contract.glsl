@@ -40,6 +40,11 @@ GF_CONST int ENV_CONSTANT = 1;
 GF_CONST int ENV_EQUIRECT = 2;
 GF_CONST int ENV_CUBE = 3;
 
+// Smallest offset of a ray leaving a mesh's surface, in the mesh's box diagonals: the offset of
+// rays leaving a point found by a field lookup, and the least geometry-image ray offset
+// (gfield::GeometryImage::ray_offset, the offset of rays leaving a point of the rasterised mesh).
+GF_CONST float GF_MIN_RAY_OFFSET = 1.0e-4f;
+
 // Shader storage buffer bindings.
 GF_CONST int BUFFER_OBJECTS = 0;  // GpuObject[], one per scene object
 GF_CONST int BUFFER_LIGHTS = 1;   // GpuLight[], one per light
@@ -102,7 +107,8 @@ struct GpuObject {
   vec4 checker1;    // rgb: second checker colour; w: squares along v
   vec4 shape;       // radius, height, thickness, 0
   vec4 size;        // xyz: box / quad / slab extents
-  vec4 box_min;     // object-space bounds (mesh: the asset's box, mesh coordinates)
+  vec4 box_min;     // xyz: object-space bounds (mesh: the asset's box, mesh coordinates);
+                    // w: mesh: its geometry image's ray offset (box diagonals)
   vec4 box_max;
   ivec4 kind;   // SHAPE_*, MATERIAL_*, TEXTURE_*, 0
   ivec4 asset;  // mesh: image layer, samples per side N, geometry-image size n, 1 when the

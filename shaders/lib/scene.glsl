@@ -29,6 +29,8 @@ struct SceneHit {
   vec3 normal;     // world, unit, out of the solid
   vec2 uv;         // analytic: texture coordinates; mesh: geometry-image uv
   vec3 albedo;     // diffuse hits found by trace_scene (or the G-buffer): the surface's albedo
+  float self_offset;  // rays leaving this point look its object up from this far off the
+                      // surface (object_epsilon)
 };
 
 SceneHit scene_miss() {
@@ -40,21 +42,31 @@ SceneHit scene_miss() {
   h.normal = vec3(0.0f);
   h.uv = vec2(0.0f);
   h.albedo = vec3(0.0f);
+  h.self_offset = 0.0f;
   return h;
 }
 
-// Offset of rays leaving a surface of object k (scene units): for a mesh 1e-4 of its size
-// (reflected and refracted rays: a larger offset moves chaotic paths measurably, 1e-3 cost the
-// glass spot 2.6 dB against the reference tracer); shadow rays see their start surface through
-// the geometry image, whose reconstruction error (up to 1e-3 of the size at 256^2) would shadow
-// the surface itself, and keep 1e-3 (shadow_epsilon).
-float object_epsilon(int k) {
-  return objects[k].kind.x == SHAPE_MESH ? 1.0e-4f * objects[k].absorption.w
-                                         : 1.0e-5f * u_scene_extent;
+// Offset of rays leaving a surface point of object k (scene units). A ray starts 1e-4 of a mesh's
+// size (1e-5 of the scene for analytic shapes) off the surface along its normal (a larger start
+// offset moves the paths: 1e-3 cost the glass spot 2.6 dB against the reference tracer); the
+// lookup of the mesh it leaves starts `object_epsilon(k, rasterised)` off the surface and looks
+// beyond 2 of them (SceneHit.self_offset, intersect_self). A point found by a field lookup lies
+// on the geometry image: 1e-4 of the size. A point of the rasterised mesh (`rasterised`: the
+// G-buffer's first hits) lies off the image by the image's deviation from the mesh, through which
+// the lookup would find the surface the ray leaves: the image's ray offset (GpuObject.box_min.w:
+// the deviation at 98% of the surface, at least 1e-4).
+float object_epsilon(int k, bool rasterised) {
+  if (objects[k].kind.x != SHAPE_MESH) return 1.0e-5f * u_scene_extent;
+  return (rasterised ? objects[k].box_min.w : GF_MIN_RAY_OFFSET) * objects[k].absorption.w;
 }
 
-float shadow_epsilon(int k) {
-  return objects[k].kind.x == SHAPE_MESH ? 10.0f * object_epsilon(k) : object_epsilon(k);
+// Offset of shadow rays from `hit` (they start there and look their object up beyond 2 of
+// them): its self offset, for a mesh at least 10 times the least (1e-3 of its size: at 1e-4 a
+// diffuse spot found by field lookups shadowed itself, synthetic mirror-spheres 49.5 -> 43.4 dB).
+float shadow_epsilon(SceneHit hit) {
+  int k = hit.object;
+  if (objects[k].kind.x != SHAPE_MESH) return hit.self_offset;
+  return max(hit.self_offset, 10.0f * GF_MIN_RAY_OFFSET * objects[k].absorption.w);
 }
 
 // The nearest hit of o + t d (world, d unit) on object k with t in (t_min, t_max): for meshes the
@@ -74,6 +86,7 @@ SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max) {
     h.position = (objects[k].to_world * vec4(g.position, 1.0f)).xyz;
     local_normal = g.normal;
     h.uv = g.uv;
+    h.self_offset = object_epsilon(k, false);
   } else {
     ShapeHit s = intersect_shape(objects[k].kind.x, objects[k].shape, objects[k].size.xyz, lo, ld,
                                  t_min, t_max);
@@ -82,6 +95,7 @@ SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max) {
     h.position = o + s.t * d;
     local_normal = s.normal;
     h.uv = s.uv;
+    h.self_offset = object_epsilon(k, false);
   }
   h.hit = true;
   h.object = k;
@@ -107,20 +121,32 @@ vec3 hit_albedo(int k, vec2 uv) {
   return objects[k].color.rgb * gs_image_albedo(uv);
 }
 
+// The hit of o + t d (world, d unit) on mesh object k that the ray leaves, t < t_max: looked up
+// from `self_origin` (its start point moved SceneHit.self_offset off the surface) beyond
+// `self_t_min`, with t measured from o.
+SceneHit intersect_self(int k, vec3 o, vec3 d, vec3 self_origin, float self_t_min, float t_max) {
+  float shift = dot(self_origin - o, d);
+  SceneHit h = intersect_object(k, self_origin, d, self_t_min, t_max - shift);
+  h.t += shift;
+  return h;
+}
+
 // The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects; `opaque_only`
 // skips dielectrics (shadow rays). `from` is the object the ray leaves (-1: the camera): a mesh
-// object looks itself up only with u_self_reflection, and then beyond its own offset.
-SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, int from) {
+// object looks itself up only with u_self_reflection, and then with intersect_self.
+SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, int from, vec3 self_origin,
+                     float self_t_min) {
   SceneHit best = scene_miss();
   best.t = t_max;
   for (int k = 0; k < u_object_count; k++) {
     if (opaque_only && objects[k].kind.y == MATERIAL_DIELECTRIC) continue;
-    float t_min = 0.0f;
+    SceneHit h;
     if (k == from && objects[k].kind.x == SHAPE_MESH) {
       if (!u_self_reflection) continue;
-      t_min = 2.0f * (opaque_only ? shadow_epsilon(k) : object_epsilon(k));
+      h = intersect_self(k, o, d, self_origin, self_t_min, best.t);
+    } else {
+      h = intersect_object(k, o, d, 0.0f, best.t);
     }
-    SceneHit h = intersect_object(k, o, d, t_min, best.t);
     if (h.hit && h.t < best.t) best = h;
   }
   if (best.hit && !opaque_only) best.albedo = hit_albedo(best.object, best.uv);
@@ -135,6 +161,7 @@ vec3 shade_diffuse(SceneHit hit, vec3 geometric_normal, vec3 incoming) {
   vec3 n = facing * hit.normal;
   vec3 g = facing * geometric_normal;
   vec3 light_sum = u_ambient;
+  float shadow_offset = shadow_epsilon(hit);
   for (int i = 0; i < u_light_count; i++) {
     vec3 l;
     float distance_to_light;
@@ -150,8 +177,9 @@ vec3 shade_diffuse(SceneHit hit, vec3 geometric_normal, vec3 incoming) {
     }
     float cosine = dot(n, l);
     if (cosine <= 0.0f || dot(l, g) <= 0.0f) continue;
-    vec3 origin = hit.position + shadow_epsilon(hit.object) * g;
-    SceneHit blocker = trace_scene(origin, l, distance_to_light, true, hit.object);
+    vec3 origin = hit.position + shadow_offset * g;
+    SceneHit blocker =
+        trace_scene(origin, l, distance_to_light, true, hit.object, origin, 2.0f * shadow_offset);
     if (blocker.hit) continue;
     float falloff = point ? 1.0f / (distance_to_light * distance_to_light) : 1.0f;
     light_sum += lights[i].color.rgb * cosine * falloff;

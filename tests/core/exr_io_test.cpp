@@ -4,6 +4,7 @@
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIntAttribute.h>
@@ -11,6 +12,7 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfVecAttribute.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -62,7 +64,8 @@ GeometryField make_field(int n) {
 }
 
 TEST(ExrIo, GeometryImageRoundTripsInFloatAndHalf) {
-  const GeometryImage image = make_image(16);
+  GeometryImage image = make_image(16);
+  image.ray_offset = 3.5e-4f;
   for (const ExrPrecision precision : {ExrPrecision::kFloat, ExrPrecision::kHalf}) {
     const std::string path = temp_path("image.gimage.exr");
     std::string error;
@@ -73,6 +76,7 @@ TEST(ExrIo, GeometryImageRoundTripsInFloatAndHalf) {
     EXPECT_EQ(back.source, "unit-test.obj");
     EXPECT_EQ(back.box.min, image.box.min);
     EXPECT_EQ(back.box.max, image.box.max);
+    EXPECT_EQ(back.ray_offset, image.ray_offset);
     const float normal_tolerance = precision == ExrPrecision::kHalf ? 1e-3f : 0.0f;
     for (size_t t = 0; t < image.position.size(); ++t) {
       ASSERT_EQ(back.position[t], image.position[t]);  // positions are always FLOAT
@@ -153,10 +157,11 @@ TEST(ExrIo, GeometryFieldRoundTripsInFloatAndHalf) {
 }
 
 // Writes an EXR with the given attributes and channels (all zeros, FLOAT or `half_channels`
-// HALF); gfield.layers when `layers` > 0.
+// HALF); gfield.layers when `layers` > 0, gfield.rayOffset when `ray_offset` is not 0.
 void write_raw(const std::string& path, int width, int height, const char* format, int version,
                std::initializer_list<const char*> channels, int samples_per_side = 0,
-               int layers = 0, std::initializer_list<const char*> half_channels = {}) {
+               int layers = 0, std::initializer_list<const char*> half_channels = {},
+               float ray_offset = 0.0f) {
   Imf::Header header(width, height);
   if (format) {
     header.insert("gfield.format", Imf::StringAttribute(format));
@@ -169,6 +174,9 @@ void write_raw(const std::string& path, int width, int height, const char* forma
   }
   if (layers) {
     header.insert("gfield.layers", Imf::IntAttribute(layers));
+  }
+  if (ray_offset != 0.0f) {
+    header.insert("gfield.rayOffset", Imf::FloatAttribute(ray_offset));
   }
   std::vector<float> zeros(size_t(width) * size_t(height), 0.0f);
   std::vector<half> half_zeros(zeros.size(), half(0.0f));
@@ -226,6 +234,7 @@ TEST(ExrIo, GeometryImageAlbedoIsOptional) {
   write_raw(path, 8, 8, "geometry-image", 1, {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "A"});
   ASSERT_TRUE(load_geometry_image(path, back, error)) << error;
   EXPECT_TRUE(back.albedo.empty());
+  EXPECT_EQ(back.ray_offset, kMinRayOffset);  // images written before the ray offset
 }
 
 TEST(ExrIo, RejectsBadGeometryImages) {
@@ -247,6 +256,10 @@ TEST(ExrIo, RejectsBadGeometryImages) {
   expect_image_error(path, "albedo.B");
   write_raw(path, 8, 8, nullptr, 1, all);
   expect_image_error(path, "not a gfield asset");
+  for (const float ray_offset : {1e-5f, 0.5f, -1e-3f, std::nanf("")}) {
+    write_raw(path, 8, 8, "geometry-image", 2, all, 0, 0, {}, ray_offset);
+    expect_image_error(path, "gfield.rayOffset");
+  }
   expect_image_error(temp_path("does-not-exist.exr"), "no such file");
   { std::ofstream(path) << "this is not an OpenEXR file"; }
   expect_image_error(path, "not an OpenEXR file");

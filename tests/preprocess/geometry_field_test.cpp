@@ -245,8 +245,8 @@ TEST_F(GeometryFieldTorus, SurfaceRaysSeeTheTorusBeyondTheirOrigin) {
   FieldLookup lookup;
   std::string error;
   ASSERT_TRUE(make_field_lookup(asset_->field, asset_->image, lookup, error)) << error;
-  const SurfaceRays rays = random_surface_rays(asset_->pm.mesh, 5000,
-                                               kSurfaceRayOffset * diagonal(asset_->field.box), 5);
+  const SurfaceRays rays = random_surface_rays(
+      asset_->pm.mesh, 5000, asset_->image.ray_offset * diagonal(asset_->field.box), 5);
   AccuracyStats k[2];
   for (int i = 0; i < 2; ++i) {
     lookup.layers = i == 0 ? 1 : 0;

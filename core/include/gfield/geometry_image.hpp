@@ -7,8 +7,15 @@
 #include <glm/glm.hpp>
 
 #include "gfield/box.hpp"
+#include "gfield/gpu_contract.hpp"
 
 namespace gfield {
+
+/// Smallest offset of a ray leaving the surface (GeometryImage::ray_offset), in box diagonals:
+/// the contract's GF_MIN_RAY_OFFSET.
+inline constexpr float kMinRayOffset = gpu::GF_MIN_RAY_OFFSET;
+/// Largest ray offset a geometry image may carry, in box diagonals.
+inline constexpr float kMaxRayOffset = 0.1f;
 
 /// n x n geometry image. Texel (i, j) = column i, scanline j, stored at index j * n + i, with its
 /// centre at uv ((i + 0.5) / n, (j + 0.5) / n).
@@ -24,6 +31,12 @@ struct GeometryImage {
   /// colours resampled; padding repeats the nearest chart texel); empty when the mesh carries
   /// none.
   std::vector<glm::vec3> albedo;
+  /// How far a ray leaving the mesh's surface starts off it (along the surface normal, in box
+  /// diagonals) so that a lookup does not find the surface it leaves through the image's
+  /// deviation from the mesh: the 98th percentile of the distance from the mesh's surface to the
+  /// image's, at least kMinRayOffset (attribute gfield.rayOffset; images without it, or built
+  /// unmeasured: kMinRayOffset).
+  float ray_offset = kMinRayOffset;
 };
 
 /// Texel index of column i, scanline j.
