@@ -18,11 +18,15 @@ namespace {
 /// lines with more hits than layers).
 constexpr int kMaxCollected = kMaxFieldLayers + 1;
 
-/// Hits collected per line from its entry when each ray needs `capacity`: one more, so that a
-/// line holding up to `capacity` hits is complete (both its rays' hits are known) and needs no
-/// traversal from its exit.
+/// Hits collected per line from its entry when each ray needs `capacity`: 2 capacity + 1, so that
+/// a line holding up to 2 capacity hits is complete (its entry ray's first `capacity` hits and
+/// its exit ray's are all among them) and needs no traversal from its exit. Measured for K = 2
+/// (`bench_field_build`, spot / homer / bunny, build over the bare first-hit cast): 3 hits per
+/// line 1.49 / 1.46 / 1.43, 4 hits 1.56 / 1.56 / 1.52, 5 hits 1.39 / 1.42 / 1.42, 7 hits 1.41 /
+/// 1.43 / 1.50: lines of two parts (4 hits) are common, and a second traversal costs more than
+/// a longer first one.
 int line_capacity(int capacity) {
-  return std::min(kMaxHitList, capacity + 1);
+  return std::min(kMaxHitList, 2 * capacity + 1);
 }
 
 /// Rays by number of hits found (FieldBuildStats::lines_by_hits).
@@ -49,11 +53,41 @@ bool in_covered_patch(const GeometryImage& image, const std::vector<uint8_t>& pa
   return patches[size_t(c.y) * size_t(image.size - 1) + size_t(c.x)] != 0;
 }
 
+/// Per triangle of the parameterised mesh (`corner_uv`: 3 per triangle), 1 when every bilinear
+/// patch under its uv footprint has all 4 texels covered, so that no hit on it needs
+/// snap_to_covered: the patches of the bounding box of its corners' uvs (clamped to [0,1]^2 as
+/// hit_uv clamps them), widened by 10^-3 texel against rounding in the interpolation.
+std::vector<uint8_t> triangles_in_covered_patches(const GeometryImage& image,
+                                                  const std::vector<uint8_t>& patches,
+                                                  const std::vector<glm::vec2>& corner_uv) {
+  const int n = image.size;
+  std::vector<uint8_t> inside(corner_uv.size() / 3);
+  for (size_t t = 0; t < inside.size(); ++t) {
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    for (size_t c = 0; c < 3; ++c) {
+      const glm::vec2 x = glm::clamp(corner_uv[3 * t + c], 0.0f, 1.0f) * float(n) - 0.5f;
+      lo = glm::min(lo, x);
+      hi = glm::max(hi, x);
+    }
+    const glm::ivec2 first = glm::clamp(glm::ivec2(glm::floor(lo - 1e-3f)), 0, n - 2);
+    const glm::ivec2 last = glm::clamp(glm::ivec2(glm::floor(hi + 1e-3f)), 0, n - 2);
+    bool covered = true;
+    for (int j = first.y; j <= last.y && covered; ++j) {
+      for (int i = first.x; i <= last.x && covered; ++i) {
+        covered = patches[size_t(j) * size_t(n - 1) + size_t(i)] != 0;
+      }
+    }
+    inside[t] = uint8_t(covered);
+  }
+  return inside;
+}
+
 /// Writes the hits of the casts into the layers of the table.
 struct TableWriter {
   const GeometryImage& image;
   std::vector<uint8_t> patches;   ///< covered_patches(image)
   const glm::vec2* corner_uv;     ///< 3 per triangle of the parameterised mesh
+  std::vector<uint8_t> inside;    ///< triangles_in_covered_patches(image, patches, corner uvs)
   std::vector<glm::vec3> points;  ///< sample_points(box, n)
   int n;
   int stored;    ///< layers written
@@ -70,11 +104,12 @@ struct TableWriter {
   /// image border, orbifold copies, may leave it a little, as GL_CLAMP_TO_EDGE would), snapped
   /// to a covered patch.
   glm::vec2 hit_uv(const HitList& list, int k, int from, int to) const {
-    const glm::vec2* uv = corner_uv + 3 * size_t(list.triangle[size_t(k)]);
+    const unsigned triangle = list.triangle[size_t(k)];
+    const glm::vec2* uv = corner_uv + 3 * size_t(triangle);
     const glm::vec2 b = list.barycentric[size_t(k)];
     const glm::vec2 value =
         glm::clamp((1.0f - b.x - b.y) * uv[0] + b.x * uv[1] + b.y * uv[2], 0.0f, 1.0f);
-    if (in_covered_patch(image, patches, value)) {
+    if (inside[triangle] != 0 || in_covered_patch(image, patches, value)) {
       return value;
     }
     const glm::vec3 origin = points[size_t(from)];
@@ -292,11 +327,15 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
   field.samples_per_side = n;
   field.layers = stored;
   field.box = image.box;
+  field.uv.clear();  // a field built before keeps its memory, but its values are not copied
   field.uv.resize(count * size_t(stored));  // every entry is written below, row by row
 
+  std::vector<uint8_t> patches = covered_patches(image);
+  std::vector<uint8_t> inside = triangles_in_covered_patches(image, patches, pm.corner_uv);
   const TableWriter writer{.image = image,
-                           .patches = covered_patches(image),
+                           .patches = std::move(patches),
                            .corner_uv = pm.corner_uv.data(),
+                           .inside = std::move(inside),
                            .points = sample_points(image.box, n),
                            .n = n,
                            .stored = stored,

@@ -148,11 +148,13 @@ void cast_line_packet(const EmbreeMesh& embree, const std::vector<glm::vec3>& po
     line.complete = line.hits.count < forward.capacity;
     valid[lane] = line.ray && !line.complete ? -1 : 0;
     any = any || valid[lane] != 0;
-    const glm::vec3 b = line.ray ? points[size_t(first + lane)] : a;
-    set_lane(packet, lane, b, a - b + glm::vec3(float(!line.ray)), 0.0f, 1.0f);
   }
   if (!any) {
     return;
+  }
+  for (int lane = 0; lane < 8; ++lane) {
+    const glm::vec3 b = valid[lane] != 0 ? points[size_t(first + lane)] : a;
+    set_lane(packet, lane, b, a - b + glm::vec3(float(valid[lane] == 0)), 0.0f, 1.0f);
   }
   cast_packet(embree, reverse, valid, packet, hits);
   for (int lane = 0; lane < 8; ++lane) {
