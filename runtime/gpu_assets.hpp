@@ -81,10 +81,10 @@ struct GpuAsset {
   size_t image_bytes = 0;    ///< GPU bytes of its geometry image (its layers of the arrays)
   size_t field_bytes = 0;    ///< GPU bytes of its field (its K layers of the field array)
   Box box;  ///< the geometry image's box (mesh coordinates), else the mesh file's bounds
-  bool albedo = false;  ///< the geometry image holds albedo (in GpuAssets::albedo)
+  bool albedo = false;               ///< the geometry image holds albedo (in GpuAssets::albedo)
   float ray_offset = kMinRayOffset;  ///< the geometry image's (box diagonals)
-  Box mesh_bounds;      ///< bounds of the mesh file's vertices (with the source mesh)
-  GpuMesh source;       ///< the mesh file, the reference tracer's normals, its own uvs and colours
+  Box mesh_bounds;                   ///< bounds of the mesh file's vertices (with the source mesh)
+  GpuMesh source;  ///< the mesh file, the reference tracer's normals, its own uvs and colours
   GpuMesh parameterized;  ///< NAME.gimage.obj with corner uvs, or the image's grid
 };
 
