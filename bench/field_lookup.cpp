@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
                   double(count) / seconds / 1e6, 1e9 * seconds / double(count), ratio);
     }
     const SurfaceRays surface =
-        random_surface_rays(asset.pm.mesh, count, asset.image.ray_offset * diagonal(field.box), 2);
+        random_surface_rays(asset.pm.mesh, count, surface_offsets(asset.image, field.box), 2);
     const auto [surface_seconds, surface_hits] = time(
         [&](const Ray& ray, size_t i) {
           return intersect(embree, ray.origin, ray.direction, 0.0f, ray.t_max, surface.triangles[i])
@@ -82,10 +82,13 @@ int main(int argc, char** argv) {
                 "1.00");
     for (int layers : {1, field.layers}) {
       lookup.layers = layers;
-      const auto [seconds, hits] =
-          time([&](const Ray& ray,
-                   size_t) { return lookup_first_hit(lookup, ray, LookupMode::kRefined).hit; },
-               surface.rays);
+      const auto [seconds, hits] = time(
+          [&](const Ray& ray, size_t i) {
+            return lookup_first_hit_leaving(lookup, ray, surface.self_origins[i],
+                                            surface.self_t_min, LookupMode::kRefined)
+                .hit;
+          },
+          surface.rays);
       char label[32], ratio[32];
       std::snprintf(label, sizeof(label), "refined K=%d", layers);
       std::snprintf(ratio, sizeof(ratio), "%.2f", surface_seconds / seconds);

@@ -52,14 +52,14 @@ struct Exact {
 };
 
 /// The exact first (or last) hit of `ray` in [t_min, t_max], cast with rtcIntersect1. `ignored`
-/// >= 0: a ray leaving that triangle, cast from its origin (t >= 0) past the triangle itself.
+/// >= 0: a ray leaving that triangle, cast past the triangle itself.
 Answer exact_answer(const Exact& reference, const Box& box, const Ray& ray, bool last,
                     int ignored = -1) {
   const EmbreeMesh& exact = reference.embree;
   Answer a;
   RayHit h;
   if (ignored >= 0) {
-    h = intersect(exact, ray.origin, ray.direction, 0.0f, ray.t_max, ignored);
+    h = intersect(exact, ray.origin, ray.direction, ray.t_min, ray.t_max, ignored);
     if (h.hit) {
       a.position = ray.origin + h.t * ray.direction;
     }
@@ -107,13 +107,20 @@ std::vector<Answer> exact_answers(const Exact& exact, const Box& box, const std:
   return answers;
 }
 
+/// `self_origins`: empty, or the parallel rays' origins of rays leaving the surface
+/// (lookup_first_hit_leaving, beyond `self_t_min`).
 std::vector<Answer> lookup_answers(const FieldLookup& lookup, const std::vector<Ray>& rays,
-                                   LookupMode mode, bool last, double& seconds) {
+                                   LookupMode mode, bool last, double& seconds,
+                                   const std::vector<glm::vec3>& self_origins = {},
+                                   float self_t_min = 0.0f) {
   std::vector<Answer> answers(rays.size());
   Stopwatch watch;
   tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
     const FieldHit h =
-        last ? lookup_last_hit(lookup, rays[i], mode) : lookup_first_hit(lookup, rays[i], mode);
+        !self_origins.empty()
+            ? lookup_first_hit_leaving(lookup, rays[i], self_origins[i], self_t_min, mode)
+        : last ? lookup_last_hit(lookup, rays[i], mode)
+               : lookup_first_hit(lookup, rays[i], mode);
     answers[i] = {h.hit, h.position, h.normal};
   });
   seconds = watch.seconds();
@@ -163,6 +170,9 @@ struct Family {
   std::vector<int> ignored;    ///< the triangle each ray leaves (surface rays), else empty
   std::vector<int> layers{0};  ///< layers looked up per run (0: all K)
   bool built_only = false;
+  std::vector<glm::vec3> self_origins =
+      {};                   ///< surface rays: SurfaceRays::self_origins, else empty
+  float self_t_min = 0.0f;  ///< surface rays: SurfaceRays::self_t_min
 };
 
 /// Unit vector uniform on the sphere.
@@ -237,7 +247,11 @@ std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed) {
   return rays;
 }
 
-SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, float offset,
+SurfaceOffsets surface_offsets(const GeometryImage& image, const Box& box) {
+  return {kMinRayOffset * diagonal(box), image.ray_offset * diagonal(box)};
+}
+
+SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, SurfaceOffsets offsets,
                                 uint64_t seed) {
   std::vector<double> cumulative(mesh.triangles.size());
   double area = 0.0;
@@ -252,6 +266,7 @@ SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, float of
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   SurfaceRays out;
+  out.self_t_min = 2.0f * offsets.self;
   for (size_t i = 0; i < count && area > 0.0; ++i) {
     const size_t f =
         size_t(std::upper_bound(cumulative.begin(), cumulative.end(), unit(rng) * area) -
@@ -268,14 +283,15 @@ SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, float of
     if (glm::dot(d, g) < 0.0f) {
       d = -d;
     }
-    out.rays.push_back({glm::vec3(p) + offset * g, d, 2.0f * offset, 3.0e38f});
+    out.rays.push_back({glm::vec3(p) + offsets.path * g, d, 2.0f * offsets.path, 3.0e38f});
+    out.self_origins.push_back(glm::vec3(p) + offsets.self * g);
     out.triangles.push_back(face);
   }
   return out;
 }
 
 SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
-                                size_t count, float offset, uint64_t seed) {
+                                size_t count, SurfaceOffsets offsets, uint64_t seed) {
   const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
   const std::vector<Ray> view = random_view_rays(box, 4 * count, seed);
   std::vector<RayHit> hits(view.size());
@@ -283,6 +299,7 @@ SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
     hits[i] = intersect(embree, view[i].origin, view[i].direction, 0.0f, view[i].t_max);
   });
   SurfaceRays out;
+  out.self_t_min = 2.0f * offsets.self;
   for (size_t i = 0; i < view.size() && out.rays.size() < count; ++i) {
     const RayHit& h = hits[i];
     const glm::vec3 origin = view[i].origin + h.t * view[i].direction;
@@ -303,7 +320,9 @@ SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
     if (glm::dot(r, g) <= 0.0f) {
       r = glm::reflect(d, g);
     }
-    out.rays.push_back({origin + offset * g, glm::normalize(r), 2.0f * offset, 3.0e38f});
+    r = glm::normalize(r);
+    out.rays.push_back({origin + offsets.path * g, r, 2.0f * offsets.path, 3.0e38f});
+    out.self_origins.push_back(origin + offsets.self * g);
     out.triangles.push_back(h.triangle);
   }
   return out;
@@ -349,6 +368,19 @@ AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
   double seconds = 0.0;
   const std::vector<Answer> answers = lookup_answers(lookup, rays, mode, last, seconds);
   const std::vector<Answer> cast = exact_answers(exact, lookup.field->box, rays, last, ignored);
+  AccuracyStats s = compare(answers, cast, diagonal(lookup.field->box));
+  s.seconds = seconds;
+  return s;
+}
+
+AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
+                            const TriangleMesh& mesh, const SurfaceRays& rays, LookupMode mode) {
+  const Exact exact(embree, mesh);
+  double seconds = 0.0;
+  const std::vector<Answer> answers =
+      lookup_answers(lookup, rays.rays, mode, false, seconds, rays.self_origins, rays.self_t_min);
+  const std::vector<Answer> cast =
+      exact_answers(exact, lookup.field->box, rays.rays, false, rays.triangles);
   AccuracyStats s = compare(answers, cast, diagonal(lookup.field->box));
   s.seconds = seconds;
   return s;
@@ -449,16 +481,17 @@ std::vector<Family> make_families(const GeometryField& field, const GeometryImag
   Family view{
       "view_rays", random_view_rays(field.box, options.rays, options.seed + 1), false, {}, {0}};
   families.push_back(std::move(view));
-  const float offset = image.ray_offset * diagonal(field.box);
+  const SurfaceOffsets offsets = surface_offsets(image, field.box);
   const std::vector<int> layers =
       field.layers > 1 ? std::vector<int>{1, field.layers} : std::vector<int>{1};
-  SurfaceRays surface = random_surface_rays(mesh, options.rays, offset, options.seed + 3);
-  families.push_back(
-      {"surface_rays", std::move(surface.rays), false, std::move(surface.triangles), layers, true});
-  SurfaceRays mirror =
-      mirror_surface_rays(built, mesh, field.box, options.rays, offset, options.seed + 4);
-  families.push_back(
-      {"mirror_rays", std::move(mirror.rays), false, std::move(mirror.triangles), layers, true});
+  for (const char* name : {"surface_rays", "mirror_rays"}) {
+    SurfaceRays rays =
+        name == std::string("surface_rays")
+            ? random_surface_rays(mesh, options.rays, offsets, options.seed + 3)
+            : mirror_surface_rays(built, mesh, field.box, options.rays, offsets, options.seed + 4);
+    families.push_back({name, std::move(rays.rays), false, std::move(rays.triangles), layers, true,
+                        std::move(rays.self_origins), rays.self_t_min});
+  }
   return families;
 }
 
@@ -476,13 +509,27 @@ std::vector<Run> lookup_runs(const FieldLookup& lookup, const std::vector<Family
             continue;
           }
           Run run{family.name, key, lookup_mode_name(mode), last, {}, 0.0};
-          run.answers = lookup_answers(limited, family.rays, mode, last, run.seconds);
+          run.answers = lookup_answers(limited, family.rays, mode, last, run.seconds,
+                                       family.self_origins, family.self_t_min);
           runs.push_back(std::move(run));
         }
       }
     }
   }
   return runs;
+}
+
+/// The share of a surface family's rays whose exact first hit lies before self_t_min, where the
+/// lookup takes the parallel ray's hit (gf_trace_leaving).
+double near_hit_share(const Exact& exact, const Box& box, const Family& family) {
+  std::vector<Ray> from_origin = family.rays;
+  for (Ray& ray : from_origin) {
+    ray.t_max = family.self_t_min;
+  }
+  const std::vector<Answer> near = exact_answers(exact, box, from_origin, false, family.ignored);
+  const size_t count =
+      size_t(std::count_if(near.begin(), near.end(), [](const Answer& a) { return a.hit; }));
+  return near.empty() ? 0.0 : double(count) / double(near.size());
 }
 
 /// The report of one reference mesh: the table and every run against its exact casts.
@@ -502,6 +549,9 @@ nlohmann::json reference_report(const Reference& reference, const EmbreeMesh& em
     }
     const std::vector<Answer> first =
         exact_answers(exact, field.box, family.rays, false, family.ignored);
+    if (!family.ignored.empty()) {
+      r["near_hits"][family.name] = near_hit_share(exact, field.box, family);
+    }
     std::vector<Answer> last;
     if (family.with_last) {
       last = exact_answers(exact, field.box, family.rays, true);
@@ -625,6 +675,16 @@ std::string verify_report_to_text(const nlohmann::json& report) {
           row(family + " " + mode, s);
         }
       }
+    }
+    if (r.contains("near_hits")) {
+      out << "  rays leaving the surface whose exact hit lies within 2 ray offsets (out of the "
+             "lookup's reach):";
+      for (const auto& [family, share] : r["near_hits"].items()) {
+        std::snprintf(line, sizeof(line), " %s %.3f%%", family.c_str(),
+                      100.0 * share.get<double>());
+        out << line;
+      }
+      out << "\n";
     }
   }
   if (report.contains("original_note")) {

@@ -42,23 +42,36 @@ std::vector<Ray> random_box_rays(const Box& box, size_t count, uint64_t seed);
 /// the box centre, each aimed at a uniform random point of the box (unit direction, t >= 0).
 std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed);
 
+/// How far off the surface a ray leaving it starts (mesh units), as the runtime casts it
+/// (shaders/lib/scene.glsl, object_epsilon): `path`, the ray itself (GF_MIN_RAY_OFFSET of the
+/// box diagonal), and `self`, the lookup of the mesh it leaves (the geometry image's ray offset).
+struct SurfaceOffsets {
+  float path = 0.0f;
+  float self = 0.0f;
+};
+/// The offsets of rays leaving the surface of `image`'s mesh (box: the field's).
+SurfaceOffsets surface_offsets(const GeometryImage& image, const Box& box);
+
 /// Rays that leave the surface of a mesh, with the triangle each leaves (the exact cast ignores
-/// it). Unit directions; as the runtime casts them (shaders/lib/scene.glsl, object_epsilon): the
-/// origin moved off the surface by `offset` (mesh units: the geometry image's ray_offset times
-/// the box diagonal) along the face's normal on the ray's side, and t_min = 2 offset.
+/// it). Unit directions, moved off the surface along the face's normal on the ray's side: the ray
+/// by offsets.path (t_min = 2 offsets.path), the parallel ray of its lookup
+/// (lookup_first_hit_leaving) from `self_origins` by offsets.self, beyond self_t_min = 2
+/// offsets.self.
 struct SurfaceRays {
   std::vector<Ray> rays;
+  std::vector<glm::vec3> self_origins;
+  float self_t_min = 0.0f;
   std::vector<int> triangles;
 };
 /// `count` rays from uniform random points of `mesh`'s surface (by area) in uniform random
 /// directions over the hemisphere of the face's outward normal.
-SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, float offset,
+SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, SurfaceOffsets offsets,
                                 uint64_t seed);
 /// Up to `count` mirror reflections of random_view_rays(box) at their exact first hits on
 /// `embree`'s mesh `mesh`: about the smooth normal (angle-weighted vertex normals), about the
 /// face's normal where that would leave below the face (as the runtime reflects).
 SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
-                                size_t count, float offset, uint64_t seed);
+                                size_t count, SurfaceOffsets offsets, uint64_t seed);
 
 /// The table itself (`embree` holds `mesh`): `pairs` random sample pairs on different faces; the
 /// exact cast from entry to exit sample vs the stored uv (its position read from the geometry
@@ -73,6 +86,10 @@ AccuracyStats verify_table(const GeometryField& field, const GeometryImage& imag
 AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
                             const TriangleMesh& mesh, const std::vector<Ray>& rays, LookupMode mode,
                             bool last = false, const std::vector<int>& ignored = {});
+/// Rays leaving the surface: each looked up as lookup_first_hit_leaving vs the exact cast from
+/// its origin that ignores the triangle it leaves.
+AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
+                            const TriangleMesh& mesh, const SurfaceRays& rays, LookupMode mode);
 
 struct VerifyOptions {
   size_t rays = 1000000;  ///< arbitrary rays per family; the table subset uses as many pairs

@@ -144,6 +144,29 @@ FieldHit lookup_first_hit(const FieldLookup& lookup, const Ray& ray, LookupMode 
   return trace(lookup, ray, mode, false);
 }
 
+FieldHit lookup_first_hit_leaving(const FieldLookup& lookup, const Ray& ray, vec3 self_origin,
+                                  float self_t_min, LookupMode mode) {
+  std::string error;
+  if (lookup.field == nullptr || lookup.image == nullptr || !check_ray(ray, error)) {
+    return {};
+  }
+  const int layers =
+      lookup.layers > 0 ? std::min(lookup.layers, lookup.field->layers) : lookup.field->layers;
+  GlslFieldLookup glsl{*lookup.field, *lookup.image, layers};
+  const auto h = glsl.gf_trace_leaving(ray.origin, ray.direction, ray.t_min, ray.t_max, self_origin,
+                                       self_t_min, int(mode));
+  FieldHit hit;
+  if (h.hit) {
+    hit.hit = true;
+    hit.t = h.t;
+    hit.distance = h.t * length(ray.direction);
+    hit.uv = h.uv;
+    hit.position = h.position;
+    hit.normal = h.normal;
+  }
+  return hit;
+}
+
 FieldHit lookup_last_hit(const FieldLookup& lookup, const Ray& ray, LookupMode mode) {
   return trace(lookup, ray, mode, true);
 }

@@ -348,15 +348,21 @@ GfHit gf_trace_linear(GF_IN(GfLine) line) {
 // pair's next layer; one that fails to verify (the ray passes beside that surface) to the layer
 // after next: crossings of a closed surface alternate between entering and leaving it, and the
 // next one leaves the part the ray missed.
-GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
-  GfHit result = gf_miss();
-  // An orthonormal basis of the plane orthogonal to d (Duff et al. 2017).
-  vec3 dn = normalize(line.d);
+// An orthonormal basis e1, e2 of the plane orthogonal to d (Duff et al. 2017).
+void gf_orthogonal_basis(vec3 d, GF_OUT(vec3) e1, GF_OUT(vec3) e2) {
+  vec3 dn = normalize(d);
   float s = dn.z >= 0.0f ? 1.0f : -1.0f;
   float ka = -1.0f / (s + dn.z);
   float kb = dn.x * dn.y * ka;
-  vec3 e1 = vec3(1.0f + s * dn.x * dn.x * ka, s * kb, -s * dn.x);
-  vec3 e2 = vec3(kb, s + dn.y * dn.y * ka, -dn.y);
+  e1 = vec3(1.0f + s * dn.x * dn.x * ka, s * kb, -s * dn.x);
+  e2 = vec3(kb, s + dn.y * dn.y * ka, -dn.y);
+}
+
+GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
+  GfHit result = gf_miss();
+  vec3 e1;
+  vec3 e2;
+  gf_orthogonal_basis(line.d, e1, e2);
   float tolerance = GF_NEWTON_TOLERANCE * diagonal;
   // When nearly all of the neighbourhood's lines hit, the surface around the ray is closed and a
   // chart border there is a seam.
@@ -453,4 +459,54 @@ GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
     return gf_trace_linear(line);
   }
   return gf_trace_refined(line, diagonal);
+}
+
+// The hit of o + t d, t in [t_min, t_max], on the surface near geometry-image uv (a hit found for
+// a nearby parallel ray, e.g. by gf_trace from an origin moved off the surface): gf_refine from
+// uv, without crossing seams; a miss when it does not converge or leaves the range.
+GfHit gf_hit_near(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
+  vec3 e1;
+  vec3 e2;
+  gf_orthogonal_basis(d, e1, e2);
+  vec3 extent = gf_box_max() - gf_box_min();
+  float tolerance = GF_NEWTON_TOLERANCE * sqrt(dot(extent, extent));
+  vec3 p;
+  if (!gf_refine(o, e1, e2, tolerance, false, o + t_min * d, uv, p)) {
+    return gf_miss();
+  }
+  float t = dot(p - o, d) / dot(d, d);
+  if (t < t_min || t > t_max) {
+    return gf_miss();
+  }
+  GfHit h;
+  h.hit = true;
+  h.t = t;
+  h.uv = uv;
+  h.position = p;
+  h.normal = gf_image_normal(uv);
+  return h;
+}
+
+// The first hit of o + t d, t in [t_min, t_max], for a ray leaving the surface: o lies just off
+// the surface (t_min: twice that), `self_origin` farther off it (the geometry image's ray
+// offset; `self_t_min`: twice that, a ray parameter like t). A hit of the ray itself beyond self_t_min is clear of the
+// surface it leaves; nearer, it may be that surface seen through the image's deviation from the
+// mesh, and the hit of the parallel ray from self_origin beyond self_t_min is taken, moved onto
+// the ray (refined mode: gf_hit_near; where that fails the ray passes beside it: a miss).
+GfHit gf_trace_leaving(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin,
+                       float self_t_min, int mode) {
+  GfHit h = gf_trace(o, d, t_min, t_max, mode, false);
+  if (h.hit && h.t >= self_t_min) {
+    return h;
+  }
+  float shift = dot(self_origin - o, d) / dot(d, d);
+  GfHit s = gf_trace(self_origin, d, self_t_min, t_max - shift, mode, false);
+  if (!s.hit) {
+    return s;
+  }
+  if (mode != GF_MODE_REFINED) {
+    s.t += shift;
+    return s;
+  }
+  return gf_hit_near(o, d, t_min, t_max, s.uv);
 }

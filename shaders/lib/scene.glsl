@@ -123,13 +123,27 @@ vec3 hit_albedo(int k, vec2 uv) {
   return objects[k].color.rgb * gs_image_albedo(uv);
 }
 
-// The hit of o + t d (world, d unit) on mesh object k that the ray leaves, t < t_max: looked up
-// from `self_origin` (its start point moved SceneHit.self_offset off the surface) beyond
-// `self_t_min`, with t measured from o.
-SceneHit intersect_self(int k, vec3 o, vec3 d, vec3 self_origin, float self_t_min, float t_max) {
-  float shift = dot(self_origin - o, d);
-  SceneHit h = intersect_object(k, self_origin, d, self_t_min, t_max - shift);
-  h.t += shift;
+// The hit of o + t d (world, d unit) on mesh object k that the ray leaves, t in [t_min, t_max]:
+// gf_trace_leaving with the parallel ray from `self_origin` (its start moved SceneHit.self_offset
+// off the surface) beyond `self_t_min`.
+SceneHit intersect_self(int k, vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin,
+                        float self_t_min) {
+  if (self_origin == o) return intersect_object(k, o, d, self_t_min, t_max);  // shadow rays
+  SceneHit h = scene_miss();
+  gs_select_asset(objects[k].asset.xyz, objects[k].field.xyz, objects[k].box_min.xyz,
+                  objects[k].box_max.xyz);
+  vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
+  vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
+  vec3 ls = (objects[k].to_object * vec4(self_origin, 1.0f)).xyz;
+  GfHit g = gf_trace_leaving(lo, ld, t_min, t_max, ls, self_t_min, u_mode);
+  if (!g.hit) return h;
+  h.hit = true;
+  h.t = g.t;
+  h.object = k;
+  h.position = (objects[k].to_world * vec4(g.position, 1.0f)).xyz;
+  h.normal = normalize(transpose(mat3(objects[k].to_object)) * g.normal);
+  h.uv = g.uv;
+  h.self_offset = object_epsilon(k, false);
   return h;
 }
 
@@ -145,7 +159,8 @@ SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, int from, ve
     SceneHit h;
     if (k == from && objects[k].kind.x == SHAPE_MESH) {
       if (!u_self_reflection) continue;
-      h = intersect_self(k, o, d, self_origin, self_t_min, best.t);
+      h = intersect_self(k, o, d, 2.0f * object_epsilon(k, false), best.t, self_origin,
+                         self_t_min);
     } else {
       h = intersect_object(k, o, d, 0.0f, best.t);
     }

@@ -246,12 +246,11 @@ TEST_F(GeometryFieldTorus, SurfaceRaysSeeTheTorusBeyondTheirOrigin) {
   std::string error;
   ASSERT_TRUE(make_field_lookup(asset_->field, asset_->image, lookup, error)) << error;
   const SurfaceRays rays = random_surface_rays(
-      asset_->pm.mesh, 5000, asset_->image.ray_offset * diagonal(asset_->field.box), 5);
+      asset_->pm.mesh, 5000, surface_offsets(asset_->image, asset_->field.box), 5);
   AccuracyStats k[2];
   for (int i = 0; i < 2; ++i) {
     lookup.layers = i == 0 ? 1 : 0;
-    k[i] = verify_lookup(lookup, asset_->embree, asset_->pm.mesh, rays.rays, LookupMode::kRefined,
-                         false, rays.triangles);
+    k[i] = verify_lookup(lookup, asset_->embree, asset_->pm.mesh, rays, LookupMode::kRefined);
     std::printf("surface rays K = %d: hit/miss %.4f median %.4f%%\n", i == 0 ? 1 : 4,
                 k[i].hit_agreement(), k[i].position_median);
   }
