@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
       const auto [seconds, hits] = time(
           [&](const Ray& ray, size_t i) {
             return lookup_first_hit_leaving(lookup, ray, surface.self_origins[i],
-                                            surface.self_t_min, LookupMode::kRefined)
+                                            surface.self_t_min, 1.0f, LookupMode::kRefined)
                 .hit;
           },
           surface.rays);

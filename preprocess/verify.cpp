@@ -107,20 +107,19 @@ std::vector<Answer> exact_answers(const Exact& exact, const Box& box, const std:
   return answers;
 }
 
-/// `self_origins`: empty, or the parallel rays' origins of rays leaving the surface
-/// (lookup_first_hit_leaving, beyond `self_t_min`).
+/// `leaving`: null, or the rays leaving the surface (SurfaceRays of `rays`), looked up as
+/// lookup_first_hit_leaving.
 std::vector<Answer> lookup_answers(const FieldLookup& lookup, const std::vector<Ray>& rays,
                                    LookupMode mode, bool last, double& seconds,
-                                   const std::vector<glm::vec3>& self_origins = {},
-                                   float self_t_min = 0.0f) {
+                                   const SurfaceRays* leaving = nullptr) {
   std::vector<Answer> answers(rays.size());
   Stopwatch watch;
   tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
-    const FieldHit h =
-        !self_origins.empty()
-            ? lookup_first_hit_leaving(lookup, rays[i], self_origins[i], self_t_min, mode)
-        : last ? lookup_last_hit(lookup, rays[i], mode)
-               : lookup_first_hit(lookup, rays[i], mode);
+    const FieldHit h = leaving != nullptr
+                           ? lookup_first_hit_leaving(lookup, rays[i], leaving->self_origins[i],
+                                                      leaving->self_t_min, leaving->facing[i], mode)
+                       : last ? lookup_last_hit(lookup, rays[i], mode)
+                              : lookup_first_hit(lookup, rays[i], mode);
     answers[i] = {h.hit, h.position, h.normal};
   });
   seconds = watch.seconds();
@@ -170,9 +169,7 @@ struct Family {
   std::vector<int> ignored;    ///< the triangle each ray leaves (surface rays), else empty
   std::vector<int> layers{0};  ///< layers looked up per run (0: all K)
   bool built_only = false;
-  std::vector<glm::vec3> self_origins =
-      {};                   ///< surface rays: SurfaceRays::self_origins, else empty
-  float self_t_min = 0.0f;  ///< surface rays: SurfaceRays::self_t_min
+  SurfaceRays leaving = {};  ///< surface rays: the rays with how they leave, else empty
 };
 
 /// Unit vector uniform on the sphere.
@@ -285,6 +282,7 @@ SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, SurfaceO
     }
     out.rays.push_back({glm::vec3(p) + offsets.path * g, d, 2.0f * offsets.path, 3.0e38f});
     out.self_origins.push_back(glm::vec3(p) + offsets.self * g);
+    out.facing.push_back(outward);
     out.triangles.push_back(face);
   }
   return out;
@@ -323,6 +321,7 @@ SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
     r = glm::normalize(r);
     out.rays.push_back({origin + offsets.path * g, r, 2.0f * offsets.path, 3.0e38f});
     out.self_origins.push_back(origin + offsets.self * g);
+    out.facing.push_back(glm::dot(face_normal(mesh, h.triangle), g) >= 0.0f ? 1.0f : -1.0f);
     out.triangles.push_back(h.triangle);
   }
   return out;
@@ -378,7 +377,7 @@ AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
   const Exact exact(embree, mesh);
   double seconds = 0.0;
   const std::vector<Answer> answers =
-      lookup_answers(lookup, rays.rays, mode, false, seconds, rays.self_origins, rays.self_t_min);
+      lookup_answers(lookup, rays.rays, mode, false, seconds, &rays);
   const std::vector<Answer> cast =
       exact_answers(exact, lookup.field->box, rays.rays, false, rays.triangles);
   AccuracyStats s = compare(answers, cast, diagonal(lookup.field->box));
@@ -489,8 +488,9 @@ std::vector<Family> make_families(const GeometryField& field, const GeometryImag
         name == std::string("surface_rays")
             ? random_surface_rays(mesh, options.rays, offsets, options.seed + 3)
             : mirror_surface_rays(built, mesh, field.box, options.rays, offsets, options.seed + 4);
-    families.push_back({name, std::move(rays.rays), false, std::move(rays.triangles), layers, true,
-                        std::move(rays.self_origins), rays.self_t_min});
+    Family family{name, rays.rays, false, rays.triangles, layers, true};
+    family.leaving = std::move(rays);
+    families.push_back(std::move(family));
   }
   return families;
 }
@@ -510,7 +510,7 @@ std::vector<Run> lookup_runs(const FieldLookup& lookup, const std::vector<Family
           }
           Run run{family.name, key, lookup_mode_name(mode), last, {}, 0.0};
           run.answers = lookup_answers(limited, family.rays, mode, last, run.seconds,
-                                       family.self_origins, family.self_t_min);
+                                       family.leaving.rays.empty() ? nullptr : &family.leaving);
           runs.push_back(std::move(run));
         }
       }
@@ -520,11 +520,11 @@ std::vector<Run> lookup_runs(const FieldLookup& lookup, const std::vector<Family
 }
 
 /// The share of a surface family's rays whose exact first hit lies before self_t_min, where the
-/// lookup takes the parallel ray's hit (gf_trace_leaving).
+/// lookup tells a hit from the surface the ray leaves only by its facing (gf_trace_leaving).
 double near_hit_share(const Exact& exact, const Box& box, const Family& family) {
   std::vector<Ray> from_origin = family.rays;
   for (Ray& ray : from_origin) {
-    ray.t_max = family.self_t_min;
+    ray.t_max = family.leaving.self_t_min;
   }
   const std::vector<Answer> near = exact_answers(exact, box, from_origin, false, family.ignored);
   const size_t count =
@@ -677,8 +677,8 @@ std::string verify_report_to_text(const nlohmann::json& report) {
       }
     }
     if (r.contains("near_hits")) {
-      out << "  rays leaving the surface whose exact hit lies within 2 ray offsets (out of the "
-             "lookup's reach):";
+      out << "  rays leaving the surface whose exact hit lies within 2 ray offsets (told from "
+             "their start surface by facing only):";
       for (const auto& [family, share] : r["near_hits"].items()) {
         std::snprintf(line, sizeof(line), " %s %.3f%%", family.c_str(),
                       100.0 * share.get<double>());

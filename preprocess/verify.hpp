@@ -56,10 +56,12 @@ SurfaceOffsets surface_offsets(const GeometryImage& image, const Box& box);
 /// it). Unit directions, moved off the surface along the face's normal on the ray's side: the ray
 /// by offsets.path (t_min = 2 offsets.path), the parallel ray of its lookup
 /// (lookup_first_hit_leaving) from `self_origins` by offsets.self, beyond self_t_min = 2
-/// offsets.self.
+/// offsets.self; `facing`: +1 where the ray leaves on the side the triangle's winding faces
+/// (the geometry image's normals face that way), -1 on the other side.
 struct SurfaceRays {
   std::vector<Ray> rays;
   std::vector<glm::vec3> self_origins;
+  std::vector<float> facing;
   float self_t_min = 0.0f;
   std::vector<int> triangles;
 };

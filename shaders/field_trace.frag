@@ -35,27 +35,23 @@ struct PathRay {
   vec3 weight;
   int depth;
   int inside;  // the dielectric object the ray travels in, -1 for air
-  int from;    // the object it leaves
-  vec3 self_origin;  // where the lookup of the object it leaves starts (intersect_self)
-  float self_t_min;  // and beyond what
+  SelfLookup self;  // the lookup of the object it leaves
 };
 
 PathRay stack_rays[STACK_SIZE];
 int stack_count = 0;
 
-// A ray leaving object `from` at `hit` on the side of `g` (the geometric normal, or its negation).
-void push_ray(SceneHit hit, vec3 g, vec3 direction, vec3 weight, int depth, int inside, int from) {
+// A ray leaving `hit` on the side of `g` (the geometric normal, or its negation).
+void push_ray(SceneHit hit, vec3 g, vec3 direction, vec3 weight, int depth, int inside) {
   if (max(weight.r, max(weight.g, weight.b)) < u_min_weight) return;
   if (stack_count >= STACK_SIZE) return;
   PathRay r;
-  r.origin = hit.position + object_epsilon(from, false) * g;
+  r.origin = hit.position + object_epsilon(hit.object, false) * g;
   r.direction = normalize(direction);
   r.weight = weight;
   r.depth = depth;
   r.inside = inside;
-  r.from = from;
-  r.self_origin = hit.position + hit.self_offset * g;
-  r.self_t_min = 2.0f * hit.self_offset;
+  r.self = self_lookup(hit, g, hit.self_offset);
   stack_rays[stack_count] = r;
   stack_count++;
 }
@@ -77,7 +73,7 @@ void shade_hit(SceneHit hit, vec3 geometric, PathRay ray, inout vec3 radiance) {
     if (ray.depth >= u_max_depth) return;
     vec3 r = reflect(d, n);
     if (dot(r, g) <= 0.0f) r = reflect(d, g);
-    push_ray(hit, g, r, ray.weight * objects[k].color.rgb, ray.depth + 1, -1, k);
+    push_ray(hit, g, r, ray.weight * objects[k].color.rgb, ray.depth + 1, -1);
     return;
   }
   // Dielectric: the segment just travelled was inside when the surface is hit from the back.
@@ -93,11 +89,11 @@ void shade_hit(SceneHit hit, vec3 geometric, PathRay ray, inout vec3 radiance) {
   bool tir = r >= 1.0f || dot(transmitted, transmitted) == 0.0f;
   int outside_of = front ? -1 : k;  // where the reflected ray travels
   if (tir) {
-    push_ray(hit, g, reflected, weight, ray.depth + 1, outside_of, k);
+    push_ray(hit, g, reflected, weight, ray.depth + 1, outside_of);
     return;
   }
-  push_ray(hit, g, reflected, weight * r, ray.depth + 1, outside_of, k);
-  push_ray(hit, -g, transmitted, weight * (1.0f - r), ray.depth + 1, front ? k : -1, k);
+  push_ray(hit, g, reflected, weight * r, ray.depth + 1, outside_of);
+  push_ray(hit, -g, transmitted, weight * (1.0f - r), ray.depth + 1, front ? k : -1);
 }
 
 void main() {
@@ -113,7 +109,7 @@ void main() {
   camera.weight = vec3(1.0f);
   camera.depth = 0;
   camera.inside = -1;
-  camera.from = -1;
+  camera.self = no_self_lookup();
   vec3 radiance = vec3(0.0f);
   int traced = 0;
   if (first < 0) {
@@ -137,13 +133,11 @@ void main() {
       if (ray.inside >= 0) {
         // Inside a dielectric: its own surface beyond the origin (the exit).
         next = objects[ray.inside].kind.x == SHAPE_MESH
-                   ? intersect_self(ray.inside, ray.origin, ray.direction,
-                                    2.0f * object_epsilon(ray.inside, false), 3.0e38f,
-                                    ray.self_origin, ray.self_t_min)
+                   ? intersect_self(ray.origin, ray.direction,
+                                    2.0f * object_epsilon(ray.inside, false), 3.0e38f, ray.self)
                    : intersect_object(ray.inside, ray.origin, ray.direction, 0.0f, 3.0e38f);
       } else {
-        next = trace_scene(ray.origin, ray.direction, 3.0e38f, false, ray.from, ray.self_origin,
-                           ray.self_t_min);
+        next = trace_scene(ray.origin, ray.direction, 3.0e38f, false, ray.self);
       }
       if (!next.hit) {
         radiance += ray.weight * environment_radiance(ray.direction);

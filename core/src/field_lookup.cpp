@@ -145,7 +145,7 @@ FieldHit lookup_first_hit(const FieldLookup& lookup, const Ray& ray, LookupMode 
 }
 
 FieldHit lookup_first_hit_leaving(const FieldLookup& lookup, const Ray& ray, vec3 self_origin,
-                                  float self_t_min, LookupMode mode) {
+                                  float self_t_min, float facing, LookupMode mode) {
   std::string error;
   if (lookup.field == nullptr || lookup.image == nullptr || !check_ray(ray, error)) {
     return {};
@@ -154,7 +154,7 @@ FieldHit lookup_first_hit_leaving(const FieldLookup& lookup, const Ray& ray, vec
       lookup.layers > 0 ? std::min(lookup.layers, lookup.field->layers) : lookup.field->layers;
   GlslFieldLookup glsl{*lookup.field, *lookup.image, layers};
   const auto h = glsl.gf_trace_leaving(ray.origin, ray.direction, ray.t_min, ray.t_max, self_origin,
-                                       self_t_min, int(mode));
+                                       self_t_min, facing, int(mode));
   FieldHit hit;
   if (h.hit) {
     hit.hit = true;

@@ -59,6 +59,8 @@
 // diagonal / N) beyond t_min. A pair's line passes up to half a spacing beside the ray, so the
 // unverified stored hit of the surface a ray leaves can project beyond its origin.
 #define GF_UNVERIFIED_MARGIN 0.5f
+// Crossings of the surface a ray leaves that gf_trace_leaving looks beyond at most.
+#define GF_SELF_CROSSINGS 2
 
 struct GfHit {
   bool hit;       // false: miss (or an invalid ray)
@@ -489,13 +491,24 @@ GfHit gf_hit_near(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
 
 // The first hit of o + t d, t in [t_min, t_max], for a ray leaving the surface: o lies just off
 // the surface (t_min: twice that), `self_origin` farther off it (the geometry image's ray
-// offset; `self_t_min`: twice that, a ray parameter like t). A hit of the ray itself beyond self_t_min is clear of the
-// surface it leaves; nearer, it may be that surface seen through the image's deviation from the
-// mesh, and the hit of the parallel ray from self_origin beyond self_t_min is taken, moved onto
-// the ray (refined mode: gf_hit_near; where that fails the ray passes beside it: a miss).
+// offset; `self_t_min`: twice that, a ray parameter like t); `facing`: the sign of
+// dot(normal, d) at the start (normals out of the solid: +1 for a ray leaving into the open, -1
+// for one entering the solid). A hit of the ray itself beyond self_t_min is clear of the surface
+// it leaves. A nearer one may be that surface seen through the image's deviation from the mesh:
+// such a crossing faces the ray as the start does (the ray leaves the image's solid where it
+// leaves the mesh's), and the lookup goes on beyond it; a crossing facing the other way is a hit
+// (the surface curving back). Where that does not settle it, the hit of the parallel ray from
+// self_origin beyond self_t_min is taken, moved onto the ray (refined mode: gf_hit_near; where
+// that fails the ray passes beside it: a miss).
 GfHit gf_trace_leaving(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin,
-                       float self_t_min, int mode) {
+                       float self_t_min, float facing, int mode) {
   GfHit h = gf_trace(o, d, t_min, t_max, mode, false);
+  for (int i = 0; i < GF_SELF_CROSSINGS && h.hit && h.t < self_t_min; i++) {
+    if (facing * dot(h.normal, d) < 0.0f) {
+      return h;
+    }
+    h = gf_trace(o, d, h.t + t_min, t_max, mode, false);
+  }
   if (h.hit && h.t >= self_t_min) {
     return h;
   }

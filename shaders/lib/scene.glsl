@@ -123,19 +123,48 @@ vec3 hit_albedo(int k, vec2 uv) {
   return objects[k].color.rgb * gs_image_albedo(uv);
 }
 
-// The hit of o + t d (world, d unit) on mesh object k that the ray leaves, t in [t_min, t_max]:
-// gf_trace_leaving with the parallel ray from `self_origin` (its start moved SceneHit.self_offset
-// off the surface) beyond `self_t_min`.
-SceneHit intersect_self(int k, vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin,
-                        float self_t_min) {
-  if (self_origin == o) return intersect_object(k, o, d, self_t_min, t_max);  // shadow rays
+// How a ray looks up the object it leaves (the camera's: object -1): a mesh from `origin` (its
+// start moved SceneHit.self_offset off the surface) beyond `t_min` (gf_trace_leaving); `facing`:
+// +1 when it leaves into the open, -1 into the solid.
+struct SelfLookup {
+  int object;
+  vec3 origin;
+  float t_min;
+  float facing;
+};
+
+SelfLookup no_self_lookup() {
+  SelfLookup s;
+  s.object = -1;
+  s.origin = vec3(0.0f);
+  s.t_min = 0.0f;
+  s.facing = 1.0f;
+  return s;
+}
+
+// The lookup of the object `hit` belongs to by a ray leaving it on the side of `g` (the geometric
+// normal or its negation), moved `offset` off the surface.
+SelfLookup self_lookup(SceneHit hit, vec3 g, float offset) {
+  SelfLookup s;
+  s.object = hit.object;
+  s.origin = hit.position + offset * g;
+  s.t_min = 2.0f * offset;
+  s.facing = dot(hit.normal, g) >= 0.0f ? 1.0f : -1.0f;
+  return s;
+}
+
+// The hit of o + t d (world, d unit) on mesh object self.object, which the ray leaves, t in
+// [t_min, t_max]: gf_trace_leaving (a lookup that starts at o itself: beyond self.t_min).
+SceneHit intersect_self(vec3 o, vec3 d, float t_min, float t_max, SelfLookup self) {
+  int k = self.object;
+  if (self.origin == o) return intersect_object(k, o, d, self.t_min, t_max);
   SceneHit h = scene_miss();
   gs_select_asset(objects[k].asset.xyz, objects[k].field.xyz, objects[k].box_min.xyz,
                   objects[k].box_max.xyz);
   vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
   vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
-  vec3 ls = (objects[k].to_object * vec4(self_origin, 1.0f)).xyz;
-  GfHit g = gf_trace_leaving(lo, ld, t_min, t_max, ls, self_t_min, u_mode);
+  vec3 ls = (objects[k].to_object * vec4(self.origin, 1.0f)).xyz;
+  GfHit g = gf_trace_leaving(lo, ld, t_min, t_max, ls, self.t_min, self.facing, u_mode);
   if (!g.hit) return h;
   h.hit = true;
   h.t = g.t;
@@ -148,19 +177,17 @@ SceneHit intersect_self(int k, vec3 o, vec3 d, float t_min, float t_max, vec3 se
 }
 
 // The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects; `opaque_only`
-// skips dielectrics (shadow rays). `from` is the object the ray leaves (-1: the camera): a mesh
-// object looks itself up only with u_self_reflection, and then with intersect_self.
-SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, int from, vec3 self_origin,
-                     float self_t_min) {
+// skips dielectrics (shadow rays). A mesh object that the ray leaves (self.object) looks itself
+// up only with u_self_reflection, and then with intersect_self.
+SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup self) {
   SceneHit best = scene_miss();
   best.t = t_max;
   for (int k = 0; k < u_object_count; k++) {
     if (opaque_only && objects[k].kind.y == MATERIAL_DIELECTRIC) continue;
     SceneHit h;
-    if (k == from && objects[k].kind.x == SHAPE_MESH) {
+    if (k == self.object && objects[k].kind.x == SHAPE_MESH) {
       if (!u_self_reflection) continue;
-      h = intersect_self(k, o, d, 2.0f * object_epsilon(k, false), best.t, self_origin,
-                         self_t_min);
+      h = intersect_self(o, d, 2.0f * object_epsilon(k, false), best.t, self);
     } else {
       h = intersect_object(k, o, d, 0.0f, best.t);
     }
@@ -194,9 +221,8 @@ vec3 shade_diffuse(SceneHit hit, vec3 geometric_normal, vec3 incoming) {
     }
     float cosine = dot(n, l);
     if (cosine <= 0.0f || dot(l, g) <= 0.0f) continue;
-    vec3 origin = hit.position + shadow_offset * g;
-    SceneHit blocker =
-        trace_scene(origin, l, distance_to_light, true, hit.object, origin, 2.0f * shadow_offset);
+    SelfLookup self = self_lookup(hit, g, shadow_offset);
+    SceneHit blocker = trace_scene(self.origin, l, distance_to_light, true, self);
     if (blocker.hit) continue;
     float falloff = point ? 1.0f / (distance_to_light * distance_to_light) : 1.0f;
     light_sum += lights[i].color.rgb * cosine * falloff;

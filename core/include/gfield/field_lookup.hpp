@@ -65,13 +65,15 @@ bool check_ray(const Ray& ray, std::string& error);
 /// when the origin lies inside the box behind parts of the surface (reached through the layers).
 FieldHit lookup_first_hit(const FieldLookup& lookup, const Ray& ray, LookupMode mode);
 /// The first hit of `ray` (mesh coordinates), a ray leaving the surface (its origin just off it),
-/// as the runtime looks up the mesh a ray leaves (shaders/lib/scene.glsl, gf_trace_leaving of
-/// field_lookup.glsl): the ray's own first hit where it lies beyond `self_t_min`; else the first
-/// hit beyond self_t_min of the parallel ray from `self_origin` (the start moved farther off the
-/// surface, by the geometry image's ray offset), in refined mode moved onto `ray` (a miss where
-/// that fails).
+/// as the runtime looks up the mesh a ray leaves (gf_trace_leaving of field_lookup.glsl, called
+/// by shaders/lib/scene.glsl): the ray's own first hit where it lies beyond `self_t_min`; a nearer
+/// one only where it faces the ray opposite to the start (`facing`: +1 for a ray leaving on the
+/// side the surface's normals face, -1 on the other), else the lookup goes on beyond it; where
+/// that does not settle it, the first hit beyond self_t_min of the parallel ray from
+/// `self_origin` (the start moved farther off the surface, by the geometry image's ray offset),
+/// in refined mode moved onto `ray` (a miss where that fails).
 FieldHit lookup_first_hit_leaving(const FieldLookup& lookup, const Ray& ray, glm::vec3 self_origin,
-                                  float self_t_min, LookupMode mode);
+                                  float self_t_min, float facing, LookupMode mode);
 /// The last hit of `ray` in [t_min, t_max]: the first hit of the reversed line, read from the
 /// table with entry and exit swapped (rays leaving a refracting object).
 FieldHit lookup_last_hit(const FieldLookup& lookup, const Ray& ray, LookupMode mode);
