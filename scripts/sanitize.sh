@@ -23,4 +23,17 @@ export LSAN_OPTIONS=suppressions=$PWD/tests/lsan-mesa.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd build-asan
 # Every test but the one-node Slurm cluster's (label "cluster", see tests/CMakeLists.txt).
-ctest --output-on-failure -j 2 --label-exclude cluster
+if ! ctest --output-on-failure -j 2 --label-exclude cluster; then
+  # LeakSanitizer's own stop-the-world tracer now and then crashes at a process's exit ("Tracer
+  # caught signal 11", google/sanitizers#1353; seen once in ~15 sanitizer runs here, in a test
+  # that passed 6 times on its own afterwards). Only when that is the whole failure, with no
+  # sanitizer report, are the failed tests run once more.
+  log=Testing/Temporary/LastTest.log
+  if grep -q "Tracer caught signal" "$log" &&
+      ! grep -qE "ERROR: (AddressSanitizer|LeakSanitizer): |runtime error:" "$log"; then
+    echo "sanitize.sh: LeakSanitizer's tracer crashed; running the failed tests once more"
+    ctest --output-on-failure --rerun-failed
+  else
+    exit 1
+  fi
+fi
