@@ -107,8 +107,8 @@ std::vector<Answer> exact_answers(const Exact& exact, const Box& box, const std:
   return answers;
 }
 
-/// `leaving`: null, or the rays leaving the surface (SurfaceRays of `rays`), looked up as
-/// lookup_first_hit_leaving.
+/// `leaving`: null, or how `rays` leave the surface (SurfaceRays::self_origins, self_t_min and
+/// facing), looked up as lookup_first_hit_leaving.
 std::vector<Answer> lookup_answers(const FieldLookup& lookup, const std::vector<Ray>& rays,
                                    LookupMode mode, bool last, double& seconds,
                                    const SurfaceRays* leaving = nullptr) {
@@ -169,7 +169,9 @@ struct Family {
   std::vector<int> ignored;    ///< the triangle each ray leaves (surface rays), else empty
   std::vector<int> layers{0};  ///< layers looked up per run (0: all K)
   bool built_only = false;
-  SurfaceRays leaving = {};  ///< surface rays: the rays with how they leave, else empty
+  /// surface rays: how they leave (self_origins, self_t_min, facing; the rays and triangles are
+  /// the family's above), else empty
+  SurfaceRays leaving = {};
 };
 
 /// Unit vector uniform on the sphere.
@@ -488,8 +490,10 @@ std::vector<Family> make_families(const GeometryField& field, const GeometryImag
         name == std::string("surface_rays")
             ? random_surface_rays(mesh, options.rays, offsets, options.seed + 3)
             : mirror_surface_rays(built, mesh, field.box, options.rays, offsets, options.seed + 4);
-    Family family{name, rays.rays, false, rays.triangles, layers, true};
-    family.leaving = std::move(rays);
+    Family family{name, std::move(rays.rays), false, std::move(rays.triangles), layers, true};
+    family.leaving.self_origins = std::move(rays.self_origins);
+    family.leaving.self_t_min = rays.self_t_min;
+    family.leaving.facing = std::move(rays.facing);
     families.push_back(std::move(family));
   }
   return families;
@@ -509,8 +513,9 @@ std::vector<Run> lookup_runs(const FieldLookup& lookup, const std::vector<Family
             continue;
           }
           Run run{family.name, key, lookup_mode_name(mode), last, {}, 0.0};
-          run.answers = lookup_answers(limited, family.rays, mode, last, run.seconds,
-                                       family.leaving.rays.empty() ? nullptr : &family.leaving);
+          run.answers =
+              lookup_answers(limited, family.rays, mode, last, run.seconds,
+                             family.leaving.self_origins.empty() ? nullptr : &family.leaving);
           runs.push_back(std::move(run));
         }
       }

@@ -133,8 +133,7 @@ void main() {
       if (ray.inside >= 0) {
         // Inside a dielectric: its own surface beyond the origin (the exit).
         next = objects[ray.inside].kind.x == SHAPE_MESH
-                   ? intersect_self(ray.origin, ray.direction,
-                                    2.0f * object_epsilon(ray.inside, false), 3.0e38f, ray.self)
+                   ? intersect_self(ray.origin, ray.direction, 3.0e38f, ray.self)
                    : intersect_object(ray.inside, ray.origin, ray.direction, 0.0f, 3.0e38f);
       } else {
         next = trace_scene(ray.origin, ray.direction, 3.0e38f, false, ray.self);

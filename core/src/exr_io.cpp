@@ -169,12 +169,17 @@ bool read_header(const std::string& filename, const Imf::Header& h, ExrAssetHead
   return true;
 }
 
+/// A ray offset a geometry image may carry (NaN: no).
+bool valid_ray_offset(float ray_offset) {
+  return ray_offset >= kMinRayOffset && ray_offset <= kMaxRayOffset;
+}
+
 /// The optional gfield.rayOffset of a geometry image (kMinRayOffset when absent).
 bool read_ray_offset(const std::string& filename, const Imf::Header& h, float& ray_offset,
                      std::string& error) {
   const auto* attribute = h.findTypedAttribute<Imf::FloatAttribute>("gfield.rayOffset");
   ray_offset = attribute ? attribute->value() : kMinRayOffset;
-  if (!(ray_offset >= kMinRayOffset && ray_offset <= kMaxRayOffset)) {
+  if (!valid_ray_offset(ray_offset)) {
     char text[160];
     std::snprintf(text, sizeof(text), ": gfield.rayOffset %g outside [%g, %g] (box diagonals)",
                   double(ray_offset), double(kMinRayOffset), double(kMaxRayOffset));
@@ -412,7 +417,7 @@ bool save_geometry_image(const std::string& filename, const GeometryImage& image
         filename + ": geometry image albedo does not match its size " + std::to_string(image.size);
     return false;
   }
-  if (!(image.ray_offset >= kMinRayOffset && image.ray_offset <= kMaxRayOffset)) {
+  if (!valid_ray_offset(image.ray_offset)) {
     error = filename + ": ray offset " + std::to_string(image.ray_offset) + " out of range";
     return false;
   }

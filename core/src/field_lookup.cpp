@@ -43,15 +43,21 @@ bool same_box(const Box& a, const Box& b) {
          all(lessThanEqual(abs(a.max - b.max), vec3(tolerance)));
 }
 
-FieldHit trace(const FieldLookup& lookup, const Ray& ray, LookupMode mode, bool last) {
-  std::string error;
-  if (lookup.field == nullptr || lookup.image == nullptr || !check_ray(ray, error)) {
-    return {};
-  }
+/// The lookup's GLSL functions over its field (limited to `layers`) and image.
+GlslFieldLookup glsl_lookup(const FieldLookup& lookup) {
   const int layers =
       lookup.layers > 0 ? std::min(lookup.layers, lookup.field->layers) : lookup.field->layers;
-  GlslFieldLookup glsl{*lookup.field, *lookup.image, layers};
-  const auto h = glsl.gf_trace(ray.origin, ray.direction, ray.t_min, ray.t_max, int(mode), last);
+  return {*lookup.field, *lookup.image, layers};
+}
+
+/// Whether `lookup` can look `ray` up (a miss otherwise).
+bool can_look_up(const FieldLookup& lookup, const Ray& ray) {
+  std::string error;
+  return lookup.field != nullptr && lookup.image != nullptr && check_ray(ray, error);
+}
+
+/// A GLSL hit of `ray` as a FieldHit.
+FieldHit field_hit(const GlslFieldLookup::GfHit& h, const Ray& ray) {
   FieldHit hit;
   if (h.hit) {
     hit.hit = true;
@@ -62,6 +68,15 @@ FieldHit trace(const FieldLookup& lookup, const Ray& ray, LookupMode mode, bool 
     hit.normal = h.normal;
   }
   return hit;
+}
+
+FieldHit trace(const FieldLookup& lookup, const Ray& ray, LookupMode mode, bool last) {
+  if (!can_look_up(lookup, ray)) {
+    return {};
+  }
+  return field_hit(glsl_lookup(lookup).gf_trace(ray.origin, ray.direction, ray.t_min, ray.t_max,
+                                                int(mode), last),
+                   ray);
 }
 
 }  // namespace
@@ -146,25 +161,13 @@ FieldHit lookup_first_hit(const FieldLookup& lookup, const Ray& ray, LookupMode 
 
 FieldHit lookup_first_hit_leaving(const FieldLookup& lookup, const Ray& ray, vec3 self_origin,
                                   float self_t_min, float facing, LookupMode mode) {
-  std::string error;
-  if (lookup.field == nullptr || lookup.image == nullptr || !check_ray(ray, error)) {
+  if (!can_look_up(lookup, ray)) {
     return {};
   }
-  const int layers =
-      lookup.layers > 0 ? std::min(lookup.layers, lookup.field->layers) : lookup.field->layers;
-  GlslFieldLookup glsl{*lookup.field, *lookup.image, layers};
-  const auto h = glsl.gf_trace_leaving(ray.origin, ray.direction, ray.t_min, ray.t_max, self_origin,
-                                       self_t_min, facing, int(mode));
-  FieldHit hit;
-  if (h.hit) {
-    hit.hit = true;
-    hit.t = h.t;
-    hit.distance = h.t * length(ray.direction);
-    hit.uv = h.uv;
-    hit.position = h.position;
-    hit.normal = h.normal;
-  }
-  return hit;
+  return field_hit(
+      glsl_lookup(lookup).gf_trace_leaving(ray.origin, ray.direction, ray.t_min, ray.t_max,
+                                           self_origin, self_t_min, facing, int(mode)),
+      ray);
 }
 
 FieldHit lookup_last_hit(const FieldLookup& lookup, const Ray& ray, LookupMode mode) {

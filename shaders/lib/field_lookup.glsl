@@ -476,17 +476,7 @@ GfHit gf_hit_near(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
   if (!gf_refine(o, e1, e2, tolerance, false, o + t_min * d, uv, p)) {
     return gf_miss();
   }
-  float t = dot(p - o, d) / dot(d, d);
-  if (t < t_min || t > t_max) {
-    return gf_miss();
-  }
-  GfHit h;
-  h.hit = true;
-  h.t = t;
-  h.uv = uv;
-  h.position = p;
-  h.normal = gf_image_normal(uv);
-  return h;
+  return gf_hit_at(o, d, t_min, t_max, uv);
 }
 
 // The first hit of o + t d, t in [t_min, t_max], for a ray leaving the surface: o lies just off

@@ -71,37 +71,48 @@ float shadow_epsilon(SceneHit hit) {
   return max(hit.self_offset, 10.0f * GF_MIN_RAY_OFFSET * objects[k].absorption.w);
 }
 
+// Makes mesh object k's geometry image and field the ones gf_* reads (gs_select_asset).
+void select_mesh(int k) {
+  gs_select_asset(objects[k].asset.xyz, objects[k].field.xyz, objects[k].box_min.xyz,
+                  objects[k].box_max.xyz);
+}
+
+// The hit `g` of mesh object k (mesh coordinates, found by select_mesh(k) and gf_*) in world
+// coordinates; a miss for a miss.
+SceneHit world_mesh_hit(int k, GfHit g) {
+  SceneHit h = scene_miss();
+  if (!g.hit) return h;
+  h.hit = true;
+  h.t = g.t;
+  h.object = k;
+  h.position = (objects[k].to_world * vec4(g.position, 1.0f)).xyz;
+  h.normal = normalize(transpose(mat3(objects[k].to_object)) * g.normal);
+  h.uv = g.uv;
+  h.self_offset = object_epsilon(k, false);
+  return h;
+}
+
 // The nearest hit of o + t d (world, d unit) on object k with t in (t_min, t_max): for meshes the
 // field's first hit beyond t_min over its layers (a ray leaving the surface or inside the solid
 // sees the surface beyond its origin).
 SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max) {
-  SceneHit h = scene_miss();
   vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
   vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
-  vec3 local_normal;
   if (objects[k].kind.x == SHAPE_MESH) {
-    gs_select_asset(objects[k].asset.xyz, objects[k].field.xyz, objects[k].box_min.xyz,
-                    objects[k].box_max.xyz);
-    GfHit g = gf_trace(lo, ld, t_min, t_max, u_mode, false);
-    if (!g.hit) return h;
-    h.t = g.t;
-    h.position = (objects[k].to_world * vec4(g.position, 1.0f)).xyz;
-    local_normal = g.normal;
-    h.uv = g.uv;
-    h.self_offset = object_epsilon(k, false);
-  } else {
-    ShapeHit s = intersect_shape(objects[k].kind.x, objects[k].shape, objects[k].size.xyz, lo, ld,
-                                 t_min, t_max);
-    if (!s.hit) return h;
-    h.t = s.t;
-    h.position = o + s.t * d;
-    local_normal = s.normal;
-    h.uv = s.uv;
-    h.self_offset = object_epsilon(k, false);
+    select_mesh(k);
+    return world_mesh_hit(k, gf_trace(lo, ld, t_min, t_max, u_mode, false));
   }
+  SceneHit h = scene_miss();
+  ShapeHit s = intersect_shape(objects[k].kind.x, objects[k].shape, objects[k].size.xyz, lo, ld,
+                               t_min, t_max);
+  if (!s.hit) return h;
   h.hit = true;
+  h.t = s.t;
   h.object = k;
-  h.normal = normalize(transpose(mat3(objects[k].to_object)) * local_normal);
+  h.position = o + s.t * d;
+  h.normal = normalize(transpose(mat3(objects[k].to_object)) * s.normal);
+  h.uv = s.uv;
+  h.self_offset = object_epsilon(k, false);
   return h;
 }
 
@@ -118,8 +129,7 @@ vec3 hit_albedo(int k, vec2 uv) {
   if (objects[k].kind.x != SHAPE_MESH || objects[k].kind.z != TEXTURE_MESH ||
       objects[k].asset.w == 0)
     return object_albedo(k, uv);
-  gs_select_asset(objects[k].asset.xyz, objects[k].field.xyz, objects[k].box_min.xyz,
-                  objects[k].box_max.xyz);
+  select_mesh(k);
   return objects[k].color.rgb * gs_image_albedo(uv);
 }
 
@@ -153,27 +163,18 @@ SelfLookup self_lookup(SceneHit hit, vec3 g, float offset) {
   return s;
 }
 
-// The hit of o + t d (world, d unit) on mesh object self.object, which the ray leaves, t in
-// [t_min, t_max]: gf_trace_leaving (a lookup that starts at o itself: beyond self.t_min).
-SceneHit intersect_self(vec3 o, vec3 d, float t_min, float t_max, SelfLookup self) {
+// The hit of o + t d (world, d unit; o: object_epsilon(k, false) off the surface) on mesh object
+// k = self.object, which the ray leaves, t < t_max: gf_trace_leaving (a ray that looks from its
+// own start, a shadow ray, looks beyond self.t_min).
+SceneHit intersect_self(vec3 o, vec3 d, float t_max, SelfLookup self) {
   int k = self.object;
   if (self.origin == o) return intersect_object(k, o, d, self.t_min, t_max);
-  SceneHit h = scene_miss();
-  gs_select_asset(objects[k].asset.xyz, objects[k].field.xyz, objects[k].box_min.xyz,
-                  objects[k].box_max.xyz);
+  select_mesh(k);
   vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
   vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
   vec3 ls = (objects[k].to_object * vec4(self.origin, 1.0f)).xyz;
-  GfHit g = gf_trace_leaving(lo, ld, t_min, t_max, ls, self.t_min, self.facing, u_mode);
-  if (!g.hit) return h;
-  h.hit = true;
-  h.t = g.t;
-  h.object = k;
-  h.position = (objects[k].to_world * vec4(g.position, 1.0f)).xyz;
-  h.normal = normalize(transpose(mat3(objects[k].to_object)) * g.normal);
-  h.uv = g.uv;
-  h.self_offset = object_epsilon(k, false);
-  return h;
+  return world_mesh_hit(k, gf_trace_leaving(lo, ld, 2.0f * object_epsilon(k, false), t_max, ls,
+                                            self.t_min, self.facing, u_mode));
 }
 
 // The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects; `opaque_only`
@@ -187,7 +188,7 @@ SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup s
     SceneHit h;
     if (k == self.object && objects[k].kind.x == SHAPE_MESH) {
       if (!u_self_reflection) continue;
-      h = intersect_self(o, d, 2.0f * object_epsilon(k, false), best.t, self);
+      h = intersect_self(o, d, best.t, self);
     } else {
       h = intersect_object(k, o, d, 0.0f, best.t);
     }
