@@ -24,10 +24,10 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd build-asan
 # Every test but the one-node Slurm cluster's (label "cluster", see tests/CMakeLists.txt).
 if ! ctest --output-on-failure -j 2 --label-exclude cluster; then
-  # LeakSanitizer's own stop-the-world tracer now and then crashes at a process's exit ("Tracer
-  # caught signal 11", google/sanitizers#1353; seen once in ~15 sanitizer runs here, in a test
-  # that passed 6 times on its own afterwards). Only when that is the whole failure, with no
-  # sanitizer report, are the failed tests run once more.
+  # LeakSanitizer's own stop-the-world tracer crashes ("Tracer caught signal 11",
+  # google/sanitizers#1353) when a thread exits during its check at exit: TBB's workers did, and
+  # the test programs and `gfield` now join them first (preprocess/worker_threads.hpp). Should it
+  # still happen, with no sanitizer report, the failed tests are run once more.
   log=Testing/Temporary/LastTest.log
   if grep -q "Tracer caught signal" "$log" &&
       ! grep -qE "ERROR: (AddressSanitizer|LeakSanitizer): |runtime error:" "$log"; then

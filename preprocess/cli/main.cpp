@@ -8,8 +8,10 @@
 
 #include "gfield/printable.hpp"
 #include "preprocess/cli/commands.hpp"
+#include "preprocess/worker_threads.hpp"
 
 int main(int argc, char** argv) {
+  const gfield::WorkerThreads workers;  // joined before the process exits
   CLI::App app{
       "gfield: geometry images and geometry fields for real-time reflection and refraction.\n"
       "Exit codes: 0 success, 2 bad input or failed command, 1 internal error.",
