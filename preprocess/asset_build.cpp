@@ -109,7 +109,10 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
 nlohmann::json image_options_to_json(const GeometryImageOptions& o) {
   const char* methods[] = {"auto", "orbifold", "square"};
   const char* holes[] = {"all-but-longest", "all", "none"};
-  return {{"size", o.size},
+  const bool automatic = o.size == kAutoImageSize;
+  return {{"size", automatic ? nlohmann::json("auto") : nlohmann::json(o.size)},
+          {"max_mean_error_percent",
+           automatic ? nlohmann::json(o.max_mean_error) : nlohmann::json(nullptr)},
           {"method", methods[int(o.method)]},
           {"components", o.components == ComponentSelection::kLargest ? "largest" : "all"},
           {"holes", holes[int(o.holes)]},

@@ -297,9 +297,16 @@ namespace {
 /// False with an error for an image size or face count outside the documented limits.
 bool check_build_input(const TriangleMesh& input, const GeometryImageOptions& options,
                        std::string& error) {
-  if (options.size < kMinImageSize || options.size > kMaxImageSize) {
+  if (options.size != kAutoImageSize &&
+      (options.size < kMinImageSize || options.size > kMaxImageSize)) {
     error = "image size " + std::to_string(options.size) + " is outside [" +
             std::to_string(kMinImageSize) + ", " + std::to_string(kMaxImageSize) + "]";
+    return false;
+  }
+  if (options.size == kAutoImageSize &&
+      !(options.max_mean_error > 0.0 && std::isfinite(options.max_mean_error))) {
+    error = "the automatic image size's mean error " + std::to_string(options.max_mean_error) +
+            " is not a positive percentage";
     return false;
   }
   if (input.triangles.size() > kMaxFaces) {
@@ -387,18 +394,17 @@ ParameterizedMesh charted_mesh(const RepairedMesh& repaired,
   return parameterized;
 }
 
-/// Rasterises the packed charts into `image` (its box: the padded bounds of the charted mesh)
-/// and gives the parameterised mesh its corner uvs.
+/// Rasterises the packed charts into the size x size `image` (its box: the padded bounds of the
+/// charted mesh) and gives the parameterised mesh its corner uvs.
 void rasterize_image(const RepairedMesh& repaired, const std::vector<Component>& components,
-                     std::vector<Chart>& charts, const std::vector<ChartRect>& rects,
-                     const GeometryImageOptions& options, const AlbedoSource* albedo,
-                     GeometryImage& image, ParameterizedMesh& parameterized,
-                     GeometryImageReport& report) {
+                     const std::vector<Chart>& charts, const std::vector<ChartRect>& rects,
+                     int size, const AlbedoSource* albedo, GeometryImage& image,
+                     ParameterizedMesh& parameterized, GeometryImageReport& report) {
   const TriangleMesh& mesh = repaired.mesh;
   std::vector<RasterChart> raster(components.size());
   for (size_t c = 0; c < components.size(); ++c) {
     raster[c].faces = components[c].faces;
-    raster[c].corner_uv = std::move(charts[c].corner_uv);
+    raster[c].corner_uv = charts[c].corner_uv;
     raster[c].orbifold = charts[c].orbifold;
     raster[c].rect = rects[c];
     report.charts[c].rect = rects[c];
@@ -409,7 +415,7 @@ void rasterize_image(const RepairedMesh& repaired, const std::vector<Component>&
   image.box = padded_bounds(box_points.data(), box_points.size(), kBoxPadding);
   const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
   std::vector<glm::vec2> face_uv;
-  rasterize_charts(mesh, normals, raster, options.size, image.box, albedo, image, face_uv);
+  rasterize_charts(mesh, normals, raster, size, image.box, albedo, image, face_uv);
   for (const Component& c : components)
     for (int f : c.faces)
       for (int k = 0; k < 3; ++k)
@@ -495,8 +501,9 @@ void measure_distortion(const ParameterizedMesh& parameterized, GeometryImageRep
   report.area_p95 = weighted_percentile(area_ratio, 0.95);
 }
 
-/// The input's diagonal and, with options.measure, the distortion and the reconstruction error
-/// both ways (mesh -> image surface and back) into `report`.
+/// The input's diagonal and, with options.measure or an automatic size, the mesh -> image
+/// distance and the ray offset into `report`; with options.measure also the distortion and the
+/// image -> mesh distance.
 void measure_image(const TriangleMesh& input, const GeometryImage& image,
                    const ParameterizedMesh& parameterized, const GeometryImageOptions& options,
                    GeometryImageReport& report) {
@@ -506,9 +513,8 @@ void measure_image(const TriangleMesh& input, const GeometryImage& image,
     hi = glm::max(hi, p);
   }
   report.diagonal = glm::length(hi - lo);
-  if (!options.measure)
+  if (!options.measure && options.size != kAutoImageSize)
     return;
-  measure_distortion(parameterized, report);
   const TriangleMesh surface = geometry_image_surface(image);
   report.mesh_to_image = error_stats(
       distances_to_surface(sample_surface(input, options.error_samples, options.seed), surface),
@@ -518,9 +524,38 @@ void measure_image(const TriangleMesh& input, const GeometryImage& image,
     report.ray_offset =
         std::clamp(report.mesh_to_image.p98 / 100.0 * report.diagonal / box_diagonal,
                    double(kMinRayOffset), double(kMaxRayOffset));
+  if (!options.measure)
+    return;
+  measure_distortion(parameterized, report);
   report.image_to_mesh = error_stats(
       distances_to_surface(sample_surface(surface, options.error_samples, options.seed + 1), input),
       report.diagonal);
+}
+
+/// The charts packed, rasterised and measured at `size` texels per side (`parameterized`
+/// rebuilt), the stage times added to `report`.
+bool image_at_size(const TriangleMesh& input, const RepairedMesh& repaired,
+                   const std::vector<Component>& components, const std::vector<Chart>& charts,
+                   const AlbedoSource* albedo, const GeometryImageOptions& options, int size,
+                   GeometryImage& image, ParameterizedMesh& parameterized,
+                   GeometryImageReport& report, std::string& error) {
+  Stopwatch stage;
+  std::vector<double> areas;
+  for (const Component& c : components)
+    areas.push_back(c.area);
+  std::vector<ChartRect> rects;
+  if (!pack_charts(areas, size, options.gutter, rects, error))
+    return false;
+  report.seconds.pack += stage.seconds();
+  stage.restart();
+  image = {};
+  rasterize_image(repaired, components, charts, rects, size, albedo, image, parameterized, report);
+  report.seconds.rasterize += stage.seconds();
+  stage.restart();
+  measure_image(input, image, parameterized, options, report);
+  image.ray_offset = float(report.ray_offset);
+  report.seconds.measure += stage.seconds();
+  return true;
 }
 
 /// "1 texture, 2 materials, vertex colours": what `appearance`'s base colour is made of.
@@ -558,28 +593,26 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
   if (!parameterize_pieces(repaired.mesh, components, options, charts, report, error))
     return false;
   report.seconds.parameterize = stage.seconds();
-  stage.restart();
-  std::vector<double> areas;
-  for (const Component& c : components)
-    areas.push_back(c.area);
-  std::vector<ChartRect> rects;
-  if (!pack_charts(areas, options.size, options.gutter, rects, error))
-    return false;
-  report.seconds.pack = stage.seconds();
-  stage.restart();
   const MeshAppearance none;
   const bool albedo = appearance != nullptr && carries_base_color(*appearance);
   const AlbedoSource source(input, albedo ? *appearance : none, repaired.mesh,
                             repaired.source_face);
   report.albedo = albedo ? albedo_summary(*appearance) : "none";
-  rasterize_image(repaired, components, charts, rects, options, albedo ? &source : nullptr, image,
-                  parameterized, report);
   report.route = route_summary(report.charts);
-  report.seconds.rasterize = stage.seconds();
-  stage.restart();
-  measure_image(input, image, parameterized, options, report);
-  image.ray_offset = float(report.ray_offset);
-  report.seconds.measure = stage.seconds();
+  const bool automatic = options.size == kAutoImageSize;
+  report.max_mean_error = automatic ? options.max_mean_error : 0.0;
+  for (size_t trial = 0;; ++trial) {
+    const int size = automatic ? kAutoImageSizes[trial] : options.size;
+    if (!image_at_size(input, repaired, components, charts, albedo ? &source : nullptr, options,
+                       size, image, parameterized, report, error))
+      return false;
+    if (!automatic)
+      break;
+    report.size_trials.push_back({size, report.mesh_to_image.mean});
+    if (report.mesh_to_image.mean <= options.max_mean_error ||
+        trial + 1 == std::size(kAutoImageSizes))
+      break;
+  }
   report.seconds.total = watch.seconds();
   return true;
 }
@@ -607,8 +640,14 @@ nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
                       {"degenerate_faces", c.degenerate},
                       {"area", c.area},
                       {"rect", {c.rect.x, c.rect.y, c.rect.size}}});
+  json trials = json::array();
+  for (const SizeTrial& t : r.size_trials)
+    trials.push_back({{"size", t.size}, {"mesh_to_image_mean_percent", t.mesh_to_image_mean}});
   const RepairReport& rep = r.repair;
   return json{
+      {"automatic_size", r.size_trials.empty() ? json(nullptr)
+                                               : json{{"max_mean_error_percent", r.max_mean_error},
+                                                      {"trials", trials}}},
       {"route", r.route},
       {"components", r.components},
       {"dropped_components", r.dropped_components},
@@ -655,6 +694,18 @@ std::string geometry_image_report_to_text(const GeometryImageReport& r) {
     text += line;
     text += '\n';
   };
+  if (!r.size_trials.empty()) {
+    std::string trials;
+    for (const SizeTrial& t : r.size_trials) {
+      std::snprintf(line, sizeof(line), "%s%d^2: %.4f%%", trials.empty() ? "" : ", ", t.size,
+                    t.mesh_to_image_mean);
+      trials += line;
+    }
+    const SizeTrial& kept = r.size_trials.back();
+    add("size: %d^2, automatic (mean mesh -> image distance %s; target %.4f%%%s)", kept.size,
+        trials.c_str(), r.max_mean_error,
+        kept.mesh_to_image_mean > r.max_mean_error ? ", not reached at the largest size" : "");
+  }
   add("route: %s", r.route.c_str());
   for (size_t c = 0; c < r.charts.size(); ++c) {
     const ChartReport& chart = r.charts[c];

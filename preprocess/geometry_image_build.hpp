@@ -26,11 +26,19 @@ inline constexpr size_t kMaxFaces = 4'000'000;
 /// Image sizes accepted (texels per side).
 inline constexpr int kMinImageSize = 8;
 inline constexpr int kMaxImageSize = 8192;
+/// GeometryImageOptions::size meaning "choose": the smallest of kAutoImageSizes whose mean
+/// mesh -> image distance is at most GeometryImageOptions::max_mean_error (else the largest).
+inline constexpr int kAutoImageSize = 0;
+inline constexpr int kAutoImageSizes[] = {512, 1024};
+/// Default GeometryImageOptions::max_mean_error, percent of the input's diagonal.
+inline constexpr double kDefaultMaxMeanError = 0.005;
 /// Relative padding of the image box (GeometryImage::box = padded_bounds(repaired positions)).
 inline constexpr float kBoxPadding = 0.01f;
 
 struct GeometryImageOptions {
-  int size = 512;
+  int size = kAutoImageSize;  ///< texels per side, or kAutoImageSize
+  /// kAutoImageSize: the mean mesh -> image distance to reach, percent of the input's diagonal.
+  double max_mean_error = kDefaultMaxMeanError;
   ParameterizationMethod method = ParameterizationMethod::kAuto;
   ComponentSelection components = ComponentSelection::kAll;
   HoleFilling holes = HoleFilling::kAllButLongest;
@@ -38,7 +46,9 @@ struct GeometryImageOptions {
   /// Cut regions a chart compresses (protrusions) into charts of their own (chart_split.hpp).
   bool split_protrusions = true;
   int max_split_depth = 2;
-  bool measure = true;            ///< distortion and reconstruction error (the slow part)
+  /// Distortion and reconstruction error (the slow part). An automatic size always measures the
+  /// mesh -> image distance (it chooses by it, and the ray offset comes from it).
+  bool measure = true;
   size_t error_samples = 100000;  ///< area-weighted points per direction
   uint64_t seed = 1;
 };
@@ -71,8 +81,18 @@ struct StageTimes {  ///< seconds
   double repair = 0.0, parameterize = 0.0, pack = 0.0, rasterize = 0.0, measure = 0.0, total = 0.0;
 };
 
+/// One image size an automatic size tried, and its mean mesh -> image distance (percent of the
+/// input's diagonal).
+struct SizeTrial {
+  int size = 0;
+  double mesh_to_image_mean = 0.0;
+};
+
 struct GeometryImageReport {
   RepairReport repair;
+  /// The sizes tried, smallest first, the last one kept; empty for a size given.
+  std::vector<SizeTrial> size_trials;
+  double max_mean_error = 0.0;  ///< the automatic size's target (percent of the diagonal)
   std::string route;  ///< the routes of the charts, e.g. "orbifold" or "orbifold + slit+disk x3"
   std::vector<ChartReport> charts;
   size_t components = 0;          ///< after repair

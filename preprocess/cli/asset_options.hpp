@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <exception>
 #include <memory>
 #include <string>
 
@@ -11,7 +13,8 @@
 namespace gfield {
 
 struct AssetArguments {
-  int size = 512;
+  std::string size = "auto";
+  double max_image_error = kDefaultMaxMeanError;
   int samples = 24;
   int layers = kAutoLayers;
   bool half = false;  ///< the default; the flag exists for symmetry with --float
@@ -21,6 +24,59 @@ struct AssetArguments {
   std::string components = "all";
 };
 
+/// The image size of --size: "auto" (kAutoImageSize) or texels per side. False for other words.
+inline bool image_size_from_text(const std::string& text, int& size) {
+  if (text == "auto") {
+    size = kAutoImageSize;
+    return true;
+  }
+  size_t end = 0;
+  try {
+    size = std::stoi(text, &end);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return end == text.size() && size >= kMinImageSize && size <= kMaxImageSize;
+}
+
+/// --size and --max-image-error of `gfield image`, `build` and `batch`.
+inline void add_image_size_options(CLI::App* cmd, std::string& size, double& max_image_error) {
+  const std::string sizes =
+      std::to_string(kAutoImageSizes[0]) + ", or " + std::to_string(kAutoImageSizes[1]);
+  cmd->add_option("--size", size,
+                  "geometry image texels per side (" + std::to_string(kMinImageSize) + " to " +
+                      std::to_string(kMaxImageSize) + "), or auto: " + sizes +
+                      " where the smaller one's\nmean mesh -> image distance exceeds "
+                      "--max-image-error")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            int n = 0;
+            return image_size_from_text(text, n)
+                       ? std::string()
+                       : "expected auto or texels per side in [" + std::to_string(kMinImageSize) +
+                             ", " + std::to_string(kMaxImageSize) + "], got " + text;
+          },
+          "auto|N"))
+      ->capture_default_str();
+  cmd->add_option("--max-image-error", max_image_error,
+                  "--size auto: the mean mesh -> image distance to reach, percent of the mesh's "
+                  "diagonal")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            size_t end = 0;
+            double value = 0.0;
+            try {
+              value = std::stod(text, &end);
+            } catch (const std::exception&) {
+            }
+            return end == text.size() && std::isfinite(value) && value > 0.0
+                       ? std::string()
+                       : "expected a positive percentage, got " + text;
+          },
+          "PERCENT"))
+      ->capture_default_str();
+}
+
 /// --layers of `gfield field`, `build` and `batch`.
 inline void add_layers_option(CLI::App* cmd, int& layers) {
   cmd->add_option("--layers", layers,
@@ -29,12 +85,10 @@ inline void add_layers_option(CLI::App* cmd, int& layers) {
       ->check(CLI::Range(1, kMaxFieldLayers));
 }
 
-/// Adds --size, --samples, --layers, --half/--float, --verify-rays, --method, --components to
-/// `cmd`.
+/// Adds --size, --max-image-error, --samples, --layers, --half/--float, --verify-rays, --method,
+/// --components to `cmd`.
 inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArguments>& args) {
-  cmd->add_option("--size", args->size, "geometry image texels per side")
-      ->check(CLI::Range(kMinImageSize, kMaxImageSize))
-      ->capture_default_str();
+  add_image_size_options(cmd, args->size, args->max_image_error);
   cmd->add_option("--samples", args->samples,
                   "N, field samples per side of each box face (" +
                       std::to_string(kMinSamplesPerSide) + " to " +
@@ -56,7 +110,8 @@ inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArgument
 
 inline AssetOptions asset_options(const AssetArguments& args) {
   AssetOptions options;
-  options.image.size = args.size;
+  image_size_from_text(args.size, options.image.size);  // checked by --size's validator
+  options.image.max_mean_error = args.max_image_error;
   options.image.method = args.method == "orbifold" ? ParameterizationMethod::kOrbifold
                          : args.method == "square" ? ParameterizationMethod::kSquare
                                                    : ParameterizationMethod::kAuto;

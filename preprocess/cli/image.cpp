@@ -14,6 +14,7 @@
 #include "gfield/exr_io.hpp"
 #include "gfield/printable.hpp"
 #include "preprocess/asset_build.hpp"
+#include "preprocess/cli/asset_options.hpp"
 #include "preprocess/cli/commands.hpp"
 #include "preprocess/geometry_image_build.hpp"
 
@@ -23,7 +24,8 @@ namespace {
 
 struct ImageArguments {
   std::string mesh, part, output, json;
-  int size = 512;
+  std::string size = "auto";
+  double max_image_error = kDefaultMaxMeanError;
   std::string method = "auto", components = "all", holes = "all-but-longest", protrusions = "split";
   bool no_measure = false;
 };
@@ -37,9 +39,7 @@ void add_image_options(CLI::App* cmd, const std::shared_ptr<ImageArguments>& arg
                   "scene, placed by its nodes, as one mesh)");
   cmd->add_option("-o,--output", args->output, "output geometry image (NAME.gimage.exr)")
       ->required();
-  cmd->add_option("--size", args->size, "texels per side")
-      ->check(CLI::Range(kMinImageSize, kMaxImageSize))
-      ->capture_default_str();
+  add_image_size_options(cmd, args->size, args->max_image_error);
   cmd->add_option("--method", args->method,
                   "auto: orbifold for closed genus-0 components, a disk chart otherwise;\n"
                   "orbifold: only closed genus 0; square: every component cut to a disk")
@@ -62,13 +62,15 @@ void add_image_options(CLI::App* cmd, const std::shared_ptr<ImageArguments>& arg
       ->capture_default_str();
   cmd->add_option("--json", args->json, "also write the report as JSON to this file");
   cmd->add_flag("--no-measure", args->no_measure,
-                "skip distortion and reconstruction error (faster)");
+                "skip distortion and reconstruction error (faster; --size auto still measures\n"
+                "the mesh -> image distance it chooses by)");
 }
 
 /// GeometryImageOptions from the command line's words.
 GeometryImageOptions image_options(const ImageArguments& args) {
   GeometryImageOptions options;
-  options.size = args.size;
+  image_size_from_text(args.size, options.size);  // checked by --size's validator
+  options.max_mean_error = args.max_image_error;
   options.method = args.method == "orbifold" ? ParameterizationMethod::kOrbifold
                    : args.method == "square" ? ParameterizationMethod::kSquare
                                              : ParameterizationMethod::kAuto;

@@ -227,6 +227,47 @@ TEST(GeometryImage, RayOffsetCoversTheImagesDeviationFromTheMesh) {
   EXPECT_EQ(unmeasured.image.ray_offset, kMinRayOffset);
 }
 
+// --size auto: 512^2, doubled while the mean mesh -> image distance exceeds the target (spot:
+// about 0.0036% of the diagonal at 512^2, 0.0010% at 1024^2), never beyond the largest size.
+TEST(GeometryImage, AutomaticSizeDoublesUntilTheMeanErrorIsReached) {
+  TriangleMesh input;
+  std::string error;
+  ASSERT_TRUE(load_mesh(std::string(GFIELD_MESH_DIR) + "/spot.obj", input, error)) << error;
+  const double targets[3] = {kDefaultMaxMeanError, 0.002, 1e-6};
+  const int expected[3] = {512, 1024, 1024};
+  float offsets[3];
+  for (int t = 0; t < 3; ++t) {
+    GeometryImageOptions options;
+    options.max_mean_error = targets[t];
+    options.measure = false;  // an automatic size measures the mesh -> image distance anyway
+    options.error_samples = 20000;
+    GeometryImage image;
+    ParameterizedMesh pm;
+    GeometryImageReport report;
+    ASSERT_TRUE(build_geometry_image(input, options, image, pm, report, error)) << error;
+    const std::vector<SizeTrial>& trials = report.size_trials;
+    ASSERT_FALSE(trials.empty());
+    EXPECT_EQ(image.size, expected[t]) << "target " << targets[t];
+    EXPECT_EQ(image.size, trials.back().size);
+    EXPECT_EQ(report.max_mean_error, targets[t]);
+    for (size_t k = 0; k < trials.size(); ++k) {
+      std::printf("target %.4g%%: %d^2 mean %.4f%%\n", targets[t], trials[k].size,
+                  trials[k].mesh_to_image_mean);
+      EXPECT_EQ(trials[k].size, kAutoImageSizes[k]);
+      if (k + 1 < trials.size())
+        EXPECT_GT(trials[k].mesh_to_image_mean, targets[t]);
+      else if (trials[k].mesh_to_image_mean > targets[t])
+        EXPECT_EQ(trials[k].size, kAutoImageSizes[std::size(kAutoImageSizes) - 1]);
+    }
+    if (trials.size() == 2)
+      EXPECT_LT(trials[1].mesh_to_image_mean, 0.5 * trials[0].mesh_to_image_mean);
+    EXPECT_EQ(pm.mesh.triangles.size() * 3, pm.corner_uv.size());
+    offsets[t] = image.ray_offset;
+  }
+  EXPECT_GT(offsets[0], 1.5f * offsets[1]);  // the finer image deviates less from the mesh
+  EXPECT_EQ(offsets[1], offsets[2]);
+}
+
 TEST(GeometryImage, DeterministicOutput) {
   Built a, b;
   ASSERT_NO_FATAL_FAILURE(build("spot.obj", 64, a, false));
@@ -427,7 +468,10 @@ TEST(CliImage, WritesTheImageAndTheUvMeshOrNothing) {
   fs::remove(bad);
   for (const std::string& args :
        {"image " + tmp + "/missing.obj -o " + bad,
-        "image " + std::string(GFIELD_MESH_DIR) + "/teapot.obj --method orbifold -o " + bad}) {
+        "image " + std::string(GFIELD_MESH_DIR) + "/teapot.obj --method orbifold -o " + bad,
+        "image " + std::string(GFIELD_MESH_DIR) + "/teapot.obj --size 12a -o " + bad,
+        "image " + std::string(GFIELD_MESH_DIR) + "/teapot.obj --size 4 -o " + bad,
+        "image " + std::string(GFIELD_MESH_DIR) + "/teapot.obj --max-image-error 0 -o " + bad}) {
     const test::CliRun failed = test::run_cli(args);
     EXPECT_EQ(failed.exit_code, 2) << args;
     EXPECT_EQ(std::count(failed.err.begin(), failed.err.end(), '\n'), 1) << failed.err;
