@@ -1,6 +1,7 @@
 #pragma once
 // The bundled test meshes (data/meshes) of the benchmarks through the real geometry-image pipeline
-// (512^2, measurements off): the parameterised mesh and the geometry image of each.
+// (at a given size or kAutoImageSize, measurements off): the parameterised mesh and the geometry
+// image of each.
 
 #include <cstdio>
 #include <filesystem>
