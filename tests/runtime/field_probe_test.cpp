@@ -49,13 +49,13 @@ std::vector<Ray> test_rays() {
 /// Every mode, first and last hit: the GPU lookup against the CPU lookup of the same codes;
 /// refined first hits of the camera rays against the exact sphere.
 void expect_gpu_agrees(const GpuAssets& assets, const FieldLookup& lookup,
-                       const std::vector<Ray>& rays, int bits) {
+                       const std::vector<Ray>& rays, int bits, int asset = 0) {
   std::string error;
   for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
     for (bool last : {false, true}) {
       std::vector<glm::vec4> gpu;
-      ASSERT_TRUE(
-          probe_field_gpu(assets, 0, rays, mode, last, default_shader_dir().string(), gpu, error))
+      ASSERT_TRUE(probe_field_gpu(assets, asset, rays, mode, last, default_shader_dir().string(),
+                                  gpu, error))
           << error;
       size_t agree = 0, hits = 0, truth = 0;
       for (size_t i = 0; i < rays.size(); ++i) {
@@ -104,6 +104,33 @@ TEST(FieldProbe, GpuLookupAgreesWithCpuLookup) {
     EXPECT_EQ(assets.assets()[0].field_layers, 2);
     EXPECT_EQ(assets.assets()[0].field_bytes, field_gpu_bytes(8, 2, bits));
     expect_gpu_agrees(assets, lookup, rays, bits);
+  }
+}
+
+// Geometry images of different sizes share one texture array sized to the largest (--size auto
+// gives 512^2 and 1024^2 images to the meshes of one scene): the smaller fills its layer's corner.
+TEST(FieldProbe, ImagesOfDifferentSizesShareTheArray) {
+  std::string error;
+  auto context = GlContext::create_headless(error);
+  ASSERT_NE(context, nullptr) << error;
+  GeometryImage small_image, large_image;
+  GeometryField small_field, large_field;
+  test::make_sphere_assets(48, 8, small_image, small_field);
+  test::make_sphere_assets(96, 8, large_image, large_field);
+  GpuAssets assets;
+  ASSERT_TRUE(assets.upload({&small_image, &large_image}, {&small_field, &large_field}, 8, error))
+      << error;
+  EXPECT_EQ(assets.assets()[0].image_size, 48);
+  EXPECT_EQ(assets.assets()[1].image_size, 96);
+  const std::vector<Ray> rays = test_rays();
+  const GeometryImage* images[2] = {&small_image, &large_image};
+  const GeometryField* fields[2] = {&small_field, &large_field};
+  for (int a = 0; a < 2; ++a) {
+    const GeometryField stored = quantized_field(*fields[a], 8);  // the lookup keeps a pointer
+    FieldLookup lookup;
+    ASSERT_TRUE(make_field_lookup(stored, *images[a], lookup, error)) << error;
+    SCOPED_TRACE("asset " + std::to_string(a));
+    expect_gpu_agrees(assets, lookup, rays, 8, a);
   }
 }
 
