@@ -12,6 +12,7 @@
 #include "gfield/exr_io.hpp"
 #include "gfield/field_lookup.hpp"
 #include "gfield/gpu_storage.hpp"
+#include "runtime/image_atlas.hpp"
 
 namespace gfield {
 namespace {
@@ -32,7 +33,7 @@ bool fits_gl_limits(int side, int count, const std::string& owner, std::string& 
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
   if (count > max_layers) {
-    error = owner + ": " + std::to_string(count) + " assets exceed GL_MAX_ARRAY_TEXTURE_LAYERS";
+    error = owner + ": " + std::to_string(count) + " layers exceed GL_MAX_ARRAY_TEXTURE_LAYERS";
     return false;
   }
   if (side > max_size) {
@@ -218,9 +219,14 @@ bool GpuAssets::load_images(const Scene& scene, std::string& error) {
 
 bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
   int side = 1;
-  for (const GeometryImage& image : images_)
+  std::vector<int> sizes;
+  for (const GeometryImage& image : images_) {
     side = std::max(side, image.size);
-  const int count = std::max(1, int(images_.size()));
+    sizes.push_back(image.size);
+  }
+  int layers = 0;
+  const std::vector<AtlasSlot> slots = pack_image_atlas(sizes, side, layers);
+  const int count = std::max(1, layers);
   if (!fits_gl_limits(side, count, owner, error))
     return false;
   make_array(positions_, GL_RGBA32F, side, count);
@@ -238,17 +244,20 @@ bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
         albedo[t] = glm::vec4(image.albedo[t], 1.0f);
     }
     const int n = image.size;
-    glTextureSubImage3D(positions_.id(), 0, 0, 0, GLint(m), n, n, 1, GL_RGBA, GL_FLOAT,
+    const AtlasSlot& s = slots[m];
+    glTextureSubImage3D(positions_.id(), 0, s.x, s.y, s.layer, n, n, 1, GL_RGBA, GL_FLOAT,
                         position.data());
-    glTextureSubImage3D(normals_.id(), 0, 0, 0, GLint(m), n, n, 1, GL_RGBA, GL_FLOAT,
+    glTextureSubImage3D(normals_.id(), 0, s.x, s.y, s.layer, n, n, 1, GL_RGBA, GL_FLOAT,
                         normal.data());
-    glTextureSubImage3D(albedo_.id(), 0, 0, 0, GLint(m), n, n, 1, GL_RGBA, GL_FLOAT, albedo.data());
-    assets_[m].layer = int(m);
+    glTextureSubImage3D(albedo_.id(), 0, s.x, s.y, s.layer, n, n, 1, GL_RGBA, GL_FLOAT,
+                        albedo.data());
+    assets_[m].layer = s.layer;
+    assets_[m].image_origin = glm::ivec2(s.x, s.y);
     assets_[m].image_size = n;
     assets_[m].box = image.box;
     assets_[m].albedo = !image.albedo.empty();
     assets_[m].ray_offset = image.ray_offset;
-    assets_[m].image_bytes = geometry_image_gpu_bytes(side);
+    assets_[m].image_bytes = geometry_image_gpu_bytes(n);
   }
   image_texture_bytes_ = geometry_image_gpu_bytes(side) * size_t(count);
   ++texture_uploads_;

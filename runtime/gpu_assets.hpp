@@ -1,15 +1,16 @@
 #pragma once
 // The scene's mesh assets on the GPU, loaded on demand (a method asks for what it needs):
-//   - geometry images: two GL_TEXTURE_2D_ARRAY RGBA32F textures, layer = asset, texel (i, j) =
-//     P (mesh coordinates) with coverage A in w, and the unit normal; an n x n image fills the
-//     corner [0,n)^2 of its layer;
+//   - geometry images: two GL_TEXTURE_2D_ARRAY RGBA32F textures of layers as large as the largest
+//     image, texel (i, j) of an image at GpuAsset::image_origin + (i, j) of GpuAsset::layer = P
+//     (mesh coordinates) with coverage A in w, and the unit normal; smaller images share layers
+//     (image_atlas.hpp);
 //   - geometry fields: one GL_TEXTURE_2D_ARRAY, a field's K layers in K consecutive array layers,
 //     texel (exit, entry) = the code of the stored uv of the pair's hit (RG8 or RG16 normalised
 //     integers, or RG32F: the contract's gf_decode_field_texel, gfield/gpu_storage.hpp); a
 //     (6N^2)^2 table fills the corner of its layer (3D textures stop at 2048 on Mesa, a 2D array
 //     layer reaches 16384);
-//   - geometry-image albedo: GL_TEXTURE_2D_ARRAY RGBA16F, layer = asset (white for an image
-//     without albedo: GpuAsset::albedo);
+//   - geometry-image albedo: GL_TEXTURE_2D_ARRAY RGBA16F, laid out as the images (white for an
+//     image without albedo: GpuAsset::albedo);
 //   - rasterisation meshes, two per asset: the mesh file as the reference tracer sees it (its
 //     shading normals, its own texture coordinates and base colour: the G-buffer's, the
 //     image-space methods' and the glass method's first hits), and the parameterised mesh
@@ -73,13 +74,14 @@ struct AssetNeeds {
 
 /// Where one asset (one mesh file of the scene) lives on the GPU.
 struct GpuAsset {
-  int layer = -1;            ///< layer in the texture arrays (-1: no geometry image loaded)
-  int image_size = 0;        ///< n of the geometry image
-  int samples_per_side = 0;  ///< N of the field (0: no field loaded)
-  int field_layer = 0;       ///< first layer of the field in the field array
-  int field_layers = 0;      ///< K, the field's layers
-  size_t image_bytes = 0;    ///< GPU bytes of its geometry image (its layers of the arrays)
-  size_t field_bytes = 0;    ///< GPU bytes of its field (its K layers of the field array)
+  int layer = -1;              ///< layer in the texture arrays (-1: no geometry image loaded)
+  int image_size = 0;          ///< n of the geometry image
+  glm::ivec2 image_origin{0};  ///< texel of its corner in the layer (image_atlas.hpp)
+  int samples_per_side = 0;    ///< N of the field (0: no field loaded)
+  int field_layer = 0;         ///< first layer of the field in the field array
+  int field_layers = 0;        ///< K, the field's layers
+  size_t image_bytes = 0;      ///< GPU bytes of its geometry image (its n x n texels of the arrays)
+  size_t field_bytes = 0;      ///< GPU bytes of its field (its K layers of the field array)
   Box box;  ///< the geometry image's box (mesh coordinates), else the mesh file's bounds
   bool albedo = false;               ///< the geometry image holds albedo (in GpuAssets::albedo)
   float ray_offset = kMinRayOffset;  ///< the geometry image's (box diagonals)

@@ -61,6 +61,7 @@ gpu::GpuObject gpu_object(const GpuScene& gpu_scene, int k) {
     g.asset =
         glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, asset.albedo ? 1 : 0);
     g.field = glm::ivec4(asset.field_layer, asset.field_layers, gpu_scene.assets().field_bits(), 0);
+    g.image = glm::ivec4(asset.image_origin, 0, 0);
   }
   return g;
 }

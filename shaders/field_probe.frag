@@ -6,6 +6,7 @@
 layout(binding = UNIT_PROBE_ORIGINS) uniform sampler2D u_ray_origins;
 layout(binding = UNIT_PROBE_DIRECTIONS) uniform sampler2D u_ray_directions;
 uniform ivec3 u_asset;  // image layer, N, image size n (GpuObject.asset)
+uniform ivec2 u_image_origin;  // the image's corner in its layer (GpuObject.image)
 uniform ivec3 u_field;  // first field layer, layers K, bits (GpuObject.field)
 uniform vec3 u_box_min;
 uniform vec3 u_box_max;
@@ -18,7 +19,7 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 origin = texelFetch(u_ray_origins, pixel, 0);
   vec4 direction = texelFetch(u_ray_directions, pixel, 0);
-  gs_select_asset(u_asset, u_field, u_box_min, u_box_max);
+  gs_select_asset(u_asset, u_image_origin, u_field, u_box_min, u_box_max);
   GfHit h = gf_trace(origin.xyz, direction.xyz, origin.w, direction.w, u_mode, u_last);
   o_hit = h.hit ? vec4(1.0f, h.t, h.uv) : vec4(0.0f, 0.0f, -1.0f, -1.0f);
 }

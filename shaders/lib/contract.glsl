@@ -97,7 +97,7 @@ GF_INLINE vec2 gf_decode_field_texel(vec2 texel, int bits) {
   return vec2(gf_decode_field_component(texel.x, bits), gf_decode_field_component(texel.y, bits));
 }
 
-// One scene object (std430, 304 bytes).
+// One scene object (std430, 320 bytes).
 struct GpuObject {
   mat4 to_world;    // object -> world
   mat4 to_object;   // world -> object
@@ -114,6 +114,8 @@ struct GpuObject {
   ivec4 asset;  // mesh: image layer, samples per side N, geometry-image size n, 1 when the
                 // geometry image holds albedo (UNIT_GI_ALBEDO) else 0
   ivec4 field;  // mesh: first layer of its field in the field array, layers K, bits, 0
+  ivec4 image;  // mesh: texel (x, y) of its geometry image's corner in layer asset.x (images
+                // share layers: runtime/image_atlas.hpp), 0, 0
 };
 
 // One light (std430, 48 bytes).

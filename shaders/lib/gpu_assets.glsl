@@ -1,6 +1,6 @@
 // The scene's geometry images and geometry fields on the GPU (runtime/gpu_assets.hpp): four
-// 2D-array textures read with texelFetch (positions, normals, albedo: one layer per geometry
-// image; fields: K consecutive layers per geometry field, its hits along each line, the field's
+// 2D-array textures read with texelFetch (positions, normals, albedo: each geometry image a
+// square of a layer, runtime/image_atlas.hpp; fields: K consecutive layers per geometry field, its hits along each line, the field's
 // uvs as the contract's codes, gf_decode_field_texel). A lookup first selects its asset with
 // gs_select_asset(); the functions that shaders/lib/field_lookup.glsl expects then read that
 // asset's layers.
@@ -13,6 +13,7 @@ layout(binding = UNIT_FIELDS) uniform sampler2DArray u_fields;  // xy uv code, t
 layout(binding = UNIT_GI_ALBEDO) uniform sampler2DArray u_gi_albedo;  // rgb linear albedo
 
 int gs_layer = 0;
+ivec2 gs_image_origin = ivec2(0);
 int gs_samples_per_side = 0;
 int gs_image_size = 2;
 int gs_field_layer = 0;
@@ -21,10 +22,12 @@ int gs_field_bits = 32;
 vec3 gs_box_min = vec3(0.0f);
 vec3 gs_box_max = vec3(1.0f);
 
-// image_layer, samples_per_side, image_size: GpuObject.asset.xyz; field_layer, field_layers,
-// field_bits: GpuObject.field.xyz; the box: GpuObject.box_min/box_max.
-void gs_select_asset(ivec3 asset, ivec3 field, vec3 box_min, vec3 box_max) {
+// image_layer, samples_per_side, image_size: GpuObject.asset.xyz; the image's corner in its
+// layer: GpuObject.image.xy; field_layer, field_layers, field_bits: GpuObject.field.xyz; the box:
+// GpuObject.box_min/box_max.
+void gs_select_asset(ivec3 asset, ivec2 image_origin, ivec3 field, vec3 box_min, vec3 box_max) {
   gs_layer = asset.x;
+  gs_image_origin = image_origin;
   gs_samples_per_side = asset.y;
   gs_image_size = asset.z;
   gs_field_layer = field.x;
@@ -41,14 +44,18 @@ vec2 gf_field_texel(int layer, int entry, int exit) {
   return gf_decode_field_texel(texel, gs_field_bits);
 }
 int gf_image_size() { return gs_image_size; }
+// Texel (i, j) of the selected image (0 <= i, j < n) in its layer.
+ivec3 gs_image_texel(int i, int j) {
+  return ivec3(gs_image_origin + ivec2(i, j), gs_layer);
+}
 vec3 gf_image_position_texel(int i, int j) {
-  return texelFetch(u_gi_positions, ivec3(i, j, gs_layer), 0).xyz;
+  return texelFetch(u_gi_positions, gs_image_texel(i, j), 0).xyz;
 }
 float gf_image_coverage_texel(int i, int j) {
-  return texelFetch(u_gi_positions, ivec3(i, j, gs_layer), 0).w;
+  return texelFetch(u_gi_positions, gs_image_texel(i, j), 0).w;
 }
 vec3 gf_image_normal_texel(int i, int j) {
-  return texelFetch(u_gi_normals, ivec3(i, j, gs_layer), 0).xyz;
+  return texelFetch(u_gi_normals, gs_image_texel(i, j), 0).xyz;
 }
 // The selected asset's albedo at geometry-image uv: bilinear between texel centres, clamped to
 // the edge (gfield::sample_albedo).
@@ -58,10 +65,10 @@ vec3 gs_image_albedo(vec2 uv) {
   vec2 w = p - f;
   ivec2 i0 = clamp(ivec2(f), ivec2(0), ivec2(gs_image_size - 1));
   ivec2 i1 = clamp(ivec2(f) + 1, ivec2(0), ivec2(gs_image_size - 1));
-  vec3 a = texelFetch(u_gi_albedo, ivec3(i0.x, i0.y, gs_layer), 0).rgb;
-  vec3 b = texelFetch(u_gi_albedo, ivec3(i1.x, i0.y, gs_layer), 0).rgb;
-  vec3 c = texelFetch(u_gi_albedo, ivec3(i0.x, i1.y, gs_layer), 0).rgb;
-  vec3 d = texelFetch(u_gi_albedo, ivec3(i1.x, i1.y, gs_layer), 0).rgb;
+  vec3 a = texelFetch(u_gi_albedo, gs_image_texel(i0.x, i0.y), 0).rgb;
+  vec3 b = texelFetch(u_gi_albedo, gs_image_texel(i1.x, i0.y), 0).rgb;
+  vec3 c = texelFetch(u_gi_albedo, gs_image_texel(i0.x, i1.y), 0).rgb;
+  vec3 d = texelFetch(u_gi_albedo, gs_image_texel(i1.x, i1.y), 0).rgb;
   return mix(mix(a, b, w.x), mix(c, d, w.x), w.y);
 }
 

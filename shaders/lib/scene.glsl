@@ -73,8 +73,8 @@ float shadow_epsilon(SceneHit hit) {
 
 // Makes mesh object k's geometry image and field the ones gf_* reads (gs_select_asset).
 void select_mesh(int k) {
-  gs_select_asset(objects[k].asset.xyz, objects[k].field.xyz, objects[k].box_min.xyz,
-                  objects[k].box_max.xyz);
+  gs_select_asset(objects[k].asset.xyz, objects[k].image.xy, objects[k].field.xyz,
+                  objects[k].box_min.xyz, objects[k].box_max.xyz);
 }
 
 // The hit `g` of mesh object k (mesh coordinates, found by select_mesh(k) and gf_*) in world

@@ -254,13 +254,15 @@ TEST(GeometryImage, AutomaticSizeDoublesUntilTheMeanErrorIsReached) {
       std::printf("target %.4g%%: %d^2 mean %.4f%%\n", targets[t], trials[k].size,
                   trials[k].mesh_to_image_mean);
       EXPECT_EQ(trials[k].size, kAutoImageSizes[k]);
-      if (k + 1 < trials.size())
+      if (k + 1 < trials.size()) {
         EXPECT_GT(trials[k].mesh_to_image_mean, targets[t]);
-      else if (trials[k].mesh_to_image_mean > targets[t])
+      } else if (trials[k].mesh_to_image_mean > targets[t]) {
         EXPECT_EQ(trials[k].size, kAutoImageSizes[std::size(kAutoImageSizes) - 1]);
+      }
     }
-    if (trials.size() == 2)
+    if (trials.size() == 2) {
       EXPECT_LT(trials[1].mesh_to_image_mean, 0.5 * trials[0].mesh_to_image_mean);
+    }
     EXPECT_EQ(pm.mesh.triangles.size() * 3, pm.corner_uv.size());
     offsets[t] = image.ray_offset;
   }

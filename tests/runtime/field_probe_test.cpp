@@ -3,6 +3,7 @@
 // two layers stored as RG8, RG16 and RG32F (the CPU reading the same codes), and both against
 // the exact sphere.
 
+#include <algorithm>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -107,28 +108,45 @@ TEST(FieldProbe, GpuLookupAgreesWithCpuLookup) {
   }
 }
 
+/// The same sphere with uv mirrored to (1 - u, 1 - v): texels reversed, field uvs mirrored.
+void mirror_uv(GeometryImage& image, GeometryField& field) {
+  std::reverse(image.position.begin(), image.position.end());
+  std::reverse(image.normal.begin(), image.normal.end());
+  std::reverse(image.coverage.begin(), image.coverage.end());
+  for (glm::vec2& uv : field.uv)
+    if (uv.x >= 0.0f)  // a hit (miss and no-ray codes are negative)
+      uv = glm::vec2(1.0f) - uv;
+}
+
 // Geometry images of different sizes share one texture array sized to the largest (--size auto
-// gives 512^2 and 1024^2 images to the meshes of one scene): the smaller fills its layer's corner.
+// gives 512^2 and 1024^2 images to the meshes of one scene): the smaller ones share a layer, each
+// read from its own square (runtime/image_atlas.hpp).
 TEST(FieldProbe, ImagesOfDifferentSizesShareTheArray) {
   std::string error;
   auto context = GlContext::create_headless(error);
   ASSERT_NE(context, nullptr) << error;
-  GeometryImage small_image, large_image;
-  GeometryField small_field, large_field;
-  test::make_sphere_assets(48, 8, small_image, small_field);
-  test::make_sphere_assets(96, 8, large_image, large_field);
+  const int sizes[3] = {48, 96, 48};
+  GeometryImage images[3];
+  GeometryField fields[3];
+  for (int a = 0; a < 3; ++a)
+    test::make_sphere_assets(sizes[a], 8, images[a], fields[a]);
+  mirror_uv(images[0], fields[0]);  // so that reading one 48^2 image for the other shows
   GpuAssets assets;
-  ASSERT_TRUE(assets.upload({&small_image, &large_image}, {&small_field, &large_field}, 8, error))
+  ASSERT_TRUE(assets.upload({&images[0], &images[1], &images[2]},
+                            {&fields[0], &fields[1], &fields[2]}, 8, error))
       << error;
-  EXPECT_EQ(assets.assets()[0].image_size, 48);
-  EXPECT_EQ(assets.assets()[1].image_size, 96);
+  const std::vector<GpuAsset>& gpu = assets.assets();
+  EXPECT_EQ(gpu[1].layer, 0);  // the 96^2 image fills layer 0, the 48^2 ones share layer 1
+  EXPECT_EQ(gpu[0].layer, 1);
+  EXPECT_EQ(gpu[2].layer, 1);
+  EXPECT_EQ(gpu[0].image_origin, glm::ivec2(0, 0));
+  EXPECT_EQ(gpu[2].image_origin, glm::ivec2(48, 0));
   const std::vector<Ray> rays = test_rays();
-  const GeometryImage* images[2] = {&small_image, &large_image};
-  const GeometryField* fields[2] = {&small_field, &large_field};
-  for (int a = 0; a < 2; ++a) {
-    const GeometryField stored = quantized_field(*fields[a], 8);  // the lookup keeps a pointer
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_EQ(gpu[size_t(a)].image_size, sizes[a]);
+    const GeometryField stored = quantized_field(fields[a], 8);  // the lookup keeps a pointer
     FieldLookup lookup;
-    ASSERT_TRUE(make_field_lookup(stored, *images[a], lookup, error)) << error;
+    ASSERT_TRUE(make_field_lookup(stored, images[a], lookup, error)) << error;
     SCOPED_TRACE("asset " + std::to_string(a));
     expect_gpu_agrees(assets, lookup, rays, 8, a);
   }

@@ -12,7 +12,8 @@ using namespace glm;      // the GLSL vocabulary of contract.glsl
 #include "contract.glsl"  // shaders/lib/ in the source tree, beside this header when installed
 
 // std430 offsets are the C++ ones: every member is 16-byte sized and aligned in both.
-static_assert(sizeof(GpuObject) == 304 && offsetof(GpuObject, kind) == 256 &&
-              offsetof(GpuObject, asset) == 272 && offsetof(GpuObject, field) == 288);
+static_assert(sizeof(GpuObject) == 320 && offsetof(GpuObject, kind) == 256 &&
+              offsetof(GpuObject, asset) == 272 && offsetof(GpuObject, field) == 288 &&
+              offsetof(GpuObject, image) == 304);
 static_assert(sizeof(GpuLight) == 48 && offsetof(GpuLight, color) == 32);
 }  // namespace gfield::gpu
