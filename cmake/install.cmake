@@ -1,7 +1,8 @@
 # What `cmake --install build --prefix P` puts under P (docs/install.md):
 #   bin/gfield, bin/gfield-view
 #   share/gfield/shaders/   the GLSL files (gfield-view finds them at ../share/gfield/shaders)
-#   share/gfield/scenes/    the example scenes; share/gfield/meshes/ the bundled meshes
+#   share/gfield/scenes/    the example scenes; share/gfield/meshes/ the bundled meshes (listed
+#                           below, file by file)
 #   include/gfield/, lib/libgfield_core.a, lib/cmake/gfield/   gfield::core for find_package
 include(CMakePackageConfigHelpers)
 
@@ -11,13 +12,35 @@ set(GFIELD_INSTALL_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/gfield)
 
 install(DIRECTORY shaders/ DESTINATION ${GFIELD_INSTALL_SHADER_DIR}
   FILES_MATCHING PATTERN "*.glsl" PATTERN "*.vert" PATTERN "*.frag")
-install(DIRECTORY data/scenes/ DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/scenes
-  FILES_MATCHING PATTERN "*.json" PATTERN "*.glb")
-# The meshes (with the material libraries and textures of the textured ones) and their sources
-# only: assets that scripts/demo.sh built beside them stay behind.
-install(DIRECTORY data/meshes/ DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/meshes
-  FILES_MATCHING PATTERN "*.obj" PATTERN "*.mtl" PATTERN "*.png" PATTERN "SOURCES.md"
-  PATTERN "*.gimage.obj" EXCLUDE)
+# The example scenes and bundled meshes (with the material libraries and textures of the
+# textured ones and their sources), named one by one: reports, assets and pictures that commands
+# leave beside them (gfield-view builds a glTF scene's assets beside it) are never installed.
+# gfield-shipped-data.txt in the build folder lists them under the prefix: scripts/check-deb.sh
+# checks the package against it, and that it names every file git tracks in data/scenes and
+# data/meshes, so a new scene or mesh cannot be left out unnoticed.
+set(GFIELD_SHIPPED_SCENES
+  davis-wyman-color-chart.json hurley-water-glass.json mirror-torus-instances.json
+  mukai-hollow-cylinder.json mukai-plate-tilt05-w02.json mukai-plate-tilt05-w10.json
+  mukai-plate-tilt30-w02.json mukai-plate-tilt30-w10.json textured-mirror.glb
+  textured-mirror.json two-mirror-spheres.json)
+set(GFIELD_SHIPPED_MESHES
+  SOURCES.md alligator.obj beetle.obj cow.obj fandisk.obj homer.obj rocker-arm.obj
+  spot-painted.mtl spot-painted.obj spot-painted.png spot.obj stanford-bunny.obj suzanne.obj
+  teapot.obj torus.obj woody.obj)
+set(shipped_data "")
+foreach(kind scenes meshes)
+  string(TOUPPER ${kind} KIND)
+  set(files "")
+  foreach(name IN LISTS GFIELD_SHIPPED_${KIND})
+    if(NOT EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/data/${kind}/${name})
+      message(FATAL_ERROR "cmake/install.cmake ships data/${kind}/${name}, which does not exist")
+    endif()
+    list(APPEND files data/${kind}/${name})
+    string(APPEND shipped_data "${GFIELD_INSTALL_SHARE_DIR}/${kind}/${name}\n")
+  endforeach()
+  install(FILES ${files} DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/${kind})
+endforeach()
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/gfield-shipped-data.txt "${shipped_data}")
 
 install(EXPORT gfieldTargets NAMESPACE gfield:: DESTINATION ${GFIELD_INSTALL_CMAKE_DIR})
 configure_package_config_file(cmake/gfieldConfig.cmake.in

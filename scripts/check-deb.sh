@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the Debian package (cpack -G DEB in the build folder) and checks it with dpkg-deb: name,
-# version and architecture, the Depends on the runtime Debian packages, the files it installs.
+# version and architecture, the Depends on the runtime Debian packages, the files it installs
+# (exactly the expected ones: below).
 # Then unpacks it into a temporary root and runs the packaged gfield and gfield-view from there.
 # With --install (as root) it also installs the package with apt, runs the installed commands
 # from /tmp (build spot's assets, render an installed example scene headless) and removes it.
@@ -32,17 +33,37 @@ for p in libc6 libstdc++6 libembree3-3 libopenexr-3-1-30 libtbb12 libgmp10 \
   [[ ", $depends," == *", $p "* || ", $depends," == *", $p,"* ]] || fail "Depends lacks $p"
 done
 
-contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
-for f in ./usr/bin/gfield ./usr/bin/gfield-view ./usr/share/gfield/shaders/lib/field_lookup.glsl \
-  ./usr/share/gfield/meshes/spot.obj ./usr/share/gfield/meshes/SOURCES.md \
-  ./usr/share/gfield/scenes/mirror-torus-instances.json ./usr/include/gfield/field_lookup.hpp \
-  ./usr/lib/libgfield_core.a ./usr/lib/cmake/gfield/gfieldConfig.cmake; do
-  grep -qxF "$f" <<< "$contents" || fail "$f: not in the package"
-done
-if grep -qE '\.exr$|\.gimage\.obj$|^./usr/local' <<< "$contents"; then
-  fail "the package holds built assets or /usr/local paths"
+# The package holds exactly the expected files: the two tools, the core library and its CMake
+# package, core's public headers, the shaders, and the scenes and meshes that cmake/install.cmake
+# names (gfield-shipped-data.txt); anything else (a report or asset left beside an example
+# scene, a stray file) fails, as does an expected file that is missing.
+build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:STRING=//p' "$build/CMakeCache.txt" | tr '[:upper:]' '[:lower:]')
+shipped="$build/gfield-shipped-data.txt"
+[ -s "$shipped" ] || fail "$shipped: missing (configure the build folder again)"
+expected=$(
+  {
+    printf '%s\n' bin/gfield bin/gfield-view lib/libgfield_core.a include/gfield/contract.glsl \
+      lib/cmake/gfield/gfieldConfig.cmake lib/cmake/gfield/gfieldConfigVersion.cmake \
+      lib/cmake/gfield/gfieldTargets.cmake "lib/cmake/gfield/gfieldTargets-$build_type.cmake"
+    (cd core/include && find gfield -type f) | sed 's|^|include/|'
+    (cd shaders && find . -type f \( -name '*.glsl' -o -name '*.vert' -o -name '*.frag' \)) |
+      sed 's|^\./|share/gfield/shaders/|'
+    cat "$shipped"
+  } | sed 's|^|./usr/|' | sort
+)
+contents=$(dpkg-deb -c "$deb" | awk '$6 !~ /\/$/ {print $6}' | sort)
+unexpected=$(comm -13 <(echo "$expected") <(echo "$contents"))
+missing=$(comm -23 <(echo "$expected") <(echo "$contents"))
+[ -z "$unexpected" ] || fail "the package holds files it should not:"$'\n'"$unexpected"
+[ -z "$missing" ] || fail "the package lacks:"$'\n'"$missing"
+# The shipped scenes and meshes are every file git tracks in data/scenes and data/meshes.
+if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
+  tracked=$(git ls-files data/scenes data/meshes | sed 's|^data/|share/gfield/|' | sort)
+  if [ "$tracked" != "$(sort "$shipped")" ]; then
+    fail "cmake/install.cmake's lists differ from the files git tracks in data/ (< tracked, > listed):"$'\n'"$(diff <(echo "$tracked") <(sort "$shipped") | grep '^[<>]')"
+  fi
 fi
-echo "contents: $(grep -c . <<< "$contents") entries, the expected ones present"
+echo "contents: $(grep -c . <<< "$contents") files, exactly the expected ones"
 
 root=$(mktemp -d "${TMPDIR:-/tmp}/gfield-deb.XXXXXX")
 trap 'rm -rf "$root"' EXIT
