@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <limits>
@@ -90,6 +91,19 @@ bool load_exr(const std::string& filename, Image& image, std::string& error) {
   }
 }
 
+/// The fewest bytes a file of the format of `bytes` can hold a width x height picture in: a PNG
+/// at 1 bit per pixel (plus a filter byte per row) deflated at zlib's best ratio; a JPEG at 2
+/// bits per 8x8 block (its shortest DC and end-of-block codes); anything else (HDR) at 3 bytes
+/// per pixel, compressed at kMaxCompressionRatio.
+std::uint64_t min_file_bytes(const stbi_uc* bytes, int size, int width, int height) {
+  const auto w = std::uint64_t(width), h = std::uint64_t(height);
+  if (size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0)
+    return h * ((w + 7) / 8 + 1) / kMaxCompressionRatio;
+  if (size >= 2 && bytes[0] == 0xFF && bytes[1] == 0xD8)
+    return ((w + 7) / 8) * ((h + 7) / 8) / 4;
+  return w * h * 3 / kMaxCompressionRatio;
+}
+
 /// Checks what a PNG, JPEG or HDR header claims (stbi_info) against the limits and the data's
 /// size before stb_image allocates for it.
 bool check_stb_header(const std::string& name, const stbi_uc* bytes, int size, std::string& error) {
@@ -98,11 +112,10 @@ bool check_stb_header(const std::string& name, const stbi_uc* bytes, int size, s
     error = name + ": cannot read image: " + stbi_failure_reason();
     return false;
   }
-  const std::uint64_t raw = std::uint64_t(width) * std::uint64_t(height) * 3;
   if (!check_pixel_count(name, width, height, error)) {
     return false;
   }
-  if (raw / kMaxCompressionRatio > std::uint64_t(size)) {
+  if (min_file_bytes(bytes, size, width, height) > std::uint64_t(size)) {
     error = name + ": header claims " + std::to_string(width) + "x" + std::to_string(height) +
             " pixels, more than the file's " + std::to_string(size) +
             " bytes can hold (truncated or corrupt)";

@@ -337,6 +337,18 @@ TEST(ImageIo, ReadsRadianceHdr) {
   EXPECT_EQ(image.at(1, 0), glm::vec3(0.125f, 0.25f, 1.0f));
 }
 
+TEST(ImageIo, ReadsFlatPngsThatDeflateFarBelowThreeBytesAPixel) {
+  // tests/core/data: all-black PNGs made with Python's zlib at level 9 (1-bit grey 4096^2 in
+  // 2,116 bytes, 8-bit grey 1024^2 in 1,097 bytes), as a screen grab of a black window is.
+  for (const char* name : {"black-1bit-4096.png", "black-8bit-1024.png"}) {
+    Image image;
+    std::string error;
+    ASSERT_TRUE(load_image(std::string(GFIELD_TESTS_DIR) + "/core/data/" + name, image, error))
+        << error;
+    EXPECT_EQ(image.at(image.width - 1, image.height - 1), glm::vec3(0.0f)) << name;
+  }
+}
+
 TEST(Environment, StudioHasStructure) {
   // Checkered floor below, brighter sky above, finite everywhere.
   EXPECT_NE(studio_environment_radiance(glm::normalize(glm::vec3(0.2f, -1, 0.2f))),
