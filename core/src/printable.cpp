@@ -1,6 +1,8 @@
 #include "gfield/printable.hpp"
 
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 
 namespace gfield {
 namespace {
@@ -71,6 +73,16 @@ std::string printable(std::string_view text) {
     ++i;
   }
   return out;
+}
+
+std::string float_text(float value) {
+  char text[32] = "";
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(text, sizeof(text), "%.*g", digits, double(value));
+    if (std::strtof(text, nullptr) == value)
+      break;
+  }
+  return text;
 }
 
 }  // namespace gfield

@@ -12,6 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "gfield/camera_text.hpp"
 #include "gfield/file_read.hpp"
 #include "gfield/image.hpp"
 #include "gfield/limits.hpp"
@@ -226,16 +227,9 @@ Camera read_camera(const Reader& r, const std::string& p) {
   c.target = r.vec3(p, "target", c.target);
   c.up = r.vec3(p, "up", c.up);
   c.fov_degrees = float(r.number(p, "fov", c.fov_degrees));
-  if (!(c.fov_degrees > 0.0f && c.fov_degrees < 180.0f)) {
-    throw SceneError{json_pointer_child(p, "fov"),
-                     "vertical field of view must be in (0, 180) degrees"};
-  }
-  const glm::vec3 forward = c.target - c.position;
-  if (glm::length(forward) <= 0.0f)
-    throw SceneError{p, "camera position and target coincide"};
-  if (glm::length(glm::cross(forward, c.up)) <= 1e-6f * glm::length(forward) * glm::length(c.up)) {
-    throw SceneError{json_pointer_child(p, "up"), "up is zero or parallel to the view direction"};
-  }
+  std::string key;
+  if (const std::string problem = camera_problem(c, &key); !problem.empty())
+    throw SceneError{key.empty() ? p : json_pointer_child(p, key), problem};
   return c;
 }
 

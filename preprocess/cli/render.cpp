@@ -1,5 +1,5 @@
 // gfield render SCENE.json -o OUT.exr|png [--spp 8] [--depth 10] [--dielectric MODE] [--size WxH]
-// [--seed N | --strata-centres]: the reference ray tracer.
+// [--camera ...] [--seed N | --strata-centres]: the reference ray tracer.
 
 #include <unistd.h>
 
@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "geometry/scene_file.hpp"
+#include "gfield/camera_text.hpp"
 #include "gfield/image.hpp"
 #include "gfield/scene.hpp"
 #include "preprocess/cli/commands.hpp"
@@ -26,6 +27,7 @@ struct RenderArgs {
   int depth = 10;
   std::string dielectric = "full";
   std::string size;
+  std::string camera;
   std::uint64_t seed = 1;
   bool strata_centres = false;
   bool quiet = false;
@@ -72,6 +74,8 @@ void run_render(const RenderArgs& args) {
   if (!load_scene_file(args.scene, scene, warnings, error))
     throw CommandError(error);
   print_warnings(warnings);
+  if (!args.camera.empty() && !parse_camera_text(args.camera, scene.camera, error))
+    throw CommandError("--camera " + args.camera + ": " + error);
   const int width = options.width > 0 ? options.width : scene.width;
   const int height = options.height > 0 ? options.height : scene.height;
   const RenderBudget budget = estimate_render(width, height, options.samples_per_pixel);
@@ -127,6 +131,9 @@ void add_render_command(CLI::App& app) {
                   "full | refract-only | tir-only (reflected rays only under TIR)")
       ->capture_default_str();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT, overrides the scene's image size");
+  cmd->add_option("--camera", args->camera,
+                  "EX,EY,EZ,TX,TY,TZ[,UX,UY,UZ[,FOV]]: eye, target, up, vertical field of view in "
+                  "degrees, overrides the scene's camera (gfield-view's screenshots print theirs)");
   cmd->add_option("--seed", args->seed, "seed of the sample jitter")->capture_default_str();
   cmd->add_flag("--strata-centres", args->strata_centres,
                 "no jitter: samples at the strata centres (1 spp: the pixel centre), the positions "

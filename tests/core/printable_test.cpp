@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <nlohmann/json.hpp>
 
 namespace gfield {
@@ -28,6 +30,18 @@ TEST(Printable, AlwaysGivesOneLineThatJsonCanDump) {
   const std::string text = printable(every_byte);
   EXPECT_EQ(text.find('\n'), std::string::npos);
   EXPECT_NO_THROW((void)nlohmann::json(text).dump());
+}
+
+TEST(Printable, FloatTextIsTheShortestThatReadsBack) {
+  EXPECT_EQ(float_text(0.005f), "0.005");
+  EXPECT_EQ(float_text(42.0f), "42");
+  EXPECT_EQ(float_text(-0.0f), "-0");
+  EXPECT_EQ(float_text(1e-30f), "1e-30");
+  for (float v : {3.20000005f, 0.1f, 1.0f / 3.0f, 16777217.0f, 3.4e38f, 1.17549435e-38f}) {
+    const std::string text = float_text(v);
+    EXPECT_EQ(std::strtof(text.c_str(), nullptr), v) << text;
+    EXPECT_LE(text.size(), 15u) << text;
+  }
 }
 
 }  // namespace

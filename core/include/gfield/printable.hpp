@@ -12,4 +12,8 @@ namespace gfield {
 /// string nlohmann::json can dump. Valid UTF-8 text without control characters comes back as is.
 std::string printable(std::string_view text);
 
+/// The shortest decimal text ("%.{1..9}g") that strtof reads back as exactly `value` (0.005f is
+/// "0.005", not "0.00499999989"): numbers printed for a command line that must give them back.
+std::string float_text(float value);
+
 }  // namespace gfield
