@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "gfield/camera_text.hpp"
 #include "gfield/printable.hpp"
 #include "gfield/scene.hpp"
 #include "runtime/gl_context.hpp"
@@ -39,6 +40,7 @@ int fail(const std::string& message) {
 
 struct Arguments {
   std::string scene_file, size_text, shader_dir = default_shader_dir().string(), asset_dir;
+  std::string camera_text;
   bool headless = false;
   HeadlessOptions headless_options;
 };
@@ -52,16 +54,22 @@ void add_common_options(CLI::App& app, Arguments& a) {
                  "Scene file (JSON, docs/scenes.md, or glTF 2.0: .gltf, .glb)")
       ->required();
   app.add_option("--method", h.method, "Rendering method: " + methods)
-      ->check(CLI::IsMember(method_names()));
+      ->check(CLI::IsMember(method_names()))
+      ->capture_default_str();
   app.add_flag("--headless", a.headless, "Render without a window (EGL, no X) and exit");
   app.add_option("--out,-o", h.out, "Headless: write the picture to IMG.png or IMG.exr");
   app.add_option("--size", a.size_text, "Picture size WxH (default: the scene's)");
+  app.add_option("--camera", a.camera_text,
+                 "Camera EX,EY,EZ,TX,TY,TZ[,UX,UY,UZ[,FOV]]: eye, target, up, vertical field of "
+                 "view in degrees (default: the scene's; a screenshot (key p) prints its own)");
   app.add_option("--spp", h.samples_per_pixel,
                  "Samples per pixel, stratified, at the strata centres (every method)")
-      ->check(CLI::Range(1, 256));
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
   app.add_option("--frames", h.frames,
                  "Headless: frames to render (timings average all but the first)")
-      ->check(CLI::Range(1, 100000));
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
   app.add_flag("--bench", h.bench, "Headless: print ms per frame, the GL renderer and counts");
   app.add_option("--side-by-side", h.side_by_side,
                  "Headless: draw this second method to the right of the first")
@@ -71,7 +79,8 @@ void add_common_options(CLI::App& app, Arguments& a) {
       ->check(CLI::ExistingFile);
   app.add_option("--diff", h.difference,
                  "Headless: write the error heat map against --reference here (.png/.exr)");
-  app.add_option("--diff-scale", h.difference_scale, "Error shown white in the heat map");
+  app.add_option("--diff-scale", h.difference_scale, "Error shown white in the heat map")
+      ->capture_default_str();
   app.add_option("--shaders", a.shader_dir,
                  "Folder of the GLSL shaders (default: $GFIELD_SHADER_DIR, else "
                  "../share/gfield/shaders beside the executable, else the source tree's)")
@@ -91,6 +100,8 @@ std::string check_arguments(Arguments& a, Scene& scene) {
   if (!std::filesystem::is_regular_file(std::filesystem::path(a.shader_dir) / "field_trace.frag"))
     return a.shader_dir +
            ": no gfield shaders here (field_trace.frag); set --shaders DIR or GFIELD_SHADER_DIR";
+  if (!a.camera_text.empty() && !parse_camera_text(a.camera_text, scene.camera, error))
+    return "--camera " + a.camera_text + ": " + error;
   HeadlessOptions& h = a.headless_options;
   h.width = scene.width;
   h.height = scene.height;
@@ -128,6 +139,11 @@ int main(int argc, char** argv) {
     return fail(error);
   if (a.headless)
     return run_headless(session, scene, a.shader_dir, a.headless_options);
-  return run_viewer(session, scene, a.shader_dir, session.find(a.headless_options.method),
-                    a.headless_options.width, a.headless_options.height);
+  ViewerOptions viewer;
+  viewer.method = session.find(a.headless_options.method);
+  viewer.width = a.headless_options.width;
+  viewer.height = a.headless_options.height;
+  viewer.command =
+      "gfield-view " + a.scene_file + (a.asset_dir.empty() ? "" : " --assets " + a.asset_dir);
+  return run_viewer(session, scene, a.shader_dir, viewer);
 }

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "gfield/printable.hpp"
 #include "runtime/supersample.hpp"
 
 namespace gfield {
@@ -104,6 +105,33 @@ void add_frame_time(FrameStats* stats, const Stopwatch& clock, const std::string
     return;
   stats->milliseconds += timed_ms(true, clock);
   stats->add_part(part, part_ms);
+}
+
+std::string option_value_text(const MethodOption& o) {
+  switch (o.kind) {
+    case MethodOption::Kind::kInt:
+      return std::to_string(*o.int_value);
+    case MethodOption::Kind::kFloat:
+      return float_text(*o.float_value);
+    case MethodOption::Kind::kFlag:
+      return *o.flag_value == o.flag_sets ? "on" : "off";
+    case MethodOption::Kind::kChoice:
+      return o.choices[size_t(o.get_choice())];
+  }
+  return "";
+}
+
+std::string option_arguments(Method& method) {
+  std::string words;
+  for (const MethodOption& o : method.options()) {
+    const std::string value = option_value_text(o);
+    if (o.kind == MethodOption::Kind::kFlag && value == "off")
+      continue;
+    words += (words.empty() ? "--" : " --") + o.name;
+    if (o.kind != MethodOption::Kind::kFlag)
+      words += " " + value;
+  }
+  return words;
 }
 
 bool reload_programs_if_changed(const std::vector<ShaderProgram*>& programs, std::string& error) {

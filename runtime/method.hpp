@@ -133,6 +133,13 @@ double timed_ms(bool timed, const Stopwatch& clock);
 void add_frame_time(FrameStats* stats, const Stopwatch& clock, const std::string& part,
                     double part_ms);
 
+/// The current value of option `o` as a command-line word ("refined", "4", "0.005"); for a flag,
+/// "on" when `--NAME` is in effect, else "off".
+std::string option_value_text(const MethodOption& o);
+/// The command-line words that set `method`'s options to their current values (e.g. "--mode
+/// refined --depth 4 --min-weight 0.005"; a flag only where it is in effect).
+std::string option_arguments(Method& method);
+
 /// Rebuilds every program in `programs` whose files changed (the Method contract).
 bool reload_programs_if_changed(const std::vector<ShaderProgram*>& programs, std::string& error);
 

@@ -82,8 +82,13 @@ void add_method_options(CLI::App& app, const std::vector<Method*>& methods) {
       it->second.methods += (it->second.methods.empty() ? "" : ", ") + method->info().name;
     }
   }
-  for (const std::string& name : order)
-    add_shared(app, shared[name])->group("Options of " + shared[name].methods);
+  for (const std::string& name : order) {
+    const MethodOption& first = shared[name].first;
+    CLI::Option* option =
+        add_shared(app, shared[name])->group("Options of " + shared[name].methods);
+    if (first.kind != MethodOption::Kind::kFlag)
+      option->default_str(option_value_text(first));
+  }
 }
 
 }  // namespace gfield

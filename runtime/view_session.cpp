@@ -56,6 +56,7 @@ bool ViewSession::select_compare(int index, std::string& error) {
 }
 
 void ViewSession::scene_changed() {
+  ++revision_;
   scene_.update();
   for (size_t k = 0; k < methods_.size(); ++k)
     if (loaded_[k])
@@ -111,6 +112,8 @@ bool ViewSession::reload_shaders_if_changed(std::string& error) {
     rebuilt |= methods_[k]->reload_shaders_if_changed(method_error);
     error += method_error;
   }
+  if (rebuilt)
+    ++revision_;
   return rebuilt && error.empty();
 }
 

@@ -56,7 +56,13 @@ class ViewSession {
   void release();
 
   /// The reference picture for the difference (linear radiance, rows top to bottom).
-  void set_reference(Image reference) { reference_ = std::move(reference); }
+  void set_reference(Image reference) {
+    reference_ = std::move(reference);
+    ++revision_;
+  }
+  /// Counts the changes a picture depends on that its methods' options do not show: scene
+  /// edits, a new reference, rebuilt shaders.
+  int revision() const { return revision_; }
   bool difference = false;
   float difference_scale = 0.25f;  ///< error shown white
   const std::string& difference_message() const { return difference_message_; }
@@ -74,6 +80,7 @@ class ViewSession {
   Framebuffer second_;
   Image reference_;
   std::string difference_message_;
+  int revision_ = 0;
 };
 
 }  // namespace gfield

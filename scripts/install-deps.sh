@@ -8,7 +8,9 @@ packages=(
   libcgal-dev libembree-dev libopenexr-dev libtbb-dev libeigen3-dev
   libglfw3-dev libglm-dev libepoxy-dev libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libimgui-dev libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev
-  libgtest-dev libbenchmark-dev xvfb
+  libgtest-dev libbenchmark-dev
+  # the viewer's window test (tests/window/): an X server, synthetic input, screen grabs
+  xvfb xdotool imagemagick
   # the Slurm test (tests/slurm/): a one-node cluster; Debian's packages start no daemon
   # where there is no systemd (the test starts its own on 127.0.0.1)
   slurmctld slurmd slurm-client munge jq
