@@ -171,27 +171,30 @@ bool write_image_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
   return true;
 }
 
-}  // namespace
+/// `error` with the build folder's file names replaced by the asset's (a full disk names the
+/// file the user asked for, not where it was being written).
+std::string with_asset_names(std::string error, const AssetFiles& staged, const AssetFiles& files) {
+  const std::pair<const std::string*, const std::string*> names[] = {
+      {&staged.parameterized_mesh, &files.parameterized_mesh},
+      {&staged.image, &files.image},
+      {&staged.field, &files.field},
+      {&staged.report, &files.report}};
+  for (const auto& [from, to] : names) {
+    for (size_t at = error.find(*from); at != std::string::npos;
+         at = error.find(*from, at + to->size())) {
+      error.replace(at, from->size(), *to);
+    }
+  }
+  return error;
+}
 
-bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
-                 const BuildInputs& inputs, nlohmann::json& report, std::string& error) {
-  Stopwatch watch;
-  if (options.samples_per_side < kMinSamplesPerSide ||
-      options.samples_per_side > kMaxSamplesPerSide || options.field_layers < kAutoLayers ||
-      options.field_layers > kMaxFieldLayers) {
-    return check_field_size(options.samples_per_side, options.field_layers, true, error);
-  }
-  TriangleMesh mesh;
-  MeshAppearance appearance;
-  std::vector<std::string> warnings;
-  if (!load_mesh(MeshSource{mesh_path, options.part}, mesh, &appearance, warnings, error)) {
-    return false;
-  }
-  AssetStaging staging;
-  if (!staging.open(name, error)) {
-    return false;
-  }
-  const AssetFiles& staged = staging.staged();
+/// Writes the asset's four files into `staged` (the build folder): the parts of build_asset
+/// after the mesh is read.
+bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearance,
+                       const std::vector<std::string>& warnings, const std::string& mesh_path,
+                       const std::string& name, const AssetOptions& options,
+                       const BuildInputs& inputs, const AssetFiles& staged, const Stopwatch& watch,
+                       nlohmann::json& report, std::string& error) {
   const AssetFiles files = asset_files(name);
   report = nlohmann::json::object();
   report["mesh"] = printable(std::filesystem::path(mesh_path).filename().string());
@@ -240,7 +243,36 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
                      {"geometry_image_bytes", size_t(std::filesystem::file_size(staged.image, ec))},
                      {"geometry_field_bytes", field_report.file_bytes}};
   report["seconds"] = watch.seconds();
-  return write_text_file(staged.report, report.dump(2) + "\n", error) && staging.publish(error);
+  return write_text_file(staged.report, report.dump(2) + "\n", error);
+}
+
+}  // namespace
+
+bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
+                 const BuildInputs& inputs, nlohmann::json& report, std::string& error) {
+  Stopwatch watch;
+  if (options.samples_per_side < kMinSamplesPerSide ||
+      options.samples_per_side > kMaxSamplesPerSide || options.field_layers < kAutoLayers ||
+      options.field_layers > kMaxFieldLayers) {
+    return check_field_size(options.samples_per_side, options.field_layers, true, error);
+  }
+  TriangleMesh mesh;
+  MeshAppearance appearance;
+  std::vector<std::string> warnings;
+  if (!load_mesh(MeshSource{mesh_path, options.part}, mesh, &appearance, warnings, error)) {
+    return false;
+  }
+  AssetStaging staging;
+  if (!staging.open(name, error)) {
+    return false;
+  }
+  if (!write_asset_files(mesh, appearance, warnings, mesh_path, name, options, inputs,
+                         staging.staged(), watch, report, error) ||
+      !staging.publish(error)) {
+    error = with_asset_names(error, staging.staged(), asset_files(name));
+    return false;
+  }
+  return true;
 }
 
 }  // namespace gfield

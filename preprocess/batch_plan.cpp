@@ -145,13 +145,15 @@ bool prepare_output_folder(const std::string& dir, std::string& error) {
     error = dir + ": cannot create the output folder (" + ec.message() + ")";
     return false;
   }
-  const std::string probe = (fs::path(dir) / kPublishLockFile).string();
-  const int fd = ::open(probe.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  const std::string probe =
+      (fs::path(dir) / (".gfield-write-probe-" + std::to_string(::getpid()))).string();
+  const int fd = ::open(probe.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0) {
     error = dir + ": the output folder is not writable (" + std::strerror(errno) + ")";
     return false;
   }
   ::close(fd);
+  ::unlink(probe.c_str());
   return true;
 }
 
