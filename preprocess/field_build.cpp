@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <vector>
@@ -40,8 +41,10 @@ using PerThread =
 /// The bilinear patch of an n^2 image under `uv`: its lower-left texel; x = uv in texel-centre
 /// coordinates, clamped to the grid.
 glm::ivec2 patch_under(int n, glm::vec2 uv, glm::vec2& x) {
-  x = glm::clamp(uv * float(n) - 0.5f, glm::vec2(0.0f), glm::vec2(float(n - 1)));
-  return glm::min(glm::ivec2(glm::floor(x)), glm::ivec2(n - 2));
+  for (int a = 0; a < 2; ++a) {  // a NaN uv (float barycentrics underflowed) reads patch 0
+    x[a] = std::isnan(uv[a]) ? 0.0f : std::clamp(uv[a] * float(n) - 0.5f, 0.0f, float(n - 1));
+  }
+  return glm::clamp(glm::ivec2(glm::floor(x)), glm::ivec2(0), glm::ivec2(n - 2));
 }
 
 /// True when the bilinear patch under `uv` has all 4 texels covered (`patches`:

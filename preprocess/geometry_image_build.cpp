@@ -5,12 +5,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <unordered_map>
+
+#include <glm/gtx/component_wise.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include "geometry/edge_key.hpp"
 #include "geometry/outward_normals.hpp"
+#include "gfield/limits.hpp"
 #include "gfield/stopwatch.hpp"
 #include "preprocess/chart_split.hpp"
 #include "preprocess/cut_graph.hpp"
@@ -295,6 +299,39 @@ TriangleMesh geometry_image_surface(const GeometryImage& image) {
 namespace {
 
 /// False with an error for an image size or face count outside the documented limits.
+/// "1e-15"-style text of a length.
+std::string length_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3g", value);
+  return text;
+}
+
+/// The mesh's size and place are within what float casts and float positions resolve
+/// (kMinAssetDiagonal, kMaxAssetDiagonal, kMaxAssetOffsetRatio); else `error` says why.
+bool check_mesh_extent(const TriangleMesh& mesh, std::string& error) {
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const glm::dvec3& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const double diagonal = glm::length(hi - lo);
+  const double offset = std::max(glm::compMax(glm::abs(lo)), glm::compMax(glm::abs(hi)));
+  if (!(diagonal >= kMinAssetDiagonal && diagonal <= kMaxAssetDiagonal)) {
+    error = "the mesh is " + length_text(diagonal) + " units across (its bounding box's " +
+            "diagonal): float casts lose a surface outside [" + length_text(kMinAssetDiagonal) +
+            ", " + length_text(kMaxAssetDiagonal) + "] (scale the mesh)";
+    return false;
+  }
+  if (offset > kMaxAssetOffsetRatio * diagonal) {
+    error = "the mesh is " + length_text(diagonal) + " units across but " + length_text(offset) +
+            " from the origin: float positions there are " + length_text(offset * 0x1p-23) +
+            " apart (at most " + length_text(kMaxAssetOffsetRatio) +
+            " times its size from the origin is accepted; move it towards the origin)";
+    return false;
+  }
+  return true;
+}
+
 bool check_build_input(const TriangleMesh& input, const GeometryImageOptions& options,
                        std::string& error) {
   if (options.size != kAutoImageSize &&
@@ -318,7 +355,7 @@ bool check_build_input(const TriangleMesh& input, const GeometryImageOptions& op
     error = "the mesh has no faces";
     return false;
   }
-  return true;
+  return check_mesh_extent(input, error);
 }
 
 /// Repairs `input` and splits it into components (the largest only, unless all are asked for).

@@ -573,6 +573,24 @@ nlohmann::json reference_report(const Reference& reference, const EmbreeMesh& em
   return r;
 }
 
+/// A field that cannot see its mesh is an error, not 100% agreement: none of the table's exact
+/// casts hits the mesh (float casts cannot resolve it), or they do and none of its entries does.
+/// (The box bounds the mesh, so 100 random box rays always cross some of its surface.)
+bool check_field_sees_mesh(const nlohmann::json& table, const std::string& field_file,
+                           std::string& error) {
+  const size_t rays = table["rays"], exact = table["exact_hits"], answers = table["answer_hits"];
+  if (rays < 100 || (exact > 0 && answers > 0))
+    return true;
+  const std::string of_rays = std::to_string(rays) + " box rays";
+  if (exact == 0)
+    error =
+        field_file + ": no exact cast of " + of_rays + " hits the mesh: float casts cannot see it";
+  else
+    error = field_file + ": the field has no hit where exact casts hit the mesh (" +
+            std::to_string(exact) + " of " + of_rays + ")";
+  return false;
+}
+
 }  // namespace
 
 bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,
@@ -638,6 +656,8 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   if (original.file.empty()) {
     report["original_note"] = "original mesh file not found (use --original)";
   }
+  if (!check_field_sees_mesh(report["references"][0]["table"], shown.field, error))
+    return false;
   return true;
 }
 
