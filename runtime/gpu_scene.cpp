@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -9,6 +10,7 @@
 #include "geometry/analytic_primitives.hpp"
 #include "gfield/environment.hpp"
 #include "gfield/gpu_contract.hpp"
+#include "gfield/printable.hpp"
 #include "runtime/supersample.hpp"
 
 namespace gfield {
@@ -228,17 +230,54 @@ void set_camera_uniforms(const ShaderProgram& program, const Camera& camera, int
   glUniform2f(program.uniform("u_jitter"), jitter.x, jitter.y);
 }
 
-CameraFrustum camera_frustum(const Camera& camera, int width, int height, float extent,
+glm::vec2 depth_range(glm::vec3 eye, const GpuScene& scene, float edge_cosine, int skip) {
+  const glm::dvec3 p(eye);
+  double nearest = std::numeric_limits<double>::max(), farthest = 0.0;
+  bool inside = false;
+  for (int k = 0; k < int(scene.scene().objects.size()); ++k) {
+    if (k == skip)
+      continue;
+    glm::vec3 lo, hi;
+    scene.object_world_bounds(k, lo, hi);
+    const glm::dvec3 below = glm::dvec3(lo) - p, above = glm::dvec3(hi) - p;
+    const double to_box = glm::length(glm::max(glm::max(below, -above), 0.0));
+    farthest = std::max(farthest, glm::length(glm::max(glm::abs(below), glm::abs(above))));
+    if (to_box > 0.0)
+      nearest = std::min(nearest, to_box);
+    else
+      inside = true;
+  }
+  const double far_plane = std::max(1.01 * farthest, 1e-3);
+  double near_plane = std::min(0.5 * double(edge_cosine) * nearest, 0.5 * far_plane);
+  if (inside || nearest == std::numeric_limits<double>::max())
+    near_plane = std::min(near_plane, 1e-4 * far_plane);
+  return glm::vec2(float(std::max(near_plane, 1e-7 * far_plane)), float(far_plane));
+}
+
+CameraFrustum camera_frustum(const Camera& camera, int width, int height, const GpuScene& scene,
                              glm::vec2 jitter) {
   CameraFrustum f;
-  f.far_plane = 4.0f * extent + glm::length(camera.target - camera.position);
-  f.near_plane = 1e-4f * f.far_plane;
+  // The view's edge direction: a point at distance d there is at depth d cos(angle).
+  const double tan_half = std::tan(glm::radians(double(camera.fov_degrees)) * 0.5);
+  const double sides = double(width) / double(height);
+  const double edge = std::atan(tan_half * std::sqrt(1.0 + sides * sides));
+  const glm::vec2 range = depth_range(camera.position, scene, float(std::cos(edge)));
+  f.near_plane = range.x;
+  f.far_plane = range.y;
   f.view = glm::lookAt(camera.position, camera.target, camera.up);
   const float aspect = float(width) / float(height);
   f.projection = jittered_projection(
       glm::perspective(glm::radians(camera.fov_degrees), aspect, f.near_plane, f.far_plane), jitter,
       width, height);
   return f;
+}
+
+std::string camera_resolution_problem(const Camera& camera) {
+  if (camera.fov_degrees >= kMinViewFovDegrees)
+    return "";
+  return "the camera's field of view of " + float_text(camera.fov_degrees) +
+         " degrees is narrower than gfield-view's float rendering resolves (at least " +
+         float_text(kMinViewFovDegrees) + " degrees; gfield render takes any)";
 }
 
 bool upload_environment_texture(const EnvironmentDesc& desc, GlTexture& texture,

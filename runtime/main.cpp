@@ -92,21 +92,15 @@ void add_common_options(CLI::App& app, Arguments& a) {
                  "of glTF meshes are built there on demand (default: beside the glTF file)");
 }
 
-/// Checks what the options say against each other and the files; "" when all is well.
-std::string check_arguments(Arguments& a, Scene& scene) {
-  std::string error;
-  if (!load_view_scene(a.scene_file, a.asset_dir, scene, error))
-    return error;
+/// Checks what the options say against each other, before anything is loaded (a glTF scene's
+/// assets may take a minute to build); "" when all is well.
+std::string check_options(Arguments& a) {
+  HeadlessOptions& h = a.headless_options;
+  if (!a.size_text.empty() && !parse_size(a.size_text, h.width, h.height))
+    return "--size " + a.size_text + ": expected WxH with 1..16384 pixels per side";
   if (!std::filesystem::is_regular_file(std::filesystem::path(a.shader_dir) / "field_trace.frag"))
     return a.shader_dir +
            ": no gfield shaders here (field_trace.frag); set --shaders DIR or GFIELD_SHADER_DIR";
-  if (!a.camera_text.empty() && !parse_camera_text(a.camera_text, scene.camera, error))
-    return "--camera " + a.camera_text + ": " + error;
-  HeadlessOptions& h = a.headless_options;
-  h.width = scene.width;
-  h.height = scene.height;
-  if (!a.size_text.empty() && !parse_size(a.size_text, h.width, h.height))
-    return "--size " + a.size_text + ": expected WxH with 1..16384 pixels per side";
   if (!a.headless)
     return "";
   if (h.out.empty() && !h.bench)
@@ -115,6 +109,25 @@ std::string check_arguments(Arguments& a, Scene& scene) {
   if (!h.out.empty() && ext != ".png" && ext != ".exr")
     return h.out + ": the picture must be .png or .exr";
   return "";
+}
+
+/// Loads the scene and checks the view against it; "" when all is well.
+std::string load_and_check_scene(Arguments& a, Scene& scene) {
+  std::string error;
+  if (!load_view_scene(a.scene_file, a.asset_dir, scene, error))
+    return error;
+  if (!a.camera_text.empty() && !parse_camera_text(a.camera_text, scene.camera, error))
+    return "--camera " + a.camera_text + ": " + error;
+  HeadlessOptions& h = a.headless_options;
+  if (a.size_text.empty()) {
+    h.width = scene.width;
+    h.height = scene.height;
+  }
+  const std::string problem = camera_resolution_problem(scene.camera);
+  if (problem.empty())
+    return "";
+  return a.camera_text.empty() ? a.scene_file + ": /camera/fov: " + problem
+                               : "--camera " + a.camera_text + ": " + problem;
 }
 
 }  // namespace
@@ -135,7 +148,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   Scene scene;
-  if (const std::string error = check_arguments(a, scene); !error.empty())
+  std::string error = check_options(a);
+  if (error.empty())
+    error = load_and_check_scene(a, scene);
+  if (!error.empty())
     return fail(error);
   if (a.headless)
     return run_headless(session, scene, a.shader_dir, a.headless_options);

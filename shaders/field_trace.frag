@@ -46,7 +46,7 @@ void push_ray(SceneHit hit, vec3 g, vec3 direction, vec3 weight, int depth, int 
   if (max(weight.r, max(weight.g, weight.b)) < u_min_weight) return;
   if (stack_count >= STACK_SIZE) return;
   PathRay r;
-  r.origin = hit.position + object_epsilon(hit.object, false) * g;
+  r.origin = hit.position + object_epsilon(hit.object, false, hit.position) * g;
   r.direction = normalize(direction);
   r.weight = weight;
   r.depth = depth;
@@ -123,7 +123,7 @@ void main() {
     hit.normal = g_normal.xyz;
     hit.uv = vec2(g_normal.w, g_geometric.w);
     hit.albedo = texelFetch(u_g_albedo, pixel, 0).rgb;
-    hit.self_offset = object_epsilon(first, true);
+    hit.self_offset = object_epsilon(first, true, hit.position);
     shade_hit(hit, g_geometric.xyz, camera, radiance);
     while (stack_count > 0 && traced < u_max_rays) {
       stack_count--;

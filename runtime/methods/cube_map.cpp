@@ -1,5 +1,7 @@
 #include "runtime/methods/cube_map.hpp"
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gfield/gpu_contract.hpp"
@@ -56,7 +58,8 @@ void CubeMapMethod::render_cube_map(int object, int size) {
   const glm::vec3 directions[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                    {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
   const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-  const float near_plane = 1e-3f * scene.extent(), far_plane = 4.0f * scene.extent();
+  const glm::vec2 range = depth_range(centre, scene, 1.0f / std::sqrt(3.0f), object);
+  const float near_plane = range.x, far_plane = range.y;
   const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, near_plane, far_plane);
   ImageSpaceView view;
   view.position = centre;

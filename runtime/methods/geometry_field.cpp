@@ -68,7 +68,7 @@ void GeometryFieldMethod::render_gbuffer(const Camera& camera, int width, int he
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
-  const CameraFrustum f = camera_frustum(camera, width, height, scene_->extent(), jitter);
+  const CameraFrustum f = camera_frustum(camera, width, height, *scene_, jitter);
   const glm::mat4 view_projection = f.projection * f.view;
   glUseProgram(gbuffer_program_.id());
   scene_->bind();

@@ -376,7 +376,7 @@ void GlassMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 ji
   const std::vector<int> classes =
       classes_present(glass, camera, float(width) / float(height), settings_.trace_verge);
   class_images_.ensure(width, height, int(classes.size()));
-  const CameraFrustum frustum = camera_frustum(camera, width, height, extent_, jitter);
+  const CameraFrustum frustum = camera_frustum(camera, width, height, *scene_, jitter);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   int layer_of_class[kGlassClasses];

@@ -96,7 +96,7 @@ ImageSpaceView ImageSpacePasses::camera_view(const Camera& camera, int width, in
   ImageSpaceView view;
   view.width = width;
   view.height = height;
-  const CameraFrustum f = camera_frustum(camera, width, height, scene_->extent(), jitter);
+  const CameraFrustum f = camera_frustum(camera, width, height, *scene_, jitter);
   view.near_far = glm::vec2(f.near_plane, f.far_plane);
   view.position = camera.position;
   view.forward = glm::normalize(camera.target - camera.position);

@@ -46,8 +46,17 @@ SceneHit scene_miss() {
   return h;
 }
 
+// Offset of rays leaving world point `p` of analytic shape k: beyond the float error of the
+// intersection, which grows with the coordinates involved (the point's distance from the origin
+// and from the shape's centre: a quad 1e6 wide is exact near its centre), not with the scene's
+// extent (1e-5 of it lost the shadows on a floor of 1e4).
+float analytic_epsilon(int k, vec3 p) {
+  return 1.0e-4f * (length(p) + distance(p, objects[k].to_world[3].xyz)) +
+         1.0e-9f * objects[k].absorption.w;
+}
+
 // Offset of rays leaving a surface point of object k (scene units). A ray starts 1e-4 of a mesh's
-// size (1e-5 of the scene for analytic shapes) off the surface along its normal (a larger start
+// size (for analytic shapes analytic_epsilon) off the surface along its normal (a larger start
 // offset moves the paths: 1e-3 cost the glass spot 2.6 dB against the reference tracer); the
 // lookup of the mesh it leaves starts `object_epsilon(k, rasterised)` off the surface and looks
 // beyond 2 of them (SceneHit.self_offset, intersect_self). A point found by a field lookup lies
@@ -55,8 +64,8 @@ SceneHit scene_miss() {
 // G-buffer's first hits) lies off the image by the image's deviation from the mesh, through which
 // the lookup would find the surface the ray leaves: the image's ray offset (GpuObject.box_min.w:
 // the deviation at 98% of the surface, at least 1e-4).
-float object_epsilon(int k, bool rasterised) {
-  if (objects[k].kind.x != SHAPE_MESH) return 1.0e-5f * u_scene_extent;
+float object_epsilon(int k, bool rasterised, vec3 p) {
+  if (objects[k].kind.x != SHAPE_MESH) return analytic_epsilon(k, p);
   return (rasterised ? objects[k].box_min.w : GF_MIN_RAY_OFFSET) * objects[k].absorption.w;
 }
 
@@ -88,7 +97,7 @@ SceneHit world_mesh_hit(int k, GfHit g) {
   h.position = (objects[k].to_world * vec4(g.position, 1.0f)).xyz;
   h.normal = normalize(transpose(mat3(objects[k].to_object)) * g.normal);
   h.uv = g.uv;
-  h.self_offset = object_epsilon(k, false);
+  h.self_offset = object_epsilon(k, false, h.position);
   return h;
 }
 
@@ -112,7 +121,7 @@ SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max) {
   h.position = o + s.t * d;
   h.normal = normalize(transpose(mat3(objects[k].to_object)) * s.normal);
   h.uv = s.uv;
-  h.self_offset = object_epsilon(k, false);
+  h.self_offset = object_epsilon(k, false, h.position);
   return h;
 }
 
@@ -173,7 +182,7 @@ SceneHit intersect_self(vec3 o, vec3 d, float t_max, SelfLookup self) {
   vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
   vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
   vec3 ls = (objects[k].to_object * vec4(self.origin, 1.0f)).xyz;
-  return world_mesh_hit(k, gf_trace_leaving(lo, ld, 2.0f * object_epsilon(k, false), t_max, ls,
+  return world_mesh_hit(k, gf_trace_leaving(lo, ld, 2.0f * object_epsilon(k, false, o), t_max, ls,
                                             self.t_min, self.facing, u_mode));
 }
 

@@ -49,13 +49,14 @@ cp "$data/meshes/spot-painted.png" "$work/shots/gfield-view-7.png"  # screenshot
 viewer_pid=$!
 window=""
 for _ in $(seq 300); do
-  window=$(xdotool search --name '^gfield-view' 2> /dev/null | head -n 1) && [ -n "$window" ] && break
+  window=$(xdotool search --onlyvisible --name '^gfield-view' 2> /dev/null | head -n 1) &&
+    [ -n "$window" ] && break
   kill -0 "$viewer_pid" 2> /dev/null || { cat "$work/viewer.log" >&2; exit 1; }
   sleep 0.2
 done
 [ -n "$window" ] || { echo "no gfield-view window" >&2; exit 1; }
 eval "$(xdotool getwindowgeometry --shell "$window")"  # X, Y, WIDTH, HEIGHT
-xdotool windowfocus "$window"
+for _ in $(seq 50); do xdotool windowfocus "$window" 2> /dev/null && break; sleep 0.2; done
 
 headless() {  # headless OUT ARGS...: the same scene and size rendered without a window
   local out=$1
