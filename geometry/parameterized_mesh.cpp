@@ -3,6 +3,7 @@
 #include "geometry/parameterized_mesh.hpp"
 
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -63,7 +64,7 @@ bool save_parameterized_mesh(const std::string& filename, const ParameterizedMes
   TemporaryFile temporary(filename);
   FILE* file = std::fopen(temporary.path().c_str(), "wb");
   if (!file) {
-    error = filename + ": cannot write";
+    error = filename + ": cannot write (" + std::strerror(errno) + ")";
     return false;
   }
   std::fprintf(file, "# gfield parameterised mesh: v = mesh coordinates, vt = geometry-image uv\n");
@@ -80,9 +81,11 @@ bool save_parameterized_mesh(const std::string& filename, const ParameterizedMes
     std::fprintf(file, "f %d/%d %d/%d %d/%d\n", t[0] + 1, corner_vt[3 * f] + 1, t[1] + 1,
                  corner_vt[3 * f + 1] + 1, t[2] + 1, corner_vt[3 * f + 2] + 1);
   }
-  const bool ok = std::ferror(file) == 0;
+  errno = 0;
+  const bool ok = std::fflush(file) == 0 && std::ferror(file) == 0;
+  const int reason = errno;
   if (std::fclose(file) != 0 || !ok) {
-    error = filename + ": write failed";
+    error = filename + ": cannot write (" + std::strerror(reason != 0 ? reason : errno) + ")";
     return false;
   }
   return temporary.commit(error);

@@ -12,7 +12,7 @@
 #include <map>
 #include <set>
 
-#include "preprocess/asset_staging.hpp"
+#include "gfield/file_read.hpp"
 
 namespace gfield {
 namespace {
@@ -31,16 +31,23 @@ bool parse_int(std::string_view text, int& value) {
   return ec == std::errc() && end == text.data() + text.size();
 }
 
-std::vector<std::string> folder_meshes(const std::string& folder) {
+/// The mesh files of `folder` (sorted); entries named like meshes that cannot be read as files
+/// go to `skipped` ("PATH: why").
+std::vector<std::string> folder_meshes(const std::string& folder,
+                                       std::vector<std::string>& skipped) {
   std::vector<std::string> found;
-  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec)) {
     const std::string file = entry.path().filename().string();
-    if (entry.is_regular_file() && is_mesh_file(entry.path()) &&
-        file.find(".gimage.") == std::string::npos) {
+    if (!is_mesh_file(entry.path()) || file.find(".gimage.") != std::string::npos)
+      continue;
+    if (const std::string why = file_problem(entry.path().string()); !why.empty())
+      skipped.push_back(entry.path().string() + ": " + why);
+    else
       found.push_back(entry.path().string());
-    }
   }
   std::sort(found.begin(), found.end());
+  std::sort(skipped.begin(), skipped.end());
   return found;
 }
 
@@ -87,12 +94,13 @@ std::string shard_label(const Shard& shard) {
 }
 
 bool collect_batch(const std::vector<std::string>& inputs, const std::string& dir,
-                   std::vector<BatchMesh>& meshes, std::string& error) {
+                   std::vector<BatchMesh>& meshes, std::vector<std::string>& skipped,
+                   std::string& error) {
   std::vector<std::string> paths;
   for (const std::string& input : inputs) {
     std::error_code ec;
     if (fs::is_directory(input, ec)) {
-      const std::vector<std::string> found = folder_meshes(input);
+      const std::vector<std::string> found = folder_meshes(input, skipped);
       paths.insert(paths.end(), found.begin(), found.end());
     } else if (!fs::exists(input, ec)) {
       error = input + ": no such file or folder";

@@ -27,18 +27,20 @@ struct BatchMesh {
 };
 
 /// The meshes of `inputs` with their assets in `dir`: a folder gives its mesh files (sorted, not
-/// recursive, no *.gimage.obj), a .txt file one path per line (blank lines and # comments
-/// skipped, relative to the list), anything else is taken as a mesh file. Duplicates (the same
-/// path twice) are kept once. False with an error for a missing input, an unreadable list, no
-/// meshes at all, or two meshes that would build the same asset.
+/// recursive, no *.gimage.obj; entries named like meshes that are not readable files, such as
+/// symbolic link loops and FIFOs, go to `skipped` as "PATH: why"), a .txt file one path per line
+/// (blank lines and # comments skipped, relative to the list), anything else is taken as a mesh
+/// file. Duplicates (the same path twice) are kept once. False with an error for a missing
+/// input, an unreadable list, no meshes at all, or two meshes that would build the same asset.
 bool collect_batch(const std::vector<std::string>& inputs, const std::string& dir,
-                   std::vector<BatchMesh>& meshes, std::string& error);
+                   std::vector<BatchMesh>& meshes, std::vector<std::string>& skipped,
+                   std::string& error);
 
 /// The meshes of `shard`, in order.
 std::vector<BatchMesh> shard_meshes(const std::vector<BatchMesh>& meshes, const Shard& shard);
 
-/// Makes `dir` if needed and checks that files can be created in it (opening the folder's
-/// publishing lock file, which stays). False with an error naming the folder otherwise.
+/// Makes `dir` if needed and checks that files can be created in it (creating and removing a
+/// probe file). False with an error naming the folder otherwise.
 bool prepare_output_folder(const std::string& dir, std::string& error);
 
 }  // namespace gfield

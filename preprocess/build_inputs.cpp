@@ -7,6 +7,7 @@
 
 #include "geometry/gltf_mesh.hpp"
 #include "gfield/content_hash.hpp"
+#include "gfield/file_read.hpp"
 #include "gfield/printable.hpp"
 
 namespace gfield {
@@ -89,11 +90,11 @@ std::vector<std::string> mesh_texture_files(const std::string& mesh_path) {
 
 bool hash_build_inputs(const std::string& mesh_path, const nlohmann::json& options,
                        BuildInputs& inputs, std::string& error) {
-  std::error_code ec;
-  if (!fs::is_regular_file(mesh_path, ec)) {
-    error = mesh_path + ": no such mesh file";
+  if (const std::string problem = file_problem(mesh_path); !problem.empty()) {
+    error = mesh_path + ": " + (problem == "no such file" ? "no such mesh file" : problem);
     return false;
   }
+  std::error_code ec;
   std::string mesh_hash;
   if (!sha256_file(mesh_path, mesh_hash, error)) {
     return false;

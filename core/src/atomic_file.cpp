@@ -4,6 +4,7 @@
 
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstring>
 #include <fstream>
@@ -125,14 +126,23 @@ bool TemporaryFile::commit(std::string& error) {
   return true;
 }
 
+std::string TemporaryFile::as_target(std::string text) const {
+  const std::string from = temporary_.string(), to = target_.string();
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
 bool write_text_file(const std::string& filename, const std::string& contents, std::string& error) {
   TemporaryFile tmp(filename);
   {
+    errno = 0;
     std::ofstream out(tmp.path(), std::ios::binary);
     out << contents;
     out.flush();
-    if (!out) {
-      error = filename + ": cannot write";
+    if (!out) {  // the failed open or write set errno
+      error = filename + ": cannot write" +
+              (errno != 0 ? " (" + std::string(std::strerror(errno)) + ")" : std::string());
       return false;
     }
   }

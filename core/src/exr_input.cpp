@@ -12,6 +12,7 @@
 #include <map>
 #include <vector>
 
+#include "gfield/file_read.hpp"
 #include "gfield/limits.hpp"
 #include "gfield/printable.hpp"
 
@@ -281,9 +282,8 @@ bool open_exr_input(const std::string& filename, int max_width, int max_height,
                     std::initializer_list<const char*> channels,
                     std::unique_ptr<Imf::InputFile>& file, std::string& error) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(filename, ec)) {
-    error = filename +
-            (std::filesystem::exists(filename, ec) ? ": not a regular file" : ": no such file");
+  if (const std::string problem = file_problem(filename); !problem.empty()) {
+    error = filename + ": " + problem;
     return false;
   }
   const std::uint64_t file_size = std::filesystem::file_size(filename, ec);

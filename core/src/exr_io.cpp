@@ -111,7 +111,7 @@ bool write_exr(const std::string& filename, const Imf::Header& header,
     file.setFrameBuffer(frame_buffer);
     file.writePixels(height);
   } catch (const std::exception& e) {
-    error = filename + ": cannot write OpenEXR file (" + e.what() + ")";
+    error = filename + ": cannot write OpenEXR file (" + tmp.as_target(e.what()) + ")";
     return false;
   }
   return tmp.commit(error);

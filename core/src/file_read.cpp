@@ -1,20 +1,42 @@
 #include "gfield/file_read.hpp"
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 
 namespace gfield {
 
+std::string file_problem(const std::string& filename) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(filename, ec);
+  if (ec && ec.value() == ELOOP)
+    return "a symbolic link loop";
+  if (status.type() == fs::file_type::not_found) {
+    std::error_code link_ec;
+    return fs::is_symlink(fs::symlink_status(filename, link_ec)) ? "a dangling symbolic link"
+                                                                 : "no such file";
+  }
+  if (ec)
+    return ec.message();
+  switch (status.type()) {
+    case fs::file_type::regular:
+      return "";
+    case fs::file_type::fifo:
+      return "a FIFO, not a regular file";
+    case fs::file_type::directory:
+      return "a folder, not a file";
+    default:
+      return "not a regular file";
+  }
+}
+
 bool read_file(const std::string& filename, std::uint64_t max_bytes, std::string& data,
                std::string& error) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::exists(filename, ec)) {
-    error = filename + ": no such file";
-    return false;
-  }
-  if (!fs::is_regular_file(filename, ec)) {
-    error = filename + ": not a regular file";
+  if (const std::string problem = file_problem(filename); !problem.empty()) {
+    error = filename + ": " + problem;
     return false;
   }
   const std::uintmax_t size = fs::file_size(filename, ec);

@@ -11,6 +11,7 @@
 #include <ImfOutputFile.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -262,9 +263,8 @@ glm::vec3 sample_bilinear(const Image& image, float x, float y, bool wrap_x) {
 }
 
 bool load_image(const std::string& filename, Image& image, std::string& error) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(filename, ec)) {
-    error = filename + ": no such file";
+  if (const std::string problem = file_problem(filename); !problem.empty()) {
+    error = filename + ": " + problem;
     return false;
   }
   const std::string ext = lower_extension(filename);
@@ -314,15 +314,17 @@ bool save_image(const std::string& filename, const Image& image, std::string& er
   }
   TemporaryFile temporary(filename);
   bool written = false;
+  errno = 0;
   try {
     written = ext == ".exr" ? save_exr(temporary.path().string(), image)
                             : save_png(temporary.path().string(), image);
   } catch (const std::exception& e) {
-    error = filename + ": cannot write: " + e.what();
+    error = filename + ": cannot write: " + temporary.as_target(e.what());
     return false;
   }
-  if (!written) {
-    error = filename + ": cannot write";
+  if (!written) {  // stb_image_write's fopen or fwrite failed: errno says why
+    error = filename + ": cannot write" +
+            (errno != 0 ? " (" + std::string(std::strerror(errno)) + ")" : std::string());
     return false;
   }
   return temporary.commit(error);

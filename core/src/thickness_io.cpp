@@ -59,7 +59,7 @@ bool save_thickness_map(const std::string& filename, const ThicknessMap& map, st
     file.setFrameBuffer(frame);
     file.writePixels(n);
   } catch (const std::exception& e) {
-    error = filename + ": cannot write OpenEXR file (" + e.what() + ")";
+    error = filename + ": cannot write OpenEXR file (" + tmp.as_target(e.what()) + ")";
     return false;
   }
   return tmp.commit(error);

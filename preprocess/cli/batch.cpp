@@ -45,7 +45,8 @@ void print_progress(size_t done, size_t total, const std::string& what) {
   constexpr int kWidth = 30;
   const int filled = total == 0 ? kWidth : int(kWidth * done / total);
   std::fprintf(stderr, "[%s%s] %zu/%zu %s\n", std::string(size_t(filled), '#').c_str(),
-               std::string(size_t(kWidth - filled), '.').c_str(), done, total, what.c_str());
+               std::string(size_t(kWidth - filled), '.').c_str(), done, total,
+               printable(what).c_str());
 }
 
 std::string host_name() {
@@ -108,14 +109,15 @@ void list_meshes(const std::vector<BatchMesh>& meshes, const AssetOptions& optio
   for (const BatchMesh& m : meshes) {
     BuildInputs inputs;
     std::string why;
+    const std::string mesh = printable(m.mesh), asset = printable(m.asset);
     if (!asset_build_inputs(m.mesh, options, inputs, why)) {
-      std::printf("%s -> %s: fails (%s)\n", m.mesh.c_str(), m.asset.c_str(), why.c_str());
+      std::printf("%s -> %s: fails (%s)\n", mesh.c_str(), asset.c_str(), printable(why).c_str());
     } else if (!force && asset_is_build(asset_files(m.asset), inputs.build_id, why)) {
-      std::printf("%s -> %s: up to date (build %s)\n", m.mesh.c_str(), m.asset.c_str(),
+      std::printf("%s -> %s: up to date (build %s)\n", mesh.c_str(), asset.c_str(),
                   inputs.build_id.c_str());
     } else {
-      std::printf("%s -> %s: to build (%s)\n", m.mesh.c_str(), m.asset.c_str(),
-                  force ? "--force" : why.c_str());
+      std::printf("%s -> %s: to build (%s)\n", mesh.c_str(), asset.c_str(),
+                  force ? "--force" : printable(why).c_str());
     }
   }
 }
@@ -144,10 +146,13 @@ void run_batch(const BatchArguments& args) {
   if (args.inputs.empty() || args.dir.empty()) {
     throw CommandError("batch: needs INPUT... and -o DIR (or --summary DIR)");
   }
+  std::vector<std::string> skipped;
   if ((!args.shard.empty() && !parse_shard(args.shard, shard, error)) ||
-      !collect_batch(args.inputs, args.dir, all, error)) {
+      !collect_batch(args.inputs, args.dir, all, skipped, error)) {
     throw CommandError(error);
   }
+  for (const std::string& entry : skipped)
+    std::fprintf(stderr, "gfield: warning: skipped %s\n", printable(entry).c_str());
   const std::vector<BatchMesh> meshes = shard_meshes(all, shard);
   const AssetOptions options = asset_options(args.asset);
   const ThreadLimit threads(args.threads);
@@ -159,8 +164,8 @@ void run_batch(const BatchArguments& args) {
     throw CommandError(error);
   }
   if (const size_t stale = remove_stale_staging(args.dir); stale > 0) {
-    std::printf("batch: removed %zu staging folders of killed builds in %s\n", stale,
-                args.dir.c_str());
+    std::printf("batch: removed %zu build folders of killed builds in %s\n", stale,
+                printable(args.dir).c_str());
   }
   const TaskContext task{shard, meshes.size(), all.size(), host_name()};
   const std::string manifest = manifest_path(args.dir, shard);
@@ -181,7 +186,7 @@ void run_batch(const BatchArguments& args) {
   print_progress(meshes.size(), meshes.size(), "done");
   std::printf("batch %s: %zu built, %zu up to date, %zu failed; manifest %s\n",
               shard_label(shard).c_str(), built, meshes.size() - built - failed.size(),
-              failed.size(), manifest.c_str());
+              failed.size(), printable(manifest).c_str());
   if (!failed.empty()) {
     std::string list;
     for (const std::string& f : failed) {

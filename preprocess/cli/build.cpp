@@ -20,7 +20,7 @@ void add_build_command(CLI::App& app) {
       "its parameterised mesh), NAME.gfield.exr (geometry field) and NAME.report.json\n"
       "(topology, route, times, sizes, accuracy against exact casts), all carrying one build id.\n"
       "The files are written into a staging folder and replace the old asset together, or not\n"
-      "at all; staging folders of killed builds in DIR are removed first.");
+      "at all; build folders of killed builds in DIR are removed first.");
   auto mesh = std::make_shared<std::string>();
   auto name = std::make_shared<std::string>();
   auto threads = std::make_shared<int>(0);
@@ -50,7 +50,7 @@ void add_build_command(CLI::App& app) {
       std::filesystem::create_directories(dir, ec);
     }
     if (const size_t stale = remove_stale_staging(dir.empty() ? "." : dir.string()); stale > 0) {
-      std::printf("removed %zu staging folders of killed builds in %s\n", stale,
+      std::printf("removed %zu build folders of killed builds in %s\n", stale,
                   dir.empty() ? "." : dir.c_str());
     }
     nlohmann::json report;

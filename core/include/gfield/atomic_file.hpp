@@ -43,6 +43,8 @@ class TemporaryFile {
   const std::filesystem::path& path() const { return temporary_; }
   /// Renames the temporary file onto the target. False with an error naming the target.
   bool commit(std::string& error);
+  /// `text` (a writer's error) with the temporary file's name replaced by the target's.
+  std::string as_target(std::string text) const;
 
  private:
   std::filesystem::path target_;
