@@ -140,7 +140,8 @@ nlohmann::json asset_options_to_json(const AssetOptions& o) {
 
 bool asset_build_inputs(const std::string& mesh_path, const AssetOptions& options,
                         BuildInputs& inputs, std::string& error) {
-  return hash_build_inputs(mesh_path, asset_options_to_json(options), inputs, error);
+  return hash_build_inputs(mesh_path, asset_options_to_json(options), options.outside_paths, inputs,
+                           error);
 }
 
 namespace {
@@ -184,7 +185,8 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
   TriangleMesh mesh;
   MeshAppearance appearance;
   std::vector<std::string> warnings;
-  if (!load_mesh(MeshSource{mesh_path, options.part}, mesh, &appearance, warnings, error)) {
+  if (!load_mesh(MeshSource{mesh_path, options.part, options.outside_paths}, mesh, &appearance,
+                 warnings, error)) {
     return false;
   }
   AssetStaging staging;
