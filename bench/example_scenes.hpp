@@ -25,7 +25,8 @@ inline bool run_gfield_cli(const std::string& arguments) {
 
 /// data/scenes/NAME.json with its meshes' geometry images and fields (and, with
 /// `thickness_maps`, their d_n maps for wyman2005) built into `dir` unless already there; the
-/// rewritten scene's path in `out`.
+/// rewritten scene's path in `out` (it names them by absolute path: read it with outside paths
+/// allowed).
 inline bool prepare_example_scene(const std::string& name, const std::filesystem::path& dir,
                                   bool thickness_maps, std::string& out) {
   namespace fs = std::filesystem;

@@ -122,7 +122,7 @@ Scene make_scene(bool cylinder, const fs::path& dir, int vertices) {
   std::ofstream(file) << scene_text(cylinder, mesh);
   Scene scene;
   std::string error;
-  if (!load_scene(file.string(), scene, error)) {
+  if (!load_scene(file.string(), scene, error, OutsidePaths::kAllowed)) {
     std::fprintf(stderr, "bench_glass: %s\n", error.c_str());
     std::exit(2);
   }

@@ -93,8 +93,8 @@ Row timed_row(const std::string& method, int frames, const FrameFunction& frame)
 bool load_scene_and_tracer(const std::string& name, const fs::path& dir, bool thickness_maps,
                            Scene& scene, ReferenceTracer& tracer) {
   std::string file, error;
-  if (!prepare_example_scene(name, dir, thickness_maps, file) || !load_scene(file, scene, error) ||
-      !tracer.build(scene, error)) {
+  if (!prepare_example_scene(name, dir, thickness_maps, file) ||
+      !load_scene(file, scene, error, OutsidePaths::kAllowed) || !tracer.build(scene, error)) {
     std::fprintf(stderr, "%s: %s\n", name.c_str(), error.c_str());
     return false;
   }

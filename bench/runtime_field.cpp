@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
        {"mirror-torus-instances", "two-mirror-spheres", "davis-wyman-color-chart"}) {
     std::string file;
     Scene scene;
-    if (!prepare_example_scene(name, dir, false, file) || !load_scene(file, scene, error)) {
+    if (!prepare_example_scene(name, dir, false, file) ||
+        !load_scene(file, scene, error, OutsidePaths::kAllowed)) {
       std::fprintf(stderr, "%s: %s\n", name, error.c_str());
       continue;
     }

@@ -2,7 +2,8 @@
 #   bin/gfield, bin/gfield-view
 #   share/gfield/shaders/   the GLSL files (gfield-view finds them at ../share/gfield/shaders)
 #   share/gfield/scenes/    the example scenes; share/gfield/meshes/ the bundled meshes (listed
-#                           below, file by file)
+#                           below, file by file); share/gfield/.gfield-root makes share/gfield
+#                           the example scenes' root (docs/scenes.md, "Confined paths")
 #   include/gfield/, lib/libgfield_core.a, lib/cmake/gfield/   gfield::core for find_package
 include(CMakePackageConfigHelpers)
 
@@ -17,7 +18,7 @@ install(DIRECTORY shaders/ DESTINATION ${GFIELD_INSTALL_SHADER_DIR}
 # leave beside them (gfield-view builds a glTF scene's assets beside it) are never installed.
 # gfield-shipped-data.txt in the build folder lists them under the prefix: scripts/check-deb.sh
 # checks the package against it, and that it names every file git tracks in data/scenes and
-# data/meshes, so a new scene or mesh cannot be left out unnoticed.
+# data/meshes (and data/.gfield-root), so a new scene or mesh cannot be left out unnoticed.
 set(GFIELD_SHIPPED_SCENES
   davis-wyman-color-chart.json hurley-water-glass.json mirror-torus-instances.json
   mukai-hollow-cylinder.json mukai-plate-tilt05-w02.json mukai-plate-tilt05-w10.json
@@ -40,6 +41,8 @@ foreach(kind scenes meshes)
   endforeach()
   install(FILES ${files} DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/${kind})
 endforeach()
+install(FILES data/.gfield-root DESTINATION ${GFIELD_INSTALL_SHARE_DIR})
+string(APPEND shipped_data "${GFIELD_INSTALL_SHARE_DIR}/.gfield-root\n")
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/gfield-shipped-data.txt "${shipped_data}")
 
 install(EXPORT gfieldTargets NAMESPACE gfield:: DESTINATION ${GFIELD_INSTALL_CMAKE_DIR})

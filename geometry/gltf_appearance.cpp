@@ -11,28 +11,34 @@
 namespace gfield {
 namespace {
 
-/// Decodes image `index` of the document into `texture`: embedded bytes (a buffer view or a
-/// data URI) must be an image; an external file that is missing gives mid-grey and a warning.
-bool decode_gltf_image(const GltfDocument& d, int index, MeshTexture& texture,
+/// Decodes image `index` of the document into the next texture of `appearance` (with `pixels`
+/// false: its header only): embedded bytes (a buffer view, a data URI, or an external file
+/// tinygltf read) must be an image within the texture budget; an external file that is missing
+/// gives mid-grey and a warning.
+bool decode_gltf_image(const GltfDocument& d, int index, bool pixels, MeshAppearance& appearance,
                        std::vector<std::string>& warnings, std::string& error) {
   const tinygltf::Image& image = d.model.images[size_t(index)];
   const std::string name = d.file + ": images[" + std::to_string(index) + "]";
-  if (!image.image.empty()) {
-    texture.name = name;
-    if (!decode_image(name, image.image.data(), image.image.size(), texture.image, error))
-      return false;
-    return true;
-  }
-  if (image.uri.empty()) {
+  if (image.image.empty() && image.uri.empty()) {
     error = name + ": no image data";
     return false;
   }
-  const std::string file =
-      (std::filesystem::path(d.file).parent_path() / decode_uri(image.uri)).string();
-  MeshAppearance loaded;
-  if (!load_texture_files(d.file, {file}, loaded, warnings, error))
+  if (image.image.empty()) {  // an external file tinygltf did not find: the usual warning
+    const std::string file =
+        (std::filesystem::path(d.file).parent_path() / decode_uri(image.uri)).string();
+    return load_texture_files(d.file, {file}, pixels, appearance, warnings, error);
+  }
+  MeshTexture texture{name, Image()};
+  const unsigned char* bytes = image.image.data();
+  const size_t size = image.image.size();
+  int width = 0, height = 0;
+  if (!decode_image_size(name, bytes, size, width, height, error) ||
+      (pixels && (!check_texture_budget(name, width, height, appearance, error) ||
+                  !decode_image(name, bytes, size, texture.image, error))))
     return false;
-  texture = std::move(loaded.textures[0]);
+  texture.image.width = width;
+  texture.image.height = height;
+  appearance.textures.push_back(std::move(texture));
   return true;
 }
 
@@ -58,7 +64,7 @@ BaseColorMaterial base_color_material(const GltfDocument& d, size_t m, int& imag
 }  // namespace
 
 bool gltf_appearance(const GltfDocument& d, bool any_uv, bool any_color, bool any_material,
-                     MeshAppearance& appearance, std::vector<std::string>& warnings,
+                     bool pixels, MeshAppearance& appearance, std::vector<std::string>& warnings,
                      std::string& error) {
   if (!any_uv)
     appearance.corner_uv.clear();
@@ -79,11 +85,8 @@ bool gltf_appearance(const GltfDocument& d, bool any_uv, bool any_color, bool an
     if (image < 0 || !used[m])
       continue;
     const auto [it, added] = textures.emplace(image, int(appearance.textures.size()));
-    if (added) {
-      appearance.textures.emplace_back();
-      if (!decode_gltf_image(d, image, appearance.textures.back(), warnings, error))
-        return false;
-    }
+    if (added && !decode_gltf_image(d, image, pixels, appearance, warnings, error))
+      return false;
     appearance.materials.back().texture = it->second;
   }
   return true;

@@ -1,5 +1,7 @@
 #include "geometry/gltf_checks.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <string_view>
 #include <vector>
@@ -134,36 +136,135 @@ bool check_array_sizes(const json& document, CheckFailure& failure) {
   return true;
 }
 
-/// Nodes form a forest: one parent at most, no cycle; scenes list roots.
-bool check_node_forest(const json& document, CheckFailure& failure) {
+/// The parent of every node (-1: a root) from the nodes' children; false with `failure` for a
+/// node that is its own child or is the child of two nodes. One visit per node and per child.
+bool node_parents(const json& document, std::vector<std::int64_t>& parent, CheckFailure& failure,
+                  std::uint64_t& visits) {
   const size_t nodes = array_size(document, "nodes");
-  std::vector<std::int64_t> parent(nodes, -1);
+  parent.assign(nodes, -1);
   for (size_t n = 0; n < nodes; ++n) {
-    std::vector<std::pair<const json*, std::string>> children;
-    collect(document["nodes"][n], "children/*", json_pointer_child("/nodes", n), children);
-    for (const auto& [child, pointer] : children) {
-      const std::int64_t c = child->get<std::int64_t>();
-      if (parent[size_t(c)] >= 0 || c == std::int64_t(n)) {
-        failure = {pointer, "node " + std::to_string(c) + " has more than one parent"};
+    ++visits;
+    const json& node = document["nodes"][n];
+    if (!node.is_object() || !node.contains("children") || !node["children"].is_array())
+      continue;
+    const json& children = node["children"];
+    for (size_t k = 0; k < children.size(); ++k) {
+      ++visits;
+      const std::int64_t c = children[k].get<std::int64_t>();
+      if (c == std::int64_t(n) || parent[size_t(c)] >= 0) {
+        const std::string where = json_pointer_child("/nodes", n);
+        failure = {json_pointer_child(json_pointer_child(where, "children"), k),
+                   c == std::int64_t(n)
+                       ? "node " + std::to_string(c) + " is its own child"
+                       : "node " + std::to_string(c) + " is a child of node " +
+                             std::to_string(parent[size_t(c)]) + " and of node " +
+                             std::to_string(n) + " (a node has one parent at most)"};
         return false;
       }
       parent[size_t(c)] = std::int64_t(n);
     }
   }
-  for (size_t n = 0; n < nodes; ++n) {
-    size_t steps = 0;
-    for (std::int64_t p = parent[n]; p >= 0; p = parent[size_t(p)]) {
-      if (++steps > nodes) {
-        failure = {json_pointer_child("/nodes", n), "the node hierarchy has a cycle"};
-        return false;
-      }
-    }
+  return true;
+}
+
+/// With one parent at most per node, the nodes no root reaches lie on or below a cycle: walks
+/// from the roots down (each node once), then from an unreached node up to the cycle above it
+/// (each node once more). False with `failure` naming the cycle's nodes.
+bool check_no_cycle(const json& document, const std::vector<std::int64_t>& parent,
+                    CheckFailure& failure, std::uint64_t& visits) {
+  const size_t nodes = parent.size();
+  std::vector<char> reached(nodes, 0);
+  std::vector<size_t> stack;
+  for (size_t n = 0; n < nodes; ++n)
+    if (parent[n] < 0)
+      stack.push_back(n);
+  while (!stack.empty()) {
+    const size_t n = stack.back();
+    stack.pop_back();
+    ++visits;
+    reached[n] = 1;
+    const json& node = document["nodes"][n];
+    if (node.is_object() && node.contains("children") && node["children"].is_array())
+      for (const json& child : node["children"])
+        stack.push_back(child.get<size_t>());
   }
+  const auto first = std::find(reached.begin(), reached.end(), 0);
+  if (first == reached.end())
+    return true;
+  // Up from an unreached node: the first node met twice is on the cycle.
+  size_t n = size_t(first - reached.begin());
+  for (; reached[n] != 2; n = size_t(parent[n])) {
+    ++visits;
+    reached[n] = 2;
+  }
+  std::string cycle = std::to_string(n);
+  size_t length = 1;
+  for (size_t m = size_t(parent[n]); m != n; m = size_t(parent[m]), ++length)
+    if (length < 10)
+      cycle += ", " + std::to_string(m);
+  failure = {json_pointer_child("/nodes", n),
+             "the node hierarchy has a cycle of " + std::to_string(length) + " nodes: " + cycle +
+                 (length > 10 ? ", ..." : "") +
+                 " (each the child of the next, the last of the first)"};
+  return false;
+}
+
+}  // namespace
+
+bool check_node_forest(const json& document, CheckFailure& failure, std::uint64_t& visits) {
+  std::vector<std::int64_t> parent;
+  if (!node_parents(document, parent, failure, visits) ||
+      !check_no_cycle(document, parent, failure, visits))
+    return false;
   std::vector<std::pair<const json*, std::string>> roots;
   collect(document, "scenes/*/nodes/*", "", roots);
   for (const auto& [root, pointer] : roots) {
     if (parent[size_t(root->get<std::int64_t>())] >= 0) {
       failure = {pointer, "a scene lists node " + root->dump() + ", which has a parent"};
+      return false;
+    }
+  }
+  return true;
+}
+
+namespace {
+
+/// The scheme of `uri` ("file" of "file:///x"), "" for a relative reference (RFC 3986: letters,
+/// digits, '+', '-', '.' up to a ':' before any '/', '?' or '#').
+std::string uri_scheme(const std::string& uri) {
+  const size_t colon = uri.find(':');
+  if (colon == std::string::npos || colon == 0 || !std::isalpha(static_cast<unsigned char>(uri[0])))
+    return "";
+  for (size_t i = 1; i < colon; ++i) {
+    const char c = uri[i];
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '+' && c != '-' && c != '.')
+      return "";
+  }
+  return uri.substr(0, colon);
+}
+
+/// Buffer and image URIs: data: URIs, or relative paths inside `folder` (the glTF file's)
+/// unless `outside` is kAllowed; checked before any file they name is touched.
+bool check_uris(const json& document, const std::string& folder, OutsidePaths outside,
+                CheckFailure& failure) {
+  std::vector<std::pair<const json*, std::string>> uris;
+  collect(document, "buffers/*/uri", "", uris);
+  collect(document, "images/*/uri", "", uris);
+  for (const auto& [value, pointer] : uris) {
+    if (!value->is_string())
+      continue;
+    const std::string uri = value->get<std::string>();
+    const std::string scheme = uri_scheme(uri);
+    std::string resolved, problem;
+    if (scheme == "data")
+      continue;
+    if (!scheme.empty()) {
+      failure = {pointer, "\"" + uri + "\" is a " + scheme +
+                              ": URI (gfield reads relative paths and data: URIs)"};
+      return false;
+    }
+    if (!resolve_named_path(folder, decode_uri(uri), folder, outside, resolved, problem)) {
+      failure = {pointer, problem};
       return false;
     }
   }
@@ -353,14 +454,16 @@ std::string decode_uri(const std::string& uri) {
 }
 
 bool check_gltf_json(const nlohmann::json& document, const std::string& folder,
-                     std::int64_t bin_bytes, CheckFailure& failure) {
+                     std::int64_t bin_bytes, OutsidePaths outside, CheckFailure& failure) {
   if (!document.is_object()) {
     failure = {"", "the document is not a JSON object"};
     return false;
   }
   std::vector<std::uint64_t> buffers, views;
+  std::uint64_t visits = 0;
   return check_array_sizes(document, failure) && check_references(document, failure) &&
-         check_node_forest(document, failure) &&
+         check_node_forest(document, failure, visits) &&
+         check_uris(document, folder, outside, failure) &&
          check_buffers(document, folder, bin_bytes, buffers, failure) &&
          check_buffer_views(document, buffers, views, failure) &&
          check_accessors(document, views, failure);

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gfield/confined_path.hpp"
+
 namespace gfield {
 
 /// What is wrong, and where (a JSON pointer into the document).
@@ -17,9 +19,16 @@ struct CheckFailure {
 };
 
 /// Checks `document` (the glTF JSON of a file in `folder`). `bin_bytes` is the size of a .glb's
-/// BIN chunk (-1 for a .gltf file). False with `failure`.
+/// BIN chunk (-1 for a .gltf file); buffer and image URIs must be data: URIs or relative paths
+/// inside `folder` unless `outside` is kAllowed (confined_path.hpp). False with `failure`.
 bool check_gltf_json(const nlohmann::json& document, const std::string& folder,
-                     std::int64_t bin_bytes, CheckFailure& failure);
+                     std::int64_t bin_bytes, OutsidePaths outside, CheckFailure& failure);
+
+/// The node hierarchy of `document` (its indices checked) is a forest: no node its own child,
+/// one parent at most, no cycle, the scenes' nodes roots. `visits` grows by the node and child
+/// visits the check took: at most 3 per node plus 2 per child, whatever the hierarchy's shape.
+bool check_node_forest(const nlohmann::json& document, CheckFailure& failure,
+                       std::uint64_t& visits);
 
 /// A URI's path with %XX escapes decoded (as tinygltf decodes it).
 std::string decode_uri(const std::string& uri);

@@ -3,6 +3,8 @@
 #include <cctype>
 #include <cstring>
 #include <filesystem>
+#include <limits>
+#include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -62,15 +64,19 @@ bool read_glb_container(const std::string& data, std::string& json, std::int64_t
   return true;
 }
 
-/// tinygltf's file access: only below the glTF file's folder, at most kMaxMeshFileBytes.
+/// tinygltf's file access: only below the glTF file's folder (unless outside paths are
+/// allowed), at most kMaxMeshFileBytes. The URIs were checked before (gltf_checks.hpp); this
+/// holds whatever tinygltf makes of them.
 struct FileAccess {
   std::string folder;  ///< with a trailing separator
+  OutsidePaths outside = OutsidePaths::kRefused;
 };
 
 bool file_exists(const std::string& path, void* user) {
   const auto* access = static_cast<const FileAccess*>(user);
   std::error_code ec;
-  return path.rfind(access->folder, 0) == 0 && fs::is_regular_file(path, ec);
+  return (access->outside == OutsidePaths::kAllowed || path_is_inside(access->folder, path)) &&
+         fs::is_regular_file(path, ec);
 }
 
 std::string expand_path(const std::string& path, void*) {
@@ -108,7 +114,8 @@ std::string first_line(const std::string& text) {
 
 bool parse_with_tinygltf(const std::string& data, const std::string& json, bool binary,
                          GltfDocument& document, std::string& error) {
-  FileAccess access{(fs::absolute(document.file).parent_path() / "").string()};
+  FileAccess access{(fs::absolute(document.file).parent_path() / "").string(),
+                    document.outside_paths};
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_image_bytes, nullptr);
   loader.SetFsCallbacks({file_exists, expand_path, read_whole_file, refuse_write, &access});
@@ -128,7 +135,8 @@ bool parse_with_tinygltf(const std::string& data, const std::string& json, bool 
 
 }  // namespace
 
-bool load_gltf_document(const std::string& filename, GltfDocument& document, std::string& error) {
+bool load_gltf_document(const std::string& filename, OutsidePaths outside, GltfDocument& document,
+                        std::string& error) {
   std::string data, json;
   if (!read_file(filename, kMaxMeshFileBytes, data, error)) {
     return false;
@@ -149,7 +157,7 @@ bool load_gltf_document(const std::string& filename, GltfDocument& document, std
     return false;
   }
   CheckFailure failure;
-  if (!check_gltf_json(located.value, fs::path(filename).parent_path().string(), bin_bytes,
+  if (!check_gltf_json(located.value, fs::path(filename).parent_path().string(), bin_bytes, outside,
                        failure)) {
     const JsonLocation where = located.at(failure.pointer);
     error = filename + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
@@ -159,10 +167,11 @@ bool load_gltf_document(const std::string& filename, GltfDocument& document, std
   document = GltfDocument{};
   document.file = filename;
   document.json = std::move(located.value);
+  document.outside_paths = outside;
   return parse_with_tinygltf(data, binary ? json : data, binary, document, error);
 }
 
-std::vector<std::string> gltf_external_files(const std::string& filename) {
+std::vector<std::string> gltf_external_files(const std::string& filename, OutsidePaths outside) {
   std::string data, json, ignored;
   std::int64_t bin_bytes = 0;
   if (!read_file(filename, kMaxMeshFileBytes, data, ignored) ||
@@ -176,10 +185,12 @@ std::vector<std::string> gltf_external_files(const std::string& filename) {
       continue;
     for (const nlohmann::json& item : document[kind]) {
       const nlohmann::json* uri = json_at(item, {"uri"});
-      if (uri != nullptr && uri->is_string() && uri->get<std::string>().rfind("data:", 0) != 0)
-        files.push_back((fs::path(filename).parent_path() / decode_uri(uri->get<std::string>()))
-                            .lexically_normal()
-                            .string());
+      const fs::path folder = fs::path(filename).parent_path();
+      std::string file, problem;
+      if (uri != nullptr && uri->is_string() && uri->get<std::string>().rfind("data:", 0) != 0 &&
+          resolve_named_path(folder, decode_uri(uri->get<std::string>()), folder, outside, file,
+                             problem))
+        files.push_back(file);
     }
   }
   return files;
@@ -329,6 +340,39 @@ bool scene_nodes(const GltfDocument& document, std::vector<PlacedNode>& placed,
     }
   }
   return true;
+}
+
+void position_bounds(const std::vector<float>& xyz, glm::dvec3& lo, glm::dvec3& hi) {
+  lo = glm::dvec3(std::numeric_limits<double>::max());
+  hi = -lo;
+  for (size_t v = 0; v + 2 < xyz.size(); v += 3) {
+    const glm::dvec3 p(xyz[v], xyz[v + 1], xyz[v + 2]);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+}
+
+void check_declared_bounds(const GltfDocument& document, int index, const glm::dvec3& lo,
+                           const glm::dvec3& hi, std::vector<std::string>& warnings) {
+  const tinygltf::Accessor& a = document.model.accessors[size_t(index)];
+  const auto text = [](const glm::dvec3& v) {
+    return "[" + double_text(v.x) + ", " + double_text(v.y) + ", " + double_text(v.z) + "]";
+  };
+  for (const auto& [key, declared, data] :
+       {std::tuple{"max", &a.maxValues, hi}, std::tuple{"min", &a.minValues, lo}}) {
+    if (declared->size() != 3)
+      continue;
+    const glm::dvec3 value((*declared)[0], (*declared)[1], (*declared)[2]);
+    // Exporters round; a float's value printed to 7 digits is off by 1e-7 of it.
+    const glm::dvec3 scale = glm::max(hi - lo, glm::max(glm::abs(lo), glm::abs(hi)));
+    if (glm::all(glm::lessThanEqual(glm::abs(value - data), 1e-5 * scale)))
+      continue;
+    warnings.push_back(document.file + ": " +
+                       json_pointer_child(json_pointer_child("/accessors", size_t(index)), key) +
+                       ": declares " + text(value) + ", the data reach " + text(data) +
+                       " (gfield uses the bounds of the data)");
+    return;
+  }
 }
 
 const nlohmann::json* json_at(const nlohmann::json& object,

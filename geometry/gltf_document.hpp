@@ -4,9 +4,11 @@
 // file), the JSON (strict, at most kMaxJsonDepth deep, arrays of at most kMaxGltfElements), every
 // index into another array (scene, nodes, meshes, accessors, buffer views, buffers, materials,
 // textures, images, samplers, cameras, lights, skins, animations), the node hierarchy (a forest:
-// one parent at most, no cycle), the external buffers (present, of their byteLength), then
-// every buffer view within its buffer and every accessor within its view. Internal to
-// geometry's glTF code (gltf_mesh.cpp, gltf_scene.cpp); tiny_gltf.h is included here only.
+// one parent at most, no cycle), the buffer and image URIs (data: URIs, or relative paths inside
+// the glTF file's folder unless outside paths are allowed: confined_path.hpp), the external
+// buffers (present, of their byteLength), then every buffer view within its buffer and every
+// accessor within its view. Internal to geometry's glTF code (gltf_mesh.cpp, gltf_scene.cpp);
+// tiny_gltf.h is included here only.
 
 #include <string>
 #include <vector>
@@ -15,17 +17,31 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "gfield/confined_path.hpp"
+
 namespace gfield {
 
 struct GltfDocument {
   std::string file;       ///< the glTF file
   tinygltf::Model model;  ///< every index checked (see above)
   nlohmann::json json;    ///< the document's JSON: extensions and extras are read from it
+  OutsidePaths outside_paths = OutsidePaths::kRefused;  ///< as it was read
 };
 
-/// Reads and checks `filename`. False with a one-line error "FILE: problem" (JSON problems:
-/// "FILE:LINE:COLUMN: path: problem"; for a .glb, lines count in its JSON chunk).
-bool load_gltf_document(const std::string& filename, GltfDocument& document, std::string& error);
+/// Reads and checks `filename`, its URIs confined to its folder unless `outside` is kAllowed.
+/// False with a one-line error "FILE: problem" (JSON problems: "FILE:LINE:COLUMN: path:
+/// problem"; for a .glb, lines count in its JSON chunk).
+bool load_gltf_document(const std::string& filename, OutsidePaths outside, GltfDocument& document,
+                        std::string& error);
+
+/// The bounds `lo`, `hi` of the points `xyz` (x, y, z of each; lo > hi when there are none).
+void position_bounds(const std::vector<float>& xyz, glm::dvec3& lo, glm::dvec3& hi);
+
+/// Checks the min and max that accessor `index` declares against `lo` and `hi`, the bounds of
+/// its values computed from the data: a warning "FILE: /accessors/I/max: declares ..., the data
+/// reach ...; gfield uses the data's bounds" when they differ by more than rounding.
+void check_declared_bounds(const GltfDocument& document, int index, const glm::dvec3& lo,
+                           const glm::dvec3& hi, std::vector<std::string>& warnings);
 
 /// The `components` floats of each of accessor `index`'s elements (normalised integers mapped to
 /// [0, 1] or [-1, 1], plain integers converted), `count * components` values. An accessor without
@@ -54,11 +70,12 @@ struct MeshAppearance;
 /// Materials and textures of `appearance` (whose corner uvs, vertex colours and face materials,
 /// indices of glTF materials, the primitives filled): one BaseColorMaterial per glTF material
 /// (baseColorFactor's rgb, and for the materials the faces use, their baseColorTexture's image),
-/// the images used decoded (embedded
-/// bytes that are no image: an error "FILE: images[I]: problem"; a missing external image:
-/// mid-grey and a warning). Attributes no primitive had (`any_*` false) are dropped.
+/// the images used decoded (each checked against the texture budget first: check_texture_budget;
+/// with `pixels` false, only their headers read), embedded bytes that are no image: an error
+/// "FILE: images[I]: problem"; a missing external image: mid-grey and a warning. Attributes no
+/// primitive had (`any_*` false) are dropped.
 bool gltf_appearance(const GltfDocument& document, bool any_uv, bool any_color, bool any_material,
-                     MeshAppearance& appearance, std::vector<std::string>& warnings,
+                     bool pixels, MeshAppearance& appearance, std::vector<std::string>& warnings,
                      std::string& error);
 
 /// `"KEY"` of JSON object `object` at path `keys` (e.g. {"extensions",

@@ -121,9 +121,10 @@ bool add_corner_uvs(const GltfDocument& d, int accessor, const std::vector<glm::
   return true;
 }
 
-/// Appends primitive `p` of mesh `m` placed by `world`.
+/// Appends primitive `p` of mesh `m` placed by `world`; `warnings` gets a POSITION accessor's
+/// declared bounds that its data contradict.
 bool add_primitive(const GltfDocument& d, int m, size_t index, const glm::dmat4& world,
-                   GltfSoup& soup, std::string& what) {
+                   GltfSoup& soup, std::vector<std::string>& warnings, std::string& what) {
   const tinygltf::Primitive& p = d.model.meshes[size_t(m)].primitives[index];
   const int mode = p.mode < 0 ? 4 : p.mode;
   int position = -1, uv = -1, color = -1;
@@ -172,8 +173,11 @@ bool add_primitive(const GltfDocument& d, int m, size_t index, const glm::dmat4&
     return false;
   }
   const size_t first = soup.mesh.positions.size();
-  if (!add_positions(read_accessor_floats(d, position), world, soup, what) ||
-      !add_colors(d, color, vertices, soup, what) ||
+  const std::vector<float> xyz = read_accessor_floats(d, position);
+  glm::dvec3 lo, hi;
+  position_bounds(xyz, lo, hi);
+  check_declared_bounds(d, position, lo, hi, warnings);
+  if (!add_positions(xyz, world, soup, what) || !add_colors(d, color, vertices, soup, what) ||
       !add_corner_uvs(d, uv, triangles, first, soup, what)) {
     return false;
   }
@@ -235,13 +239,14 @@ bool load_gltf_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance
                     std::vector<std::string>& warnings, std::string& error, MeshLoadStats* stats) {
   GltfDocument d;
   std::vector<std::pair<int, glm::dmat4>> placed;
-  if (!load_gltf_document(source.file, d, error) || !placements(d, source.part, placed, error))
+  if (!load_gltf_document(source.file, source.outside_paths, d, error) ||
+      !placements(d, source.part, placed, error))
     return false;
   GltfSoup soup;
   for (const auto& [m, world] : placed) {
     for (size_t p = 0; p < d.model.meshes[size_t(m)].primitives.size(); ++p) {
       std::string what;
-      if (!add_primitive(d, m, p, world, soup, what)) {
+      if (!add_primitive(d, m, p, world, soup, warnings, what)) {
         error = source.file + ": " + where(m, p) + what;
         return false;
       }
@@ -251,8 +256,9 @@ bool load_gltf_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance
     error = source.file + ": no triangles" + (source.part.empty() ? "" : " in mesh " + source.part);
     return false;
   }
-  if (appearance != nullptr && !gltf_appearance(d, soup.any_uv, soup.any_color, soup.any_material,
-                                                soup.appearance, warnings, error))
+  if (appearance != nullptr &&
+      !gltf_appearance(d, soup.any_uv, soup.any_color, soup.any_material, source.texture_pixels,
+                       soup.appearance, warnings, error))
     return false;
   if (appearance != nullptr)
     *appearance = std::move(soup.appearance);

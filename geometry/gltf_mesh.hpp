@@ -25,9 +25,10 @@ bool load_gltf_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance
 /// MeshSource::part of mesh `index` of a glTF file: "#INDEX".
 std::string gltf_mesh_part(int index);
 
-/// The files glTF file `filename` names (external buffers and images, relative to its folder):
-/// what its build id hashes besides the file (preprocess/build_inputs.hpp). Empty when the file
-/// cannot be read or parsed (its build then fails with the reason).
-std::vector<std::string> gltf_external_files(const std::string& filename);
+/// The files glTF file `filename` names (external buffers and images, relative to its folder;
+/// those outside it only when `outside` is kAllowed): what its build id hashes besides the file
+/// (preprocess/build_inputs.hpp). Empty when the file cannot be read or parsed (its build then
+/// fails with the reason).
+std::vector<std::string> gltf_external_files(const std::string& filename, OutsidePaths outside);
 
 }  // namespace gfield

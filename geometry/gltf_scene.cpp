@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 
 #include <glm/gtx/compatibility.hpp>
@@ -10,6 +11,7 @@
 #include "geometry/gltf_document.hpp"
 #include "geometry/gltf_mesh.hpp"
 #include "gfield/limits.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 namespace {
@@ -17,14 +19,16 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-/// A number of the document at `keys` below `object` (`fallback` when absent), within [lo, hi].
+/// A number of the document at `keys` below `object` (`fallback` when absent), within [lo, hi]
+/// (`range`: the interval as the docs write it, e.g. "[0, 1e6]"); the message names the keys.
 bool number_at(const json& object, std::initializer_list<const char*> keys, double fallback,
-               double lo, double hi, double& value, std::string& what) {
+               double lo, double hi, const char* range, double& value, std::string& what) {
   const json* v = json_at(object, keys);
   value = v != nullptr && v->is_number() ? v->get<double>() : fallback;
   if (!(value >= lo && value <= hi)) {
-    what = std::string(*(keys.end() - 1)) + " " + std::to_string(value) + " is not in [" +
-           std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    for (const char* key : keys)
+      what += (what.empty() ? "" : ".") + std::string(key);
+    what += std::string(" must be in ") + range + " (is " + double_text(value) + ")";
     return false;
   }
   return true;
@@ -42,10 +46,11 @@ bool object_material(const GltfDocument& d, int index, Material& m, std::string&
   const tinygltf::PbrMetallicRoughness& pbr = d.model.materials[size_t(index)].pbrMetallicRoughness;
   double transmission = 0.0, ior = 1.5, distance = 0.0;
   if (!number_at(g, {"extensions", "KHR_materials_transmission", "transmissionFactor"}, 0.0, 0.0,
-                 1.0, transmission, what) ||
-      !number_at(g, {"extensions", "KHR_materials_ior", "ior"}, 1.5, 1e-6, 1e6, ior, what) ||
+                 1.0, "[0, 1]", transmission, what) ||
+      !number_at(g, {"extensions", "KHR_materials_ior", "ior"}, 1.5, kMinIor, kMaxIor,
+                 "[1e-6, 1e6]", ior, what) ||
       !number_at(g, {"extensions", "KHR_materials_volume", "attenuationDistance"}, 1e300, 1e-15,
-                 1e300, distance, what)) {
+                 1e300, "[1e-15, 1e300]", distance, what)) {
     return false;
   }
   glm::vec3 base(1.0f);
@@ -77,8 +82,8 @@ bool place(const glm::dmat4& world, const std::string& what_node, Transform& t,
     error = what_node + ": a mirroring or singular transform (gfield needs positive scales)";
     return false;
   }
-  if (glm::any(glm::lessThan(t.scale, glm::vec3(1e-6f))) ||
-      glm::any(glm::greaterThan(t.scale, glm::vec3(1e6f))) ||
+  if (glm::any(glm::lessThan(t.scale, glm::vec3(float(kMinScaleFactor)))) ||
+      glm::any(glm::greaterThan(t.scale, glm::vec3(float(kMaxScaleFactor)))) ||
       glm::any(glm::greaterThan(glm::abs(t.translate), glm::vec3(float(kMaxCoordinate))))) {
     error = what_node + ": scale outside [1e-6, 1e6] or translation beyond 1e15";
     return false;
@@ -99,6 +104,7 @@ int mesh_asset(const GltfDocument& d, int m, Scene& scene, std::map<int, int>& a
   asset.file = d.file;
   asset.part = gltf_mesh_part(m);
   asset.asset = gltf_asset_name(d.file, m, d.model.meshes[size_t(m)].name);
+  asset.outside_paths = d.outside_paths;
   const fs::path stem = fs::path(d.file).parent_path() / asset.asset;
   std::error_code ec;
   if (fs::is_regular_file(stem.string() + ".gimage.exr", ec))
@@ -176,40 +182,63 @@ bool node_camera(const GltfDocument& d, const std::vector<PlacedNode>& nodes, Ca
   return false;
 }
 
-/// World bounds of the mesh nodes from their POSITION accessors' min and max.
-void scene_bounds(const GltfDocument& d, const std::vector<PlacedNode>& nodes, glm::dvec3& lo,
-                  glm::dvec3& hi) {
-  lo = glm::dvec3(1e300);
-  hi = glm::dvec3(-1e300);
+/// A box: lo > hi when empty.
+using Bounds = std::pair<glm::dvec3, glm::dvec3>;
+
+/// The bounds of every glTF mesh the nodes place, in its own coordinates, computed from its
+/// primitives' POSITION data (the accessors' declared min and max are not trusted: those that
+/// the data contradict are warnings).
+std::map<int, Bounds> mesh_bounds(const GltfDocument& d, const std::vector<PlacedNode>& nodes,
+                                  std::vector<std::string>& warnings) {
+  std::map<int, Bounds> bounds;
+  std::map<int, Bounds> accessors;
   for (const PlacedNode& placed : nodes) {
     const int m = d.model.nodes[size_t(placed.node)].mesh;
-    for (size_t p = 0; m >= 0 && p < d.model.meshes[size_t(m)].primitives.size(); ++p) {
-      const auto found = d.model.meshes[size_t(m)].primitives[p].attributes.find("POSITION");
-      if (found == d.model.meshes[size_t(m)].primitives[p].attributes.end())
+    if (m < 0 || bounds.count(m))
+      continue;
+    Bounds& box = bounds[m] = {glm::dvec3(std::numeric_limits<double>::max()),
+                               glm::dvec3(-std::numeric_limits<double>::max())};
+    for (const tinygltf::Primitive& p : d.model.meshes[size_t(m)].primitives) {
+      const auto found = p.attributes.find("POSITION");
+      if (found == p.attributes.end())
         continue;
-      const tinygltf::Accessor& a = d.model.accessors[size_t(found->second)];
-      if (a.minValues.size() != 3 || a.maxValues.size() != 3)
-        continue;
-      for (int c = 0; c < 8; ++c) {
-        const glm::dvec3 corner(c & 1 ? a.maxValues[0] : a.minValues[0],
-                                c & 2 ? a.maxValues[1] : a.minValues[1],
-                                c & 4 ? a.maxValues[2] : a.minValues[2]);
-        const glm::dvec3 w(placed.world * glm::dvec4(corner, 1.0));
-        lo = glm::min(lo, w);
-        hi = glm::max(hi, w);
+      if (!accessors.count(found->second)) {
+        Bounds& a = accessors[found->second];
+        position_bounds(read_accessor_floats(d, found->second), a.first, a.second);
+        check_declared_bounds(d, found->second, a.first, a.second, warnings);
       }
+      box.first = glm::min(box.first, accessors[found->second].first);
+      box.second = glm::max(box.second, accessors[found->second].second);
     }
   }
-  if (lo.x > hi.x) {
-    lo = glm::dvec3(-1.0);
-    hi = glm::dvec3(1.0);
-  }
+  return bounds;
 }
 
-/// A camera looking at the scene's bounds from the front and a little above, fitting them.
-Camera fitted_camera(const GltfDocument& d, const std::vector<PlacedNode>& nodes) {
-  glm::dvec3 lo, hi;
-  scene_bounds(d, nodes, lo, hi);
+/// World bounds of the mesh nodes (their meshes' `bounds` placed by the nodes); [-1, 1]^3 when
+/// there are none.
+Bounds scene_bounds(const GltfDocument& d, const std::vector<PlacedNode>& nodes,
+                    const std::map<int, Bounds>& bounds) {
+  Bounds world = {glm::dvec3(1e300), glm::dvec3(-1e300)};
+  for (const PlacedNode& placed : nodes) {
+    const auto found = bounds.find(d.model.nodes[size_t(placed.node)].mesh);
+    if (found == bounds.end() || found->second.first.x > found->second.second.x)
+      continue;
+    const auto& [lo, hi] = found->second;
+    for (int c = 0; c < 8; ++c) {
+      const glm::dvec3 corner(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
+      const glm::dvec3 w(placed.world * glm::dvec4(corner, 1.0));
+      world.first = glm::min(world.first, w);
+      world.second = glm::max(world.second, w);
+    }
+  }
+  if (world.first.x > world.second.x)
+    world = {glm::dvec3(-1.0), glm::dvec3(1.0)};
+  return world;
+}
+
+/// A camera looking at the world bounds [lo, hi] from the front and a little above, fitting them.
+Camera fitted_camera(const Bounds& bounds) {
+  const auto& [lo, hi] = bounds;
   const glm::dvec3 centre = 0.5 * (lo + hi);
   const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
   Camera camera;
@@ -218,6 +247,28 @@ Camera fitted_camera(const GltfDocument& d, const std::vector<PlacedNode>& nodes
   camera.target = glm::vec3(centre);
   camera.position = glm::vec3(centre + distance * glm::normalize(glm::dvec3(0.0, 0.4, 1.0)));
   return camera;
+}
+
+/// A KHR_lights_punctual light's intensity and colour, each in [0, 1e6] as in JSON scenes.
+bool light_values(const json& l, Light& light, std::string& what) {
+  double intensity = 1.0;
+  if (!number_at(l, {"intensity"}, 1.0, 0.0, kMaxColorComponent, "[0, 1e6]", intensity, what))
+    return false;
+  light.intensity = float(intensity);
+  const json* color = json_at(l, {"color"});
+  if (color == nullptr)
+    return true;
+  glm::dvec3 c(-1.0);
+  for (size_t k = 0; k < 3 && color->is_array() && color->size() == 3; ++k)
+    c[int(k)] = (*color)[k].is_number() ? (*color)[k].get<double>() : -1.0;
+  if (glm::any(glm::lessThan(c, glm::dvec3(0.0))) ||
+      glm::any(glm::greaterThan(c, glm::dvec3(kMaxColorComponent)))) {
+    what = "color must be 3 numbers in [0, 1e6] (is " +
+           color->dump(-1, ' ', false, json::error_handler_t::replace) + ")";
+    return false;
+  }
+  light.color = glm::vec3(c);
+  return true;
 }
 
 /// The KHR_lights_punctual lights of the scene's nodes.
@@ -235,24 +286,16 @@ bool node_lights(const GltfDocument& d, const std::vector<PlacedNode>& nodes, Sc
     if (type != "directional" && type != "point")
       warnings.push_back(d.file + ": light " + index->dump() + " of type '" + type +
                          "' becomes a point light");
-    double intensity = 1.0, c[3] = {1.0, 1.0, 1.0};
     std::string what;
-    bool ok = number_at(l, {"intensity"}, 1.0, 0.0, kMaxColorComponent, intensity, what);
-    for (size_t k = 0; k < 3 && ok && l.contains("color") && l["color"].is_array(); ++k) {
-      ok = l["color"].size() > k && l["color"][k].is_number();
-      c[k] = ok ? l["color"][k].get<double>() : 0.0;
-      ok = ok && c[k] >= 0.0 && c[k] <= kMaxColorComponent;
-    }
-    light.position = glm::vec3(placed.world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    const glm::dvec3 position(placed.world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    light.position = glm::vec3(position);
     light.direction = glm::vec3(glm::normalize(glm::dvec3(placed.world * glm::dvec4(0, 0, -1, 0))));
-    if (!ok || glm::any(glm::greaterThan(glm::abs(light.position), glm::vec3(1e15f)))) {
-      error = d.file + ": light " + index->dump() +
-              ": colour or intensity outside [0, 1e6], or "
-              "a position beyond 1e15";
+    if (glm::any(glm::greaterThan(glm::abs(position), glm::dvec3(kMaxCoordinate))))
+      what = "nodes[" + std::to_string(placed.node) + "] places it beyond 1e15";
+    if (!what.empty() || !light_values(l, light, what)) {
+      error = d.file + ": extensions.KHR_lights_punctual.lights[" + index->dump() + "]: " + what;
       return false;
     }
-    light.intensity = float(intensity);
-    light.color = glm::vec3(float(c[0]), float(c[1]), float(c[2]));
     scene.lights.push_back(light);
   }
   return scene.lights.size() <= kMaxSceneLights ||
@@ -287,7 +330,7 @@ bool gltf_scene_settings(const GltfDocument& d, Scene& scene, bool& has_image, b
     has_ambient = has_ambient || key == "ambient";
   }
   if (!parse_scene(text.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
-                   d.file + " (extras.gfield)", scene, error))
+                   d.file + " (extras.gfield)", scene, error, d.outside_paths))
     return false;
   scene.filename = d.file;
   if (scene.purpose.empty())
@@ -307,27 +350,31 @@ std::string gltf_asset_name(const std::string& filename, int index, const std::s
          (clean.empty() ? "" : "-" + clean);
 }
 
-bool append_gltf_objects(const std::string& filename, const glm::dmat4& placement, Scene& scene,
+bool append_gltf_objects(const std::string& filename, OutsidePaths outside,
+                         const glm::dmat4& placement, Scene& scene,
                          std::vector<std::string>& warnings, std::string& error) {
   GltfDocument d;
   std::vector<PlacedNode> nodes;
-  return load_gltf_document(filename, d, error) && scene_nodes(d, nodes, error) &&
-         append_objects(d, nodes, placement, scene, warnings, error);
+  if (!load_gltf_document(filename, outside, d, error) || !scene_nodes(d, nodes, error))
+    return false;
+  mesh_bounds(d, nodes, warnings);  // for its warnings: gfield reads the bounds of the data
+  return append_objects(d, nodes, placement, scene, warnings, error);
 }
 
-bool load_gltf_scene(const std::string& filename, Scene& scene, std::vector<std::string>& warnings,
-                     std::string& error) {
+bool load_gltf_scene(const std::string& filename, OutsidePaths outside, Scene& scene,
+                     std::vector<std::string>& warnings, std::string& error) {
   GltfDocument d;
   std::vector<PlacedNode> nodes;
-  if (!load_gltf_document(filename, d, error) || !scene_nodes(d, nodes, error))
+  if (!load_gltf_document(filename, outside, d, error) || !scene_nodes(d, nodes, error))
     return false;
+  const std::map<int, Bounds> bounds = mesh_bounds(d, nodes, warnings);
   Scene result;
   bool has_image = false, has_ambient = false;
   if (!gltf_scene_settings(d, result, has_image, has_ambient, error))
     return false;
   double aspect = 1.0;
   if (!node_camera(d, nodes, result.camera, aspect, warnings))
-    result.camera = fitted_camera(d, nodes);
+    result.camera = fitted_camera(scene_bounds(d, nodes, bounds));
   else if (!has_image)
     result.height = std::clamp(int(std::lround(result.width / aspect)), 1, 16384);
   if (!append_objects(d, nodes, glm::dmat4(1.0), result, warnings, error) ||

@@ -21,15 +21,19 @@
 
 namespace gfield {
 
-/// Reads glTF file `filename` as a scene. Each mesh's assets are looked for beside the file as
-/// MeshAsset::asset (use_asset_folder points elsewhere). False with "FILE: problem".
-bool load_gltf_scene(const std::string& filename, Scene& scene, std::vector<std::string>& warnings,
-                     std::string& error);
+/// Reads glTF file `filename` as a scene, its URIs confined to its folder unless `outside` is
+/// kAllowed (confined_path.hpp). Each mesh's assets are looked for beside the file as
+/// MeshAsset::asset (use_asset_folder points elsewhere). Bounds (the fitted camera's) come from
+/// the POSITION data; declared min and max that the data contradict are warnings. False with
+/// "FILE: problem".
+bool load_gltf_scene(const std::string& filename, OutsidePaths outside, Scene& scene,
+                     std::vector<std::string>& warnings, std::string& error);
 
 /// Appends the mesh objects of glTF file `filename` (and their meshes) to `scene`, each placed by
 /// `placement` after its node's world matrix: a JSON scene's `"shape": "gltf"` object. Lights
 /// and cameras of the file are not used.
-bool append_gltf_objects(const std::string& filename, const glm::dmat4& placement, Scene& scene,
+bool append_gltf_objects(const std::string& filename, OutsidePaths outside,
+                         const glm::dmat4& placement, Scene& scene,
                          std::vector<std::string>& warnings, std::string& error);
 
 /// The asset name of mesh `index` named `name` of glTF file `filename`: "STEM.INDEX-NAME" (the

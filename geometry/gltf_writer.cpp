@@ -193,7 +193,8 @@ bool export_mesh(GlbBuilder& b, const Scene& scene, const SceneObject& o, Export
   TriangleMesh mesh;
   MeshAppearance a;
   std::vector<std::string> warnings;
-  if (!load_mesh(MeshSource{asset.file, asset.part}, mesh, &a, warnings, error))
+  if (!load_mesh(MeshSource{asset.file, asset.part, asset.outside_paths}, mesh, &a, warnings,
+                 error))
     return false;
   const ExportedMesh m = exported_mesh(mesh, own ? a : MeshAppearance{});
   json& attributes = cache.attributes[{o.shape.mesh, own}];

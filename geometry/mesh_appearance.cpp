@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+
+#include "gfield/limits.hpp"
 
 namespace gfield {
 namespace {
@@ -102,19 +105,46 @@ glm::vec3 footprint_color(const TriangleMesh& mesh, const MeshAppearance& appear
   return color;
 }
 
-bool load_texture_files(const std::string& mesh, const std::vector<std::string>& files,
+bool check_texture_budget(const std::string& name, int width, int height,
+                          const MeshAppearance& appearance, std::string& error) {
+  constexpr std::uint64_t kPixelBytes = sizeof(glm::vec3);
+  std::uint64_t used = 0;
+  for (const MeshTexture& t : appearance.textures)
+    used += t.image.pixels.size() * kPixelBytes;
+  const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * kPixelBytes;
+  if (used + bytes <= kMaxMeshTextureBytes)
+    return true;
+  char text[256];
+  std::snprintf(text, sizeof(text),
+                ": %dx%d pixels take %.3g GB decoded (%d bytes a pixel), beyond the texture "
+                "budget of %.3g GB (2 GiB for a mesh's textures; %.3g GB taken by its others)",
+                width, height, double(bytes) / 1e9, int(kPixelBytes),
+                double(kMaxMeshTextureBytes) / 1e9, double(used) / 1e9);
+  error = name + text;
+  return false;
+}
+
+bool load_texture_files(const std::string& mesh, const std::vector<std::string>& files, bool pixels,
                         MeshAppearance& appearance, std::vector<std::string>& warnings,
                         std::string& error) {
   for (const std::string& file : files) {
     MeshTexture texture{file, Image(1, 1, glm::vec3(kMissingTextureGrey))};
     std::error_code ec;
     const bool present = std::filesystem::is_regular_file(file, ec);
+    std::string why;
+    int width = 0, height = 0;
     if (!present || !std::ifstream(file, std::ios::binary)) {
       warnings.push_back(mesh + ": texture " + file + ": " +
                          (present ? "not readable" : "no such file") + "; mid-grey albedo");
-    } else if (std::string why; !load_image(file, texture.image, why)) {
+    } else if (!load_image_size(file, width, height, why) ||
+               (pixels && (!check_texture_budget(file, width, height, appearance, why) ||
+                           !load_image(file, texture.image, why)))) {
       error = mesh + ": texture " + why;
       return false;
+    } else if (!pixels) {
+      texture.image = Image();
+      texture.image.width = width;
+      texture.image.height = height;
     }
     appearance.textures.push_back(std::move(texture));
   }

@@ -31,7 +31,9 @@ struct BaseColorMaterial {
 /// A decoded texture.
 struct MeshTexture {
   std::string name;  ///< the image file, or "FILE: image N" for one embedded in a glTF file
-  Image image;       ///< linear RGB, row 0 at the top; 1 x 1 mid-grey when the file is missing
+  /// Linear RGB, row 0 at the top; 1 x 1 mid-grey when the file is missing. Read without pixels
+  /// (MeshSource::texture_pixels false): the width and height its header claims, no pixels.
+  Image image;
 };
 
 /// Every attribute is optional (empty when the file has none).
@@ -71,11 +73,18 @@ glm::vec3 base_color_at(const TriangleMesh& mesh, const MeshAppearance& appearan
 glm::vec3 footprint_color(const TriangleMesh& mesh, const MeshAppearance& appearance, size_t face,
                           glm::dvec3 w, glm::vec2 du, glm::vec2 dv);
 
-/// Decodes the texture files `files` into `appearance.textures` (same order): a missing or
-/// unreadable file gives a mid-grey stand-in and a warning "MESH: texture FILE: no such file;
-/// mid-grey albedo"; a file that is there but is no image load_image decodes is an error
+/// Checks that texture `name` of `width` x `height` pixels, decoded, fits in what the textures
+/// of `appearance` leave of kMaxMeshTextureBytes: false with "NAME: WxH pixels ... budget ...".
+bool check_texture_budget(const std::string& name, int width, int height,
+                          const MeshAppearance& appearance, std::string& error);
+
+/// Decodes the texture files `files` into `appearance.textures` (same order), each checked
+/// against the texture budget (check_texture_budget) before it is decoded; with `pixels` false
+/// reads their headers only (MeshTexture). A missing or unreadable file gives a mid-grey
+/// stand-in and a warning "MESH: texture FILE: no such file; mid-grey albedo"; a file that is
+/// there but is no image load_image decodes, or is beyond the budget, is an error
 /// "MESH: texture FILE: problem".
-bool load_texture_files(const std::string& mesh, const std::vector<std::string>& files,
+bool load_texture_files(const std::string& mesh, const std::vector<std::string>& files, bool pixels,
                         MeshAppearance& appearance, std::vector<std::string>& warnings,
                         std::string& error);
 

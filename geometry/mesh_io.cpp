@@ -23,29 +23,39 @@ std::string lower_extension(const std::string& filename) {
   return ext;
 }
 
-/// The appearance of what a reader of `filename` read: corner uvs from their indices, the
-/// materials with their libraries (OBJ) or the file's texture (PLY), the textures decoded.
-bool soup_appearance(const std::string& filename, MeshSoup& soup, MeshAppearance& appearance,
+/// The appearance of what a reader of `source` read: corner uvs from their indices, the
+/// materials with their libraries (OBJ) or the file's texture (PLY), the textures decoded (or
+/// their headers read).
+bool soup_appearance(const MeshSource& source, MeshSoup& soup, MeshAppearance& appearance,
                      std::vector<std::string>& warnings, std::string& error) {
+  const std::string& filename = source.file;
   appearance = MeshAppearance{};
   appearance.corner_uv.reserve(soup.corner_uvs.size());
   for (const std::int32_t index : soup.corner_uvs) {
     appearance.corner_uv.push_back(index >= 0 ? soup.uvs[size_t(index)] : glm::vec2(0.0f));
   }
-  if (!soup.libraries.empty() && !read_material_libraries(filename, soup, warnings, error)) {
+  if (!soup.libraries.empty() &&
+      !read_material_libraries(filename, source.outside_paths, soup, warnings, error)) {
     return false;
   }
   const std::filesystem::path folder = std::filesystem::path(filename).parent_path();
   if (soup.libraries.empty() && !soup.texture_files.empty()) {  // PLY: one texture for all
     soup.texture_files.resize(1);
-    soup.texture_files[0] = (folder / soup.texture_files[0]).lexically_normal().string();
+    const std::string name = soup.texture_files[0];
+    std::string problem;
+    if (!resolve_named_path(folder, name, folder, source.outside_paths, soup.texture_files[0],
+                            problem)) {
+      error = filename + ": comment TextureFile " + problem;
+      return false;
+    }
     soup.materials = {{"TextureFile", glm::vec3(1.0f), 0}};
     soup.face_material.assign(soup.mesh.triangles.size(), 0);
   }
   appearance.vertex_color = std::move(soup.vertex_color);
   appearance.face_material = std::move(soup.face_material);
   appearance.materials = std::move(soup.materials);
-  return load_texture_files(filename, soup.texture_files, appearance, warnings, error);
+  return load_texture_files(filename, soup.texture_files, source.texture_pixels, appearance,
+                            warnings, error);
 }
 
 }  // namespace
@@ -102,7 +112,7 @@ bool load_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* app
             " vertices read; triangle strips and point clouds are not supported)";
     return false;
   }
-  if (appearance != nullptr && !soup_appearance(filename, soup, *appearance, warnings, error)) {
+  if (appearance != nullptr && !soup_appearance(source, soup, *appearance, warnings, error)) {
     return false;
   }
   mesh = std::move(soup.mesh);

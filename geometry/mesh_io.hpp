@@ -13,6 +13,8 @@
 
 #include <glm/glm.hpp>
 
+#include "gfield/confined_path.hpp"
+
 namespace gfield {
 
 /// An indexed triangle mesh. Positions in mesh (file) coordinates; triangles index positions,
@@ -30,12 +32,18 @@ struct MeshLoadStats {
 
 struct MeshAppearance;
 
-/// A mesh to read: a file and, for a glTF file, which of its meshes.
+/// A mesh to read: a file and, for a glTF file, which of its meshes; how to read what it names.
 struct MeshSource {
   std::string file;
   /// glTF: a mesh's name, or its index when no mesh has that name; "" reads every primitive of
   /// the file's scene, placed by its nodes, as one mesh. Other formats: "" only.
   std::string part;
+  /// The files the mesh names (glTF buffers and images, OBJ material libraries and their maps, a
+  /// PLY's texture) must lie in the mesh file's folder unless kAllowed (confined_path.hpp).
+  OutsidePaths outside_paths = OutsidePaths::kRefused;
+  /// false: textures are read to their headers (MeshTexture::image gets the width and height
+  /// they claim, no pixels): for commands that need no pixels (`gfield info`).
+  bool texture_pixels = true;
 };
 
 /// Reads `filename` (.obj, .ply, .off, .stl, .gltf, .glb; case-insensitive extension). False

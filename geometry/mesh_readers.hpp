@@ -68,8 +68,9 @@ bool read_obj(std::string_view data, MeshSoup& soup, ReadFailure& failure);
 /// Reads the material libraries soup.libraries of OBJ file `obj` (relative to its folder) and
 /// gives soup.materials their Kd and map_Kd (soup.texture_files). A missing library and a
 /// material no library defines are warnings (white materials); a malformed library is an error
-/// "OBJ: material library FILE:LINE: problem".
-bool read_material_libraries(const std::string& obj, MeshSoup& soup,
+/// "OBJ: material library FILE:LINE: problem", and so is a library or map outside the OBJ file's
+/// folder unless `outside` is kAllowed (confined_path.hpp).
+bool read_material_libraries(const std::string& obj, OutsidePaths outside, MeshSoup& soup,
                              std::vector<std::string>& warnings, std::string& error);
 bool read_off(std::string_view data, MeshSoup& soup, ReadFailure& failure);
 bool read_ply(std::string_view data, MeshSoup& soup, ReadFailure& failure);

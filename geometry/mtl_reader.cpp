@@ -54,8 +54,15 @@ bool read_kd(text::Words& words, glm::vec3& color, std::string& what) {
   return true;
 }
 
-/// Parses library `data`; textures are resolved against `folder`.
-bool parse_library(std::string_view data, const fs::path& folder, Library& library,
+/// Where a library's maps may lie: resolved against the library's folder, inside `root` (the
+/// OBJ file's folder) unless `outside` is kAllowed.
+struct MapPaths {
+  fs::path folder, root;
+  OutsidePaths outside = OutsidePaths::kRefused;
+};
+
+/// Parses library `data`; textures are resolved as `paths` say.
+bool parse_library(std::string_view data, const MapPaths& paths, Library& library,
                    ReadFailure& failure) {
   text::Lines lines(data);
   std::string_view line;
@@ -87,7 +94,12 @@ bool parse_library(std::string_view data, const fs::path& folder, Library& libra
         failure.what = "map_Kd without a file";
         return false;
       }
-      current->texture = (folder / std::string(file)).lexically_normal().string();
+      std::string problem;
+      if (!resolve_named_path(paths.folder, std::string(file), paths.root, paths.outside,
+                              current->texture, problem)) {
+        failure.what = "map_Kd " + problem;
+        return false;
+      }
     }
   }
   failure.line = 0;
@@ -96,11 +108,17 @@ bool parse_library(std::string_view data, const fs::path& folder, Library& libra
 
 }  // namespace
 
-bool read_material_libraries(const std::string& obj, MeshSoup& soup,
+bool read_material_libraries(const std::string& obj, OutsidePaths outside, MeshSoup& soup,
                              std::vector<std::string>& warnings, std::string& error) {
   Library library;
+  const fs::path folder = fs::path(obj).parent_path();
   for (const std::string& name : soup.libraries) {
-    const fs::path path = (fs::path(obj).parent_path() / name).lexically_normal();
+    std::string resolved, problem;
+    if (!resolve_named_path(folder, name, folder, outside, resolved, problem)) {
+      error = obj + ": mtllib " + problem;
+      return false;
+    }
+    const fs::path path = resolved;
     std::string data;
     std::error_code ec;
     if (!fs::is_regular_file(path, ec) ||
@@ -111,7 +129,7 @@ bool read_material_libraries(const std::string& obj, MeshSoup& soup,
       continue;
     }
     ReadFailure failure;
-    if (!parse_library(data, path.parent_path(), library, failure)) {
+    if (!parse_library(data, {path.parent_path(), folder, outside}, library, failure)) {
       error = obj + ": material library " + path.string() +
               (failure.line > 0 ? ":" + std::to_string(failure.line) : "") + ": " + failure.what;
       return false;

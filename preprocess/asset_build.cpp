@@ -140,7 +140,8 @@ nlohmann::json asset_options_to_json(const AssetOptions& o) {
 
 bool asset_build_inputs(const std::string& mesh_path, const AssetOptions& options,
                         BuildInputs& inputs, std::string& error) {
-  return hash_build_inputs(mesh_path, asset_options_to_json(options), inputs, error);
+  return hash_build_inputs(mesh_path, asset_options_to_json(options), options.outside_paths, inputs,
+                           error);
 }
 
 namespace {
@@ -230,6 +231,7 @@ bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
     verify.rays = options.verify_rays;
     verify.original = mesh_path;
     verify.original_part = options.part;
+    verify.original_outside_paths = options.outside_paths;
     nlohmann::json accuracy;
     if (!verify_asset_files(staged, name, verify, accuracy, error)) {
       return false;
@@ -259,7 +261,8 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
   TriangleMesh mesh;
   MeshAppearance appearance;
   std::vector<std::string> warnings;
-  if (!load_mesh(MeshSource{mesh_path, options.part}, mesh, &appearance, warnings, error)) {
+  if (!load_mesh(MeshSource{mesh_path, options.part, options.outside_paths}, mesh, &appearance,
+                 warnings, error)) {
     return false;
   }
   AssetStaging staging;

@@ -47,6 +47,9 @@ struct AssetOptions {
   int field_layers = kAutoLayers;
   ExrPrecision field_precision = ExrPrecision::kHalf;
   size_t verify_rays = 100000;  ///< rays per family of the report's accuracy (0: skip)
+  /// Files the mesh names outside its folder (MeshSource::outside_paths). Not hashed: it decides
+  /// what is read, not what is made of it.
+  OutsidePaths outside_paths = OutsidePaths::kRefused;
 };
 
 /// Every geometry-image option, as hashed into build ids (`gfield image`, `gfield build`).

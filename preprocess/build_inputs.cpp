@@ -39,33 +39,47 @@ bool is_texture_key(const std::string& key) {
                       [&](const char* k) { return key == k; }) != std::end(kTextureKeys);
 }
 
-/// Texture maps named by the MTL file `mtl` (paths relative to its folder, then to ours).
-void add_material_maps(const fs::path& mtl, std::vector<std::string>& files) {
+/// Appends `name`, named by a file in `base`, to `files` when it may be read (inside `root`, or
+/// anywhere when `outside` is kAllowed: confined_path.hpp); false when it may not.
+bool add_named(const fs::path& base, const std::string& name, const fs::path& root,
+               OutsidePaths outside, std::vector<std::string>& files) {
+  std::string file, problem;
+  if (!resolve_named_path(base, name, root, outside, file, problem))
+    return false;
+  files.push_back(file);
+  return true;
+}
+
+/// Texture maps named by the MTL file `mtl` (paths relative to its folder), those that may be
+/// read from `root` (the OBJ file's folder).
+void add_material_maps(const fs::path& mtl, const fs::path& root, OutsidePaths outside,
+                       std::vector<std::string>& files) {
   std::ifstream in(mtl);
   for (std::string line; std::getline(in, line);) {
     const std::vector<std::string> t = tokens(line);
     if (t.size() >= 2 && is_texture_key(t[0])) {
-      files.push_back((mtl.parent_path() / t.back()).string());
+      add_named(mtl.parent_path(), t.back(), root, outside, files);
     }
   }
 }
 
 }  // namespace
 
-std::vector<std::string> mesh_texture_files(const std::string& mesh_path) {
+std::vector<std::string> mesh_texture_files(const std::string& mesh_path, OutsidePaths outside) {
   std::string ext = fs::path(mesh_path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   std::vector<std::string> files;
   if (ext == ".gltf" || ext == ".glb") {
-    return gltf_external_files(mesh_path);
+    return gltf_external_files(mesh_path, outside);
   }
+  const fs::path folder = fs::path(mesh_path).parent_path();
   if (ext == ".ply") {  // "comment TextureFile NAME" in the header
     std::ifstream in(mesh_path, std::ios::binary);
     for (std::string line; std::getline(in, line) && line.rfind("end_header", 0) != 0;) {
       const std::vector<std::string> t = tokens(line);
       if (t.size() >= 3 && t[0] == "comment" && t[1] == "TextureFile") {
-        files.push_back((fs::path(mesh_path).parent_path() / t[2]).string());
+        add_named(folder, t[2], folder, outside, files);
       }
     }
     return files;
@@ -80,16 +94,17 @@ std::vector<std::string> mesh_texture_files(const std::string& mesh_path) {
     }
     const std::vector<std::string> t = tokens(line);
     for (size_t i = 1; i < t.size(); ++i) {
-      const fs::path mtl = fs::path(mesh_path).parent_path() / t[i];
-      files.push_back(mtl.string());
-      add_material_maps(mtl, files);
+      if (add_named(folder, t[i], folder, outside, files)) {
+        const fs::path mtl = files.back();
+        add_material_maps(mtl, folder, outside, files);
+      }
     }
   }
   return files;
 }
 
 bool hash_build_inputs(const std::string& mesh_path, const nlohmann::json& options,
-                       BuildInputs& inputs, std::string& error) {
+                       OutsidePaths outside, BuildInputs& inputs, std::string& error) {
   if (const std::string problem = file_problem(mesh_path); !problem.empty()) {
     error = mesh_path + ": " + (problem == "no such file" ? "no such mesh file" : problem);
     return false;
@@ -101,7 +116,7 @@ bool hash_build_inputs(const std::string& mesh_path, const nlohmann::json& optio
   }
   nlohmann::json textures = nlohmann::json::array();
   const fs::path mesh_folder = fs::path(mesh_path).parent_path();
-  for (const std::string& file : mesh_texture_files(mesh_path)) {
+  for (const std::string& file : mesh_texture_files(mesh_path, outside)) {
     std::string hash;
     std::string ignored;
     const bool found = fs::is_regular_file(file, ec) && sha256_file(file, hash, ignored);

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gfield/confined_path.hpp"
+
 namespace gfield {
 
 /// Hex digits of a build id: the first 128 bits of a SHA-256.
@@ -25,12 +27,14 @@ struct BuildInputs {
 /// The texture files a mesh names, as paths relative to the working folder: for an OBJ, its
 /// mtllib files and the maps (map_Kd, bump, ...) they name; for a glTF file, its external
 /// buffers and images; for a PLY, its "comment TextureFile" files; none for OFF and STL. Files that
-/// do not exist are listed too (their appearance changes the build).
-std::vector<std::string> mesh_texture_files(const std::string& mesh_path);
+/// do not exist are listed too (their appearance changes the build); files outside the mesh's
+/// folder only when `outside` is kAllowed (the build refuses them otherwise: confined_path.hpp).
+std::vector<std::string> mesh_texture_files(const std::string& mesh_path, OutsidePaths outside);
 
 /// Hashes the inputs of building `mesh_path` with `options` (an object of every output-changing
-/// option). False with an error "FILE: problem" when the mesh cannot be read.
+/// option), reading the files it names as mesh_texture_files lists them. False with an error
+/// "FILE: problem" when the mesh cannot be read.
 bool hash_build_inputs(const std::string& mesh_path, const nlohmann::json& options,
-                       BuildInputs& inputs, std::string& error);
+                       OutsidePaths outside, BuildInputs& inputs, std::string& error);
 
 }  // namespace gfield

@@ -227,8 +227,8 @@ struct ReferenceTracer::Impl {
   bool build_mesh(MeshRecord& record, const MeshAsset& asset, std::string& error) {
     const std::string& file = asset.file;
     std::vector<std::string> warnings;  // the tools print them when they read the scene
-    if (!load_mesh(MeshSource{asset.file, asset.part}, record.mesh, &record.appearance, warnings,
-                   error))
+    if (!load_mesh(MeshSource{asset.file, asset.part, asset.outside_paths}, record.mesh,
+                   &record.appearance, warnings, error))
       return false;
     const TriangleMesh& mesh = record.mesh;
     record.orientation = outward_orientation(mesh);

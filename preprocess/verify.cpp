@@ -395,7 +395,7 @@ MeshSource find_original(const std::string& name, const std::string& report_path
                          const VerifyOptions& options, const std::string& source) {
   namespace fs = std::filesystem;
   if (!options.original.empty()) {
-    return {options.original, options.original_part};
+    return {options.original, options.original_part, options.original_outside_paths};
   }
   std::ifstream report_file(report_path);
   if (report_file) {
@@ -404,16 +404,16 @@ MeshSource find_original(const std::string& name, const std::string& report_path
         fs::exists(report["source_path"].get<std::string>())) {
       const bool part = report.contains("mesh_part") && report["mesh_part"].is_string();
       return {report["source_path"].get<std::string>(),
-              part ? report["mesh_part"].get<std::string>() : ""};
+              part ? report["mesh_part"].get<std::string>() : "", options.original_outside_paths};
     }
   }
   if (!source.empty()) {
     if (fs::exists(source)) {
-      return {source, ""};
+      return {source, "", options.original_outside_paths};
     }
     const fs::path beside = fs::path(name).parent_path() / fs::path(source).filename();
     if (fs::exists(beside)) {
-      return {beside.string(), ""};
+      return {beside.string(), "", options.original_outside_paths};
     }
   }
   return {};

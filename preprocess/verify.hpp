@@ -8,6 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "gfield/confined_path.hpp"
 #include "gfield/field_lookup.hpp"
 #include "preprocess/asset_files.hpp"
 #include "preprocess/embree_mesh.hpp"
@@ -101,6 +102,8 @@ struct VerifyOptions {
   int field_bits = 32;
   std::string original;       ///< original mesh file; empty: from NAME.report.json or the source
   std::string original_part;  ///< glTF: its mesh (MeshSource::part); from the report with it
+  /// Whether the original mesh may read files outside its folder (--allow-outside-paths).
+  OutsidePaths original_outside_paths = OutsidePaths::kRefused;
 };
 
 /// Verifies the asset NAME (NAME.gfield.exr, NAME.gimage.exr, NAME.gimage.obj) against the mesh

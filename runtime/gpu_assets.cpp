@@ -347,7 +347,8 @@ bool GpuAssets::load_source_meshes(const Scene& scene, std::string& error) {
     TriangleMesh mesh;
     std::vector<std::string> warnings;  // the tools print them when they read the scene
     const MeshAsset& asset = scene.meshes[m];
-    if (!load_mesh(MeshSource{asset.file, asset.part}, mesh, &appearances[m], warnings, error))
+    if (!load_mesh(MeshSource{asset.file, asset.part, asset.outside_paths}, mesh, &appearances[m],
+                   warnings, error))
       return false;
     std::vector<GpuVertex> vertices;
     std::vector<unsigned> indices;

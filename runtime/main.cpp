@@ -42,6 +42,7 @@ struct Arguments {
   std::string scene_file, size_text, shader_dir = default_shader_dir().string(), asset_dir;
   std::string camera_text;
   bool headless = false;
+  bool allow_outside_paths = false;
   HeadlessOptions headless_options;
 };
 
@@ -90,6 +91,9 @@ void add_common_options(CLI::App& app, Arguments& a) {
                  "Folder of prebuilt assets: NAME.gimage.exr/.gfield.exr for mesh NAME.obj, found "
                  "there before those beside the mesh (gfield build MESH -o DIR/NAME); the assets "
                  "of glTF meshes are built there on demand (default: beside the glTF file)");
+  app.add_flag("--allow-outside-paths", a.allow_outside_paths,
+               "Read the files that a glTF file or a mesh names outside its folder, and that a "
+               "scene names outside its root (docs/scenes.md, \"Confined paths\")");
 }
 
 /// Checks what the options say against each other, before anything is loaded (a glTF scene's
@@ -114,7 +118,9 @@ std::string check_options(Arguments& a) {
 /// Loads the scene and checks the view against it; "" when all is well.
 std::string load_and_check_scene(Arguments& a, Scene& scene) {
   std::string error;
-  if (!load_view_scene(a.scene_file, a.asset_dir, scene, error))
+  const OutsidePaths outside =
+      a.allow_outside_paths ? OutsidePaths::kAllowed : OutsidePaths::kRefused;
+  if (!load_view_scene(a.scene_file, a.asset_dir, outside, scene, error))
     return error;
   if (!a.camera_text.empty() && !parse_camera_text(a.camera_text, scene.camera, error))
     return "--camera " + a.camera_text + ": " + error;
@@ -159,7 +165,8 @@ int main(int argc, char** argv) {
   viewer.method = session.find(a.headless_options.method);
   viewer.width = a.headless_options.width;
   viewer.height = a.headless_options.height;
-  viewer.command =
-      "gfield-view " + a.scene_file + (a.asset_dir.empty() ? "" : " --assets " + a.asset_dir);
+  viewer.command = "gfield-view " + a.scene_file +
+                   (a.asset_dir.empty() ? "" : " --assets " + a.asset_dir) +
+                   (a.allow_outside_paths ? " --allow-outside-paths" : "");
   return run_viewer(session, scene, a.shader_dir, viewer);
 }

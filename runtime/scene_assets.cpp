@@ -58,10 +58,10 @@ std::string gfield_executable() {
   return "gfield";
 }
 
-bool load_view_scene(const std::string& filename, const std::string& asset_dir, Scene& scene,
-                     std::string& error) {
+bool load_view_scene(const std::string& filename, const std::string& asset_dir,
+                     OutsidePaths outside, Scene& scene, std::string& error) {
   std::vector<std::string> warnings;
-  if (!load_scene_file(filename, scene, warnings, error))
+  if (!load_scene_file(filename, scene, warnings, error, outside))
     return false;
   for (const std::string& w : warnings)
     std::fprintf(stderr, "gfield-view: warning: %s\n", printable(w).c_str());
@@ -69,6 +69,8 @@ bool load_view_scene(const std::string& filename, const std::string& asset_dir, 
     std::vector<std::string> command = {gfield_executable(), "assets", filename};
     if (!asset_dir.empty())
       command.insert(command.end(), {"--assets", asset_dir});
+    if (outside == OutsidePaths::kAllowed)
+      command.push_back("--allow-outside-paths");
     const int status = run_child(command);
     if (status != 0) {
       error = filename + ": building its glTF meshes' assets failed (" + command[0] + " assets " +
@@ -76,7 +78,7 @@ bool load_view_scene(const std::string& filename, const std::string& asset_dir, 
       return false;
     }
     warnings.clear();
-    if (!load_scene_file(filename, scene, warnings, error))
+    if (!load_scene_file(filename, scene, warnings, error, outside))
       return false;
   }
   if (!asset_dir.empty() && !use_asset_folder(asset_dir, scene, error)) {

@@ -16,10 +16,12 @@ namespace gfield {
 /// executable, else the build tree's, else "gfield" (found on the PATH).
 std::string gfield_executable();
 
-/// Reads `filename` into `scene`, printing its warnings on stderr ("gfield-view: warning: ...").
-/// When it holds glTF meshes, runs `gfield assets` first (its output goes to stderr). With
-/// `asset_dir`, the assets found there are used (use_asset_folder). False with a one-line error.
-bool load_view_scene(const std::string& filename, const std::string& asset_dir, Scene& scene,
-                     std::string& error);
+/// Reads `filename` into `scene`, printing its warnings on stderr ("gfield-view: warning: ...");
+/// files outside the scene's root (or a glTF file's folder) only when `outside` is kAllowed
+/// (--allow-outside-paths, passed on to `gfield assets`). When it holds glTF meshes, runs
+/// `gfield assets` first (its output goes to stderr). With `asset_dir`, the assets found there
+/// are used (use_asset_folder). False with a one-line error.
+bool load_view_scene(const std::string& filename, const std::string& asset_dir,
+                     OutsidePaths outside, Scene& scene, std::string& error);
 
 }  // namespace gfield

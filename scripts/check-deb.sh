@@ -56,9 +56,10 @@ unexpected=$(comm -13 <(echo "$expected") <(echo "$contents"))
 missing=$(comm -23 <(echo "$expected") <(echo "$contents"))
 [ -z "$unexpected" ] || fail "the package holds files it should not:"$'\n'"$unexpected"
 [ -z "$missing" ] || fail "the package lacks:"$'\n'"$missing"
-# The shipped scenes and meshes are every file git tracks in data/scenes and data/meshes.
+# The shipped scenes and meshes are every file git tracks in data/scenes and data/meshes, and the
+# marker that makes share/gfield their root (docs/scenes.md, "Confined paths").
 if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
-  tracked=$(git ls-files data/scenes data/meshes | sed 's|^data/|share/gfield/|' | sort)
+  tracked=$(git ls-files data/scenes data/meshes data/.gfield-root | sed 's|^data/|share/gfield/|' | sort)
   if [ "$tracked" != "$(sort "$shipped")" ]; then
     fail "cmake/install.cmake's lists differ from the files git tracks in data/ (< tracked, > listed):"$'\n'"$(diff <(echo "$tracked") <(sort "$shipped") | grep '^[<>]')"
   fi

@@ -48,6 +48,19 @@ std::string lower_extension(const std::string& filename) {
   return ext;
 }
 
+/// The data window's size of an EXR picture, checked as load_exr checks it.
+bool exr_size(const std::string& filename, int& width, int& height, std::string& error) {
+  std::unique_ptr<Imf::InputFile> file;
+  if (!open_exr_input(filename, kMaxPictureSide, kMaxPictureSide, {"R", "G", "B", "Y"}, file,
+                      error)) {
+    return false;
+  }
+  const Imath::Box2i window = file->header().dataWindow();
+  width = window.max.x - window.min.x + 1;
+  height = window.max.y - window.min.y + 1;
+  return check_pixel_count(filename, width, height, error);
+}
+
 bool load_exr(const std::string& filename, Image& image, std::string& error) {
   std::unique_ptr<Imf::InputFile> file;
   if (!open_exr_input(filename, kMaxPictureSide, kMaxPictureSide, {"R", "G", "B", "Y"}, file,
@@ -105,11 +118,55 @@ std::uint64_t min_file_bytes(const stbi_uc* bytes, int size, int width, int heig
   return w * h * 3 / kMaxCompressionRatio;
 }
 
-/// Checks what a PNG, JPEG or HDR header claims (stbi_info) against the limits and the data's
-/// size before stb_image allocates for it.
-bool check_stb_header(const std::string& name, const stbi_uc* bytes, int size, std::string& error) {
-  int width = 0, height = 0, components = 0;
-  if (!stbi_info_from_memory(bytes, size, &width, &height, &components)) {
+std::uint32_t big_endian(const stbi_uc* bytes, int count) {
+  std::uint32_t value = 0;
+  for (int k = 0; k < count; ++k)
+    value = value << 8 | bytes[k];
+  return value;
+}
+
+/// The size a PNG's IHDR or a JPEG's frame header claims, read here because stb_image refuses a
+/// picture beyond its own size limit in its header check as an "unknown image type". False for
+/// other data (and for a JPEG without a frame header before its scan).
+bool png_or_jpeg_size(const stbi_uc* bytes, int size, int& width, int& height) {
+  if (size >= 24 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0 &&
+      std::memcmp(bytes + 12, "IHDR", 4) == 0) {
+    width = int(std::min<std::uint32_t>(big_endian(bytes + 16, 4), 0x7FFFFFFFu));
+    height = int(std::min<std::uint32_t>(big_endian(bytes + 20, 4), 0x7FFFFFFFu));
+    return true;
+  }
+  if (size < 4 || bytes[0] != 0xFF || bytes[1] != 0xD8)
+    return false;
+  // Segments: 0xFF, a marker, a 2-byte length counting itself (none for RSTn, SOI, TEM).
+  for (int i = 2; i + 3 < size;) {
+    if (bytes[i] != 0xFF)
+      return false;
+    const stbi_uc marker = bytes[i + 1];
+    if (marker == 0xFF || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD8)) {
+      i += marker == 0xFF ? 1 : 2;  // fill byte, or a marker without a length
+      continue;
+    }
+    if (marker == 0xDA || marker == 0xD9)  // the scan (or the end) before any frame header
+      return false;
+    const bool frame =
+        marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+    if (frame && i + 9 <= size) {
+      height = int(big_endian(bytes + i + 5, 2));
+      width = int(big_endian(bytes + i + 7, 2));
+      return true;
+    }
+    i += 2 + int(big_endian(bytes + i + 2, 2));
+  }
+  return false;
+}
+
+/// Checks what a PNG, JPEG or HDR header claims against the limits and the data's size before
+/// stb_image allocates for it; the size it claims in `width`, `height`.
+bool check_stb_header(const std::string& name, const stbi_uc* bytes, int size, int& width,
+                      int& height, std::string& error) {
+  int components = 0;
+  if (!png_or_jpeg_size(bytes, size, width, height) &&
+      !stbi_info_from_memory(bytes, size, &width, &height, &components)) {
     error = name + ": cannot read image: " + stbi_failure_reason();
     return false;
   }
@@ -129,10 +186,10 @@ bool check_stb_header(const std::string& name, const stbi_uc* bytes, int size, s
 /// converted to linear; HDR is linear already.
 bool decode_stb(const std::string& name, const stbi_uc* bytes, int size, Image& image,
                 std::string& error) {
-  if (!check_stb_header(name, bytes, size, error)) {
+  int width = 0, height = 0, components = 0;
+  if (!check_stb_header(name, bytes, size, width, height, error)) {
     return false;
   }
-  int width = 0, height = 0, components = 0;
   if (stbi_is_hdr_from_memory(bytes, size)) {
     std::unique_ptr<float, void (*)(void*)> data(
         stbi_loadf_from_memory(bytes, size, &width, &height, &components, 3), stbi_image_free);
@@ -177,6 +234,38 @@ bool decode_stb(const std::string& name, const stbi_uc* bytes, int size, Image& 
     }
   }
   image = std::move(result);
+  return true;
+}
+
+/// An image file's reader, by its extension.
+enum class ImageKind { kExr, kStb, kNone };
+
+/// The reader of `filename`; kNone with `error` when it is no file or has another extension.
+ImageKind image_kind(const std::string& filename, std::string& error) {
+  if (const std::string problem = file_problem(filename); !problem.empty()) {
+    error = filename + ": " + problem;
+    return ImageKind::kNone;
+  }
+  const std::string ext = lower_extension(filename);
+  if (ext == ".exr")
+    return ImageKind::kExr;
+  if (ext == ".hdr" || ext == ".png" || ext == ".jpg" || ext == ".jpeg")
+    return ImageKind::kStb;
+  error = filename + ": unknown image extension \"" + ext +
+          "\" (expected .exr, .hdr, .png, .jpg or .jpeg)";
+  return ImageKind::kNone;
+}
+
+/// Image data held in memory: 1 byte to 2 GiB (stb_image counts in int).
+bool check_data_size(const std::string& name, size_t size, std::string& error) {
+  if (size == 0) {
+    error = name + ": empty image data";
+    return false;
+  }
+  if (size > size_t(std::numeric_limits<int>::max())) {
+    error = name + ": image data of " + std::to_string(size) + " bytes (at most 2 GiB)";
+    return false;
+  }
   return true;
 }
 
@@ -263,33 +352,31 @@ glm::vec3 sample_bilinear(const Image& image, float x, float y, bool wrap_x) {
 }
 
 bool load_image(const std::string& filename, Image& image, std::string& error) {
-  if (const std::string problem = file_problem(filename); !problem.empty()) {
-    error = filename + ": " + problem;
-    return false;
-  }
-  const std::string ext = lower_extension(filename);
-  if (ext == ".exr") {
-    return load_exr(filename, image, error);
-  }
-  if (ext == ".hdr" || ext == ".png" || ext == ".jpg" || ext == ".jpeg") {
-    return load_stb(filename, image, error);
-  }
-  error = filename + ": unknown image extension \"" + ext +
-          "\" (expected .exr, .hdr, .png, .jpg or .jpeg)";
-  return false;
+  const ImageKind kind = image_kind(filename, error);
+  return kind == ImageKind::kExr   ? load_exr(filename, image, error)
+         : kind == ImageKind::kStb ? load_stb(filename, image, error)
+                                   : false;
+}
+
+bool load_image_size(const std::string& filename, int& width, int& height, std::string& error) {
+  const ImageKind kind = image_kind(filename, error);
+  if (kind == ImageKind::kExr)
+    return exr_size(filename, width, height, error);
+  std::string data;
+  return kind == ImageKind::kStb && read_file(filename, kMaxPictureFileBytes, data, error) &&
+         decode_image_size(filename, reinterpret_cast<const unsigned char*>(data.data()),
+                           data.size(), width, height, error);
 }
 
 bool decode_image(const std::string& name, const unsigned char* bytes, size_t size, Image& image,
                   std::string& error) {
-  if (size == 0) {
-    error = name + ": empty image data";
-    return false;
-  }
-  if (size > size_t(std::numeric_limits<int>::max())) {
-    error = name + ": image data of " + std::to_string(size) + " bytes (at most 2 GiB)";
-    return false;
-  }
-  return decode_stb(name, bytes, int(size), image, error);
+  return check_data_size(name, size, error) && decode_stb(name, bytes, int(size), image, error);
+}
+
+bool decode_image_size(const std::string& name, const unsigned char* bytes, size_t size, int& width,
+                       int& height, std::string& error) {
+  return check_data_size(name, size, error) &&
+         check_stb_header(name, bytes, int(size), width, height, error);
 }
 
 bool encode_png(const Image& image, std::string& bytes) {

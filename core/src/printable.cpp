@@ -85,4 +85,14 @@ std::string float_text(float value) {
   return text;
 }
 
+std::string double_text(double value) {
+  char text[40] = "";
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof(text), "%.*g", digits, value);
+    if (std::strtod(text, nullptr) == value)
+      break;
+  }
+  return text;
+}
+
 }  // namespace gfield

@@ -8,11 +8,11 @@
 #include <filesystem>
 #include <initializer_list>
 #include <set>
-#include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gfield/camera_text.hpp"
+#include "gfield/confined_path.hpp"
 #include "gfield/file_read.hpp"
 #include "gfield/image.hpp"
 #include "gfield/limits.hpp"
@@ -29,9 +29,6 @@ using nlohmann::json;
 /// Colours, intensities and absorption coefficients: at most this (radiance stays far inside
 /// float range through any number of bounces' products).
 constexpr double kMaxRadiometric = 1e6;
-/// Scale factors of a transform: in [kMinScale, kMaxScale].
-constexpr double kMinScale = 1e-6;
-constexpr double kMaxScale = 1e6;
 
 /// A validation failure at a JSON pointer; turned into "FILE:LINE:COL: path: message".
 struct SceneError {
@@ -75,7 +72,12 @@ std::string list_names(std::initializer_list<const char*> names) {
 /// Reads values out of the document, throwing SceneError with the value's pointer.
 class Reader {
  public:
-  Reader(const json& root, fs::path base) : root_(root), base_(std::move(base)) {}
+  /// `base`: the scene file's folder; `root`: the folder its files must lie in (scene_root).
+  Reader(const json& root, fs::path base, fs::path files_root, OutsidePaths outside)
+      : root_(root),
+        base_(std::move(base)),
+        files_root_(std::move(files_root)),
+        outside_(outside) {}
 
   const json& at(const std::string& pointer) const { return root_.at(json::json_pointer(pointer)); }
   bool has(const std::string& pointer, const char* key) const { return at(pointer).contains(key); }
@@ -101,15 +103,48 @@ class Reader {
     }
   }
 
-  /// A number within +-kMaxCoordinate (every number of a scene is).
-  double number(const std::string& pointer) const {
+  /// A number, any finite value (the JSON parser refuses the others).
+  double raw_number(const std::string& pointer) const {
     const json& v = at(pointer);
     if (!v.is_number())
       throw SceneError{pointer, "expected a number"};
-    const double d = v.get<double>();
+    return v.get<double>();
+  }
+  /// A number within +-kMaxCoordinate (every number of a scene without a range of its own).
+  double number(const std::string& pointer) const {
+    const double d = raw_number(pointer);
     if (std::abs(d) > kMaxCoordinate)
       throw SceneError{pointer, "number " + fmt(d) + " is beyond the limit of 1e15"};
     return d;
+  }
+  /// A number in [lo, hi] (`range`: the interval as the docs write it, e.g. "[0, 1e6]");
+  /// `what` names it in the message ("must be in ..." when empty).
+  double in_range(const std::string& pointer, double lo, double hi, const char* range,
+                  const std::string& what = "") const {
+    const double d = raw_number(pointer);
+    if (!(d >= lo && d <= hi)) {
+      throw SceneError{pointer, (what.empty() ? "" : what + " ") + "must be in " + range + " (is " +
+                                    fmt(d) + ")"};
+    }
+    return d;
+  }
+  /// [x, y, z] or one number for all three, each in [lo, hi] (`range`, `what`: as in_range).
+  glm::dvec3 vec3_in_range(const std::string& pointer, double lo, double hi, const char* range,
+                           const std::string& what) const {
+    const json& v = at(pointer);
+    if (v.is_number())
+      return glm::dvec3(in_range(pointer, lo, hi, range, what));
+    if (!v.is_array() || v.size() != 3)
+      throw SceneError{pointer, "expected a number or [x, y, z]"};
+    glm::dvec3 out;
+    for (int i = 0; i < 3; ++i)
+      out[i] = raw_number(json_pointer_child(pointer, size_t(i)));
+    if (glm::any(glm::lessThan(out, glm::dvec3(lo))) ||
+        glm::any(glm::greaterThan(out, glm::dvec3(hi)))) {
+      throw SceneError{pointer, what + " must be in " + range + " (are " + fmt(out.x) + ", " +
+                                    fmt(out.y) + ", " + fmt(out.z) + ")"};
+    }
+    return out;
   }
   double number(const std::string& pointer, const char* key, double fallback) const {
     return has(pointer, key) ? number(json_pointer_child(pointer, key)) : fallback;
@@ -157,30 +192,18 @@ class Reader {
   glm::vec3 vec3(const std::string& pointer, const char* key, glm::vec3 fallback) const {
     return has(pointer, key) ? vec3(json_pointer_child(pointer, key)) : fallback;
   }
-  /// A colour: [r, g, b] or one number for grey; components >= 0.
-  glm::vec3 color(const std::string& pointer, const char* key, glm::vec3 fallback) const {
-    if (!has(pointer, key))
-      return fallback;
-    const std::string p = json_pointer_child(pointer, key);
-    const glm::vec3 c = at(p).is_number() ? glm::vec3(float(number(p))) : vec3(p);
-    check_color(p, c);
-    return c;
+  /// A colour: [r, g, b] or one number for grey; components in [0, kMaxRadiometric].
+  glm::vec3 color(const std::string& pointer) const {
+    return glm::vec3(vec3_in_range(pointer, 0.0, kMaxRadiometric, "[0, 1e6]", "colour components"));
   }
-  /// Colour components in [0, kMaxRadiometric].
-  static void check_color(const std::string& pointer, glm::vec3 c) {
-    if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) ||
-        glm::any(glm::greaterThan(c, glm::vec3(float(kMaxRadiometric))))) {
-      throw SceneError{pointer, "colour components must be in [0, 1e6] (are " + fmt(c.x) + ", " +
-                                    fmt(c.y) + ", " + fmt(c.z) + ")"};
-    }
+  glm::vec3 color(const std::string& pointer, const char* key, glm::vec3 fallback) const {
+    return has(pointer, key) ? color(json_pointer_child(pointer, key)) : fallback;
   }
   /// An intensity in [0, kMaxRadiometric] (default 1).
   double intensity(const std::string& pointer) const {
-    const double v = number(pointer, "intensity", 1.0);
-    if (!(v >= 0.0 && v <= kMaxRadiometric))
-      throw SceneError{json_pointer_child(pointer, "intensity"),
-                       "must be in [0, 1e6] (is " + fmt(v) + ")"};
-    return v;
+    return has(pointer, "intensity") ? in_range(json_pointer_child(pointer, "intensity"), 0.0,
+                                                kMaxRadiometric, "[0, 1e6]")
+                                     : 1.0;
   }
   /// An array of at most `max` elements.
   const json& array(const std::string& pointer, size_t max) const {
@@ -193,29 +216,31 @@ class Reader {
     }
     return v;
   }
-  /// A file path relative to the scene file; must exist.
+  /// A file path relative to the scene file, inside the scene's root unless outside paths are
+  /// allowed (confined_path.hpp); must exist.
   std::string file(const std::string& pointer) const {
     const std::string name = string(pointer);
     if (name.empty())
       throw SceneError{pointer, "empty file name"};
-    const fs::path path = (base_ / name).lexically_normal();
+    std::string path, problem;
+    if (!resolve_named_path(base_, name, files_root_, outside_, path, problem))
+      throw SceneError{pointer, problem};
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) {
-      throw SceneError{pointer, "file not found: " + path.string()};
+      throw SceneError{pointer, "file not found: " + path};
     }
-    return path.string();
+    return path;
   }
-  const fs::path& base() const { return base_; }
+  OutsidePaths outside() const { return outside_; }
 
-  static std::string fmt(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  }
+  /// The shortest text of `v` that reads back exactly (a value just past a bound shows it).
+  static std::string fmt(double v) { return double_text(v); }
 
  private:
   const json& root_;
   fs::path base_;
+  fs::path files_root_;
+  OutsidePaths outside_;
 };
 
 Camera read_camera(const Reader& r, const std::string& p) {
@@ -377,9 +402,7 @@ Material read_material(const Reader& r, const std::string& p, ShapeType shape) {
         throw SceneError{cp, "expected two colours"};
       }
       for (size_t i = 0; i < 2; ++i) {
-        const std::string ci = json_pointer_child(cp, i);
-        m.checker_colors[i] = r.at(ci).is_number() ? glm::vec3(float(r.number(ci))) : r.vec3(ci);
-        Reader::check_color(ci, m.checker_colors[i]);
+        m.checker_colors[i] = r.color(json_pointer_child(cp, i));
       }
     }
     if (r.has(p, "scale")) {
@@ -422,9 +445,7 @@ Material read_material(const Reader& r, const std::string& p, ShapeType shape) {
       }
       m.ior = *index;
     } else {
-      m.ior = float(r.number(ip));
-      if (!(m.ior > 0.0f))
-        throw SceneError{ip, "index of refraction must be > 0 (is " + Reader::fmt(m.ior) + ")"};
+      m.ior = float(r.in_range(ip, kMinIor, kMaxIor, "[1e-6, 1e6]", "an index of refraction"));
     }
     m.absorption = r.color(p, "absorption", m.absorption);
   } else {
@@ -441,14 +462,9 @@ Transform read_transform(const Reader& r, const std::string& p) {
   t.translate = r.vec3(p, "translate", t.translate);
   t.rotate_degrees = r.vec3(p, "rotate", t.rotate_degrees);
   if (r.has(p, "scale")) {
-    const std::string sp = json_pointer_child(p, "scale");
-    t.scale = r.at(sp).is_number() ? glm::vec3(float(r.number(sp))) : r.vec3(sp);
-    const glm::vec3 lo{float(kMinScale)}, hi{float(kMaxScale)};
-    if (glm::any(glm::lessThan(t.scale, lo)) || glm::any(glm::greaterThan(t.scale, hi))) {
-      throw SceneError{sp, "scale factors must be in [1e-6, 1e6] (are " + Reader::fmt(t.scale.x) +
-                               ", " + Reader::fmt(t.scale.y) + ", " + Reader::fmt(t.scale.z) +
-                               "; mirroring and flattening are refused)"};
-    }
+    t.scale =
+        glm::vec3(r.vec3_in_range(json_pointer_child(p, "scale"), kMinScaleFactor, kMaxScaleFactor,
+                                  "[1e-6, 1e6]", "scale factors (no mirroring, no flattening)"));
   }
   return t;
 }
@@ -537,6 +553,7 @@ SceneObject read_object(const Reader& r, const std::string& p, Scene& scene) {
       const fs::path file = r.file(json_pointer_child(p, "file"));
       MeshAsset asset;
       asset.file = file.string();
+      asset.outside_paths = r.outside();
       asset.asset = file.stem().string();
       asset.geometry_image =
           r.has(p, "gimage") ? r.file(json_pointer_child(p, "gimage")) : beside(file, "gimage");
@@ -810,7 +827,7 @@ glm::vec3 texture_albedo(const Material& material, glm::vec2 uv) {
 }
 
 bool parse_scene(const std::string& text, const std::string& filename, Scene& scene,
-                 std::string& error) {
+                 std::string& error, OutsidePaths outside) {
   LocatedJson document;
   std::string parse_error;
   if (!parse_located_json(text, document, parse_error)) {
@@ -819,7 +836,8 @@ bool parse_scene(const std::string& text, const std::string& filename, Scene& sc
   }
   Scene result;
   result.filename = filename;
-  const Reader reader(document.value, fs::path(filename).parent_path());
+  const Reader reader(document.value, fs::path(filename).parent_path(), scene_root(filename),
+                      outside);
   try {
     read_scene(reader, result);
   } catch (const SceneError& e) {
@@ -838,11 +856,12 @@ bool parse_scene(const std::string& text, const std::string& filename, Scene& sc
   return true;
 }
 
-bool load_scene(const std::string& filename, Scene& scene, std::string& error) {
+bool load_scene(const std::string& filename, Scene& scene, std::string& error,
+                OutsidePaths outside) {
   std::string text;
   if (!read_file(filename, kMaxSceneFileBytes, text, error))
     return false;
-  return parse_scene(text, filename, scene, error);
+  return parse_scene(text, filename, scene, error, outside);
 }
 
 bool use_asset_folder(const std::string& dir, Scene& scene, std::string& error) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "preprocess/asset_build.hpp"
+#include "preprocess/cli/path_options.hpp"
 
 namespace gfield {
 
@@ -22,6 +23,7 @@ struct AssetArguments {
   size_t verify_rays = 100000;
   std::string method = "auto";
   std::string components = "all";
+  bool allow_outside_paths = false;
 };
 
 /// The image size of --size: "auto" (kAutoImageSize) or texels per side. False for other words.
@@ -86,7 +88,7 @@ inline void add_layers_option(CLI::App* cmd, int& layers) {
 }
 
 /// Adds --size, --max-image-error, --samples, --layers, --half/--float, --verify-rays, --method,
-/// --components to `cmd`.
+/// --components, --allow-outside-paths to `cmd`.
 inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArguments>& args) {
   add_image_size_options(cmd, args->size, args->max_image_error);
   cmd->add_option("--samples", args->samples,
@@ -106,6 +108,7 @@ inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArgument
   cmd->add_option("--components", args->components, "all (packed charts) or largest")
       ->check(CLI::IsMember({"all", "largest"}))
       ->capture_default_str();
+  add_outside_paths_option(cmd, args->allow_outside_paths);
 }
 
 inline AssetOptions asset_options(const AssetArguments& args) {
@@ -121,6 +124,7 @@ inline AssetOptions asset_options(const AssetArguments& args) {
   options.field_layers = args.layers;
   options.field_precision = args.full ? ExrPrecision::kFloat : ExrPrecision::kHalf;
   options.verify_rays = args.verify_rays;
+  options.outside_paths = outside_paths(args.allow_outside_paths);
   return options;
 }
 

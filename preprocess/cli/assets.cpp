@@ -53,7 +53,8 @@ void run_assets(const AssetsArguments& args) {
   Scene scene;
   std::vector<std::string> warnings;
   std::string error;
-  if (!load_scene_file(args.scene, scene, warnings, error)) {
+  if (!load_scene_file(args.scene, scene, warnings, error,
+                       outside_paths(args.asset.allow_outside_paths))) {
     throw CommandError(error);
   }
   print_warnings(warnings);

@@ -9,6 +9,7 @@
 #include "geometry/scene_file.hpp"
 #include "gfield/printable.hpp"
 #include "preprocess/cli/commands.hpp"
+#include "preprocess/cli/path_options.hpp"
 
 namespace gfield {
 
@@ -21,13 +22,15 @@ void add_export_gltf_command(CLI::App& app) {
       "KHR_lights_punctual lights, and the environment, ambient light and image size as extras.");
   auto scene_file = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
+  auto allow_outside = std::make_shared<bool>(false);
   cmd->add_option("SCENE", *scene_file, "scene file (.json, .gltf, .glb)")->required();
   cmd->add_option("-o,--output", *output, "the binary glTF file to write (.glb)")->required();
-  cmd->callback([scene_file, output] {
+  add_outside_paths_option(cmd, *allow_outside);
+  cmd->callback([scene_file, output, allow_outside] {
     Scene scene;
     std::vector<std::string> warnings;
     std::string error;
-    if (!load_scene_file(*scene_file, scene, warnings, error) ||
+    if (!load_scene_file(*scene_file, scene, warnings, error, outside_paths(*allow_outside)) ||
         !write_gltf_scene(scene, *output, error)) {
       throw CommandError(error);
     }

@@ -28,6 +28,7 @@ struct ImageArguments {
   double max_image_error = kDefaultMaxMeanError;
   std::string method = "auto", components = "all", holes = "all-but-longest", protrusions = "split";
   bool no_measure = false;
+  bool allow_outside_paths = false;
 };
 
 /// The options of `gfield image`, bound to `args`.
@@ -64,6 +65,7 @@ void add_image_options(CLI::App* cmd, const std::shared_ptr<ImageArguments>& arg
   cmd->add_flag("--no-measure", args->no_measure,
                 "skip distortion and reconstruction error (faster; --size auto still measures\n"
                 "the mesh -> image distance it chooses by)");
+  add_outside_paths_option(cmd, args->allow_outside_paths);
 }
 
 /// GeometryImageOptions from the command line's words.
@@ -89,7 +91,8 @@ void run_image(const ImageArguments& args) {
   MeshAppearance appearance;
   std::vector<std::string> warnings;
   std::string error;
-  if (!load_mesh(MeshSource{args.mesh, args.part}, mesh, &appearance, warnings, error))
+  const OutsidePaths outside = outside_paths(args.allow_outside_paths);
+  if (!load_mesh(MeshSource{args.mesh, args.part, outside}, mesh, &appearance, warnings, error))
     throw CommandError(error);
   print_warnings(warnings);
 
@@ -105,7 +108,7 @@ void run_image(const ImageArguments& args) {
   nlohmann::json hashed = image_options_to_json(options);
   if (!args.part.empty())
     hashed["mesh"] = printable(args.part);
-  if (!hash_build_inputs(args.mesh, hashed, inputs, error))
+  if (!hash_build_inputs(args.mesh, hashed, outside, inputs, error))
     throw CommandError(error);
   image.build_id = inputs.build_id;
   parameterized.build_id = inputs.build_id;

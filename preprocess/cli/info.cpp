@@ -9,6 +9,7 @@
 #include "geometry/mesh_io.hpp"
 #include "gfield/printable.hpp"
 #include "preprocess/cli/commands.hpp"
+#include "preprocess/cli/path_options.hpp"
 #include "preprocess/topology.hpp"
 
 namespace gfield {
@@ -53,17 +54,21 @@ void add_info_command(CLI::App& app) {
   auto mesh_path = std::make_shared<std::string>();
   auto part = std::make_shared<std::string>();
   auto as_json = std::make_shared<bool>(false);
+  auto allow_outside = std::make_shared<bool>(false);
   cmd->add_option("MESH", *mesh_path, "mesh file (.obj, .ply, .off, .stl, .gltf, .glb)")
       ->required();
   cmd->add_option("--mesh", *part, "glTF: the mesh NAME (or #INDEX) (default: the whole scene)");
   cmd->add_flag("--json", *as_json, "print the report as JSON on stdout");
-  cmd->callback([mesh_path, part, as_json] {
+  add_outside_paths_option(cmd, *allow_outside);
+  cmd->callback([mesh_path, part, as_json, allow_outside] {
     TriangleMesh mesh;
     MeshAppearance appearance;
     MeshLoadStats stats;
     std::vector<std::string> warnings;
     std::string error;
-    if (!load_mesh(MeshSource{*mesh_path, *part}, mesh, &appearance, warnings, error, &stats)) {
+    // The textures' sizes are reported, not their pixels: their headers are read, not decoded.
+    const MeshSource source{*mesh_path, *part, outside_paths(*allow_outside), false};
+    if (!load_mesh(source, mesh, &appearance, warnings, error, &stats)) {
       throw CommandError(error);
     }
     print_warnings(warnings);

@@ -15,6 +15,7 @@
 #include "gfield/image.hpp"
 #include "gfield/scene.hpp"
 #include "preprocess/cli/commands.hpp"
+#include "preprocess/cli/path_options.hpp"
 #include "preprocess/reference_tracer.hpp"
 
 namespace gfield {
@@ -31,6 +32,7 @@ struct RenderArgs {
   std::uint64_t seed = 1;
   bool strata_centres = false;
   bool quiet = false;
+  bool allow_outside_paths = false;
 };
 
 std::string human_seconds(double s) {
@@ -71,7 +73,7 @@ void run_render(const RenderArgs& args) {
   Scene scene;
   std::string error;
   std::vector<std::string> warnings;
-  if (!load_scene_file(args.scene, scene, warnings, error))
+  if (!load_scene_file(args.scene, scene, warnings, error, outside_paths(args.allow_outside_paths)))
     throw CommandError(error);
   print_warnings(warnings);
   if (!args.camera.empty() && !parse_camera_text(args.camera, scene.camera, error))
@@ -139,6 +141,7 @@ void add_render_command(CLI::App& app) {
                 "no jitter: samples at the strata centres (1 spp: the pixel centre), the positions "
                 "gfield-view --spp samples");
   cmd->add_flag("-q,--quiet", args->quiet, "no progress bar, no summary line");
+  add_outside_paths_option(cmd, args->allow_outside_paths);
   cmd->callback([args] { run_render(*args); });
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "preprocess/cli/commands.hpp"
+#include "preprocess/cli/path_options.hpp"
 #include "preprocess/verify.hpp"
 
 namespace gfield {
@@ -28,6 +29,7 @@ void add_verify_command(CLI::App& app) {
     std::string original;
     int field_bits = 32;
     bool json = false;
+    bool allow_outside_paths = false;
   };
   auto args = std::make_shared<Arguments>();
   cmd->add_option("NAME", args->name, "asset path without extension (DIR/NAME)")->required();
@@ -43,12 +45,14 @@ void add_verify_command(CLI::App& app) {
       ->check(CLI::IsMember({8, 16, 32}))
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "print the report as JSON");
+  add_outside_paths_option(cmd, args->allow_outside_paths);
   cmd->callback([args] {
     VerifyOptions options;
     options.rays = args->rays;
     options.seed = args->seed;
     options.original = args->original;
     options.field_bits = args->field_bits;
+    options.original_outside_paths = outside_paths(args->allow_outside_paths);
     nlohmann::json report;
     std::string error;
     if (!verify_asset(args->name, options, report, error)) {

@@ -25,8 +25,9 @@ std::string scene_path(const std::string& name) {
   return (fs::path(GFIELD_TEST_TMP) / name).string();
 }
 
+/// The tests' scenes name the bundled meshes by absolute path: outside paths allowed.
 bool parse(const std::string& text, Scene& scene, std::string& error) {
-  return parse_scene(text, scene_path("scene.json"), scene, error);
+  return parse_scene(text, scene_path("scene.json"), scene, error, OutsidePaths::kAllowed);
 }
 
 /// Expects a parse failure whose message starts with "FILE:LINE:COLUMN:" and contains `what`.
@@ -178,11 +179,11 @@ TEST(Scene, ErrorsNameFileLineAndColumn) {
   expect_error(std::string("{") + kCamera +
                    ",\n\"objects\": [{\"shape\": \"sphere\", \"material\": {\"type\": "
                    "\"dielectric\", \"ior\": 0}}]}",
-               2, 75, "must be > 0");
+               2, 75, "an index of refraction must be in [1e-6, 1e6] (is 0)");
   expect_error(std::string("{") + kCamera +
                    ",\n\"objects\": [{\"shape\": \"sphere\", \"material\": {\"type\": "
                    "\"dielectric\", \"ior\": -1.5}}]}",
-               2, 75, "must be > 0");
+               2, 75, "must be in [1e-6, 1e6] (is -1.5)");
   // Negative size.
   expect_error(std::string("{") + kCamera +
                    ",\n\"objects\": [{\"shape\": \"sphere\", \"radius\": -1, \"material\": "
@@ -222,6 +223,34 @@ TEST(Scene, ErrorsNameFileLineAndColumn) {
   // Image size out of range.
   expect_error(std::string("{") + kCamera + ",\n\"image\": {\"width\": -4}}", 2, 20,
                "must be in [1, 16384]");
+}
+
+// Issue 26: each value against its own documented range, printed so that it differs visibly from
+// the bound (intensity 1000000.4 was "(is 1e+06)"; 1e30 was measured against "the limit of 1e15"
+// where the docs say [0, 1e6]; an index of refraction of 1e7 was accepted where glTF refused it).
+TEST(Scene, ValuesAreCheckedAgainstTheirOwnRangesAndPrintedExactly) {
+  const std::string light = std::string("{") + kCamera +
+                            ",\n\"lights\": [{\"type\": \"point\", \"position\": [0, 0, 0], ";
+  expect_error(light + "\"intensity\": 1000000.4}]}", 2, 66,
+               "lights[0].intensity: must be in [0, 1e6] (is 1000000.4)");
+  expect_error(light + "\"intensity\": 1e30}]}", 2, 66, "must be in [0, 1e6] (is 1e+30)");
+  expect_error(light + "\"color\": [1, 1e30, 0]}]}", 2, 62,
+               "colour components must be in [0, 1e6] (are 1, 1e+30, 0)");
+  const std::string sphere =
+      std::string("{") + kCamera + ",\n\"objects\": [{\"shape\": \"sphere\", ";
+  expect_error(sphere + "\"transform\": {\"scale\": 1e30}, \"material\": {\"type\": \"mirror\"}}]}",
+               2, 56, "must be in [1e-6, 1e6] (is 1e+30)");
+  for (const char* ior : {"1e7", "1e-7"}) {
+    expect_error(sphere + "\"material\": {\"type\": \"dielectric\", \"ior\": " + ior + "}}]}", 2,
+                 75,
+                 std::string("an index of refraction must be in [1e-6, 1e6] (is ") +
+                     (ior[2] == '-' ? "1e-07" : "1e+07") + ")");
+  }
+  Scene scene;
+  std::string error;
+  EXPECT_TRUE(
+      parse(sphere + "\"material\": {\"type\": \"dielectric\", \"ior\": 1e6}}]}", scene, error))
+      << error;
 }
 
 TEST(Scene, LoadSceneReportsAMissingFile) {

@@ -21,6 +21,7 @@ cmake --install "$build" --prefix "$prefix" > "$work/install.log"
 for f in bin/gfield bin/gfield-view share/gfield/shaders/lib/field_lookup.glsl \
   share/gfield/shaders/field_trace.frag share/gfield/meshes/spot.obj \
   share/gfield/meshes/SOURCES.md share/gfield/scenes/mirror-torus-instances.json \
+  share/gfield/.gfield-root \
   include/gfield/field_lookup.hpp lib/libgfield_core.a lib/cmake/gfield/gfieldConfig.cmake \
   lib/cmake/gfield/gfieldTargets.cmake; do
   [ -f "$prefix/$f" ] || fail "$prefix/$f: not installed"

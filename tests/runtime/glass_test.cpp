@@ -293,7 +293,8 @@ Scene textured_plate_scene(const std::string& texture) {
   Scene out;
   std::vector<std::string> warnings;
   std::string error;
-  EXPECT_TRUE(load_scene_file(file.string(), out, warnings, error)) << error;
+  EXPECT_TRUE(load_scene_file(file.string(), out, warnings, error, OutsidePaths::kAllowed))
+      << error;
   return out;
 }
 

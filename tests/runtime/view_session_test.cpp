@@ -111,7 +111,8 @@ TEST(MethodRegistry, HelpListsEveryMethodAndItsOptions) {
 TEST_F(ViewSessionTest, SwitchesBetweenEveryMethodLiveAndMovesObjectsWithoutReupload) {
   Scene scene;
   std::string error;
-  ASSERT_TRUE(load_scene((kDir / "scene.json").string(), scene, error)) << error;
+  ASSERT_TRUE(load_scene((kDir / "scene.json").string(), scene, error, OutsidePaths::kAllowed))
+      << error;
   ViewSession session;
   ASSERT_TRUE(session.load(scene, default_shader_dir(), error)) << error;
   Framebuffer frame;
@@ -149,7 +150,8 @@ TEST_F(ViewSessionTest, SwitchesBetweenEveryMethodLiveAndMovesObjectsWithoutReup
 TEST_F(ViewSessionTest, SecondMethodFillsTheRightHalf) {
   Scene scene;
   std::string error;
-  ASSERT_TRUE(load_scene((kDir / "scene.json").string(), scene, error)) << error;
+  ASSERT_TRUE(load_scene((kDir / "scene.json").string(), scene, error, OutsidePaths::kAllowed))
+      << error;
   ViewSession session;
   ASSERT_TRUE(session.load(scene, default_shader_dir(), error)) << error;
   const int field = session.find("field"), glass = session.find("glass");

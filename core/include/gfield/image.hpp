@@ -40,10 +40,17 @@ float linear_to_srgb(float v);
 /// kMaxPictureFileBytes. False with "FILE: problem".
 bool load_image(const std::string& filename, Image& image, std::string& error);
 
+/// The width and height that an image file's header claims, checked as load_image checks them
+/// (the limits, the file's size) without decoding its pixels. False with "FILE: problem".
+bool load_image_size(const std::string& filename, int& width, int& height, std::string& error);
+
 /// Decodes a PNG, JPEG or HDR image held in memory (an embedded glTF texture): as load_image;
 /// `name` stands for the data in errors ("NAME: problem").
 bool decode_image(const std::string& name, const unsigned char* bytes, size_t size, Image& image,
                   std::string& error);
+/// The width and height its header claims, checked as decode_image checks them.
+bool decode_image_size(const std::string& name, const unsigned char* bytes, size_t size, int& width,
+                       int& height, std::string& error);
 
 /// `image` as PNG bytes (8-bit sRGB, as save_image writes it); false when the encoder fails.
 bool encode_png(const Image& image, std::string& bytes);

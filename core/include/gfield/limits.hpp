@@ -52,9 +52,22 @@ inline constexpr std::size_t kMaxMeshTextures = 1'024;
 inline constexpr std::uint64_t kMaxMaterialLibraryBytes = std::uint64_t(16) << 20;
 
 /// glTF files (.gltf, .glb) and the buffers they name: bytes as for meshes (kMaxMeshFileBytes);
-/// nodes, meshes, primitives and every other array of the document at most kMaxGltfElements;
-/// the node hierarchy at most kMaxJsonDepth deep.
+/// nodes, meshes, primitives and every other array of the document at most kMaxGltfElements (a
+/// node hierarchy may be one chain of them all: its checks take time linear in the nodes).
 inline constexpr std::size_t kMaxGltfElements = 1'000'000;
+
+/// The textures of one mesh decode to at most this many bytes together, as linear float RGB (12
+/// bytes a pixel: one 13,377^2 texture, or ten of 4096^2): each texture's claimed size is checked
+/// against what is left before it is decoded. Commands that need no pixels (`gfield info`) read
+/// the textures' headers only.
+inline constexpr std::uint64_t kMaxMeshTextureBytes = std::uint64_t(2) << 30;
+
+/// Scale factors of transforms (JSON scenes, glTF nodes): in [kMinScaleFactor, kMaxScaleFactor].
+inline constexpr double kMinScaleFactor = 1e-6;
+inline constexpr double kMaxScaleFactor = 1e6;
+/// Indices of refraction (JSON scenes, glTF KHR_materials_ior): in [kMinIor, kMaxIor].
+inline constexpr double kMinIor = 1e-6;
+inline constexpr double kMaxIor = 1e6;
 
 /// Geometry images (and thickness maps): n x n with n at most this.
 inline constexpr int kMaxGeometryImageSide = 8192;

@@ -16,4 +16,8 @@ std::string printable(std::string_view text);
 /// "0.005", not "0.00499999989"): numbers printed for a command line that must give them back.
 std::string float_text(float value);
 
+/// The same for a double ("%.{1..17}g" that strtod reads back): a value in a message that must
+/// differ visibly from the bound it broke (1000000.4 is "1000000.4", not "1e+06").
+std::string double_text(double value);
+
 }  // namespace gfield

@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "gfield/confined_path.hpp"
 #include "gfield/environment.hpp"
 #include "gfield/gpu_contract.hpp"
 
@@ -138,6 +139,9 @@ struct MeshAsset {
                       ///< stem, for a glTF mesh "STEM.INDEX-MESHNAME" (gltf_scene.hpp)
   std::string geometry_image;  ///< NAME.gimage.exr beside the mesh, or named by the scene
   std::string geometry_field;  ///< NAME.gfield.exr beside the mesh, or named by the scene
+  /// Whether reading the mesh file may read files outside its folder (glTF buffers and images,
+  /// material libraries, textures): the scene was read with --allow-outside-paths.
+  OutsidePaths outside_paths = OutsidePaths::kRefused;
 };
 
 struct SceneObject {
@@ -173,13 +177,15 @@ struct Scene {
 };
 
 /// Reads and validates a scene file. False with "FILE:LINE:COLUMN: what: problem" for malformed
-/// JSON, unknown keys, wrong types, unknown material/shape/preset names, missing files, negative
-/// or zero sizes, index <= 0, a dielectric on a quad, a degenerate camera, and values out of
-/// range (docs/scenes.md, "Limits"): any number beyond +-1e15, colours and intensities outside
-/// [0, 1e6], scale factors outside [1e-6, 1e6], an analytic shape reaching beyond +-1e15 after
+/// JSON, unknown keys, wrong types, unknown material/shape/preset names, missing files, files
+/// outside the scene's root (unless `outside` is kAllowed: confined_path.hpp), negative or zero
+/// sizes, a dielectric on a quad, a degenerate camera, and values out of range (docs/scenes.md,
+/// "Limits"): any number beyond +-1e15, colours and intensities outside [0, 1e6], scale factors
+/// and indices of refraction outside [1e-6, 1e6], an analytic shape reaching beyond +-1e15 after
 /// its transform, more than kMaxSceneObjects objects or kMaxSceneLights lights, JSON nested
 /// deeper than kMaxJsonDepth, a file above kMaxSceneFileBytes.
-bool load_scene(const std::string& filename, Scene& scene, std::string& error);
+bool load_scene(const std::string& filename, Scene& scene, std::string& error,
+                OutsidePaths outside = OutsidePaths::kRefused);
 
 /// Points every mesh of `scene` at the assets found in folder `dir` (DIR/NAME.gimage.exr and
 /// DIR/NAME.gfield.exr for MeshAsset::asset NAME, the stem of mesh file NAME.EXT, as `gfield
@@ -189,6 +195,6 @@ bool use_asset_folder(const std::string& dir, Scene& scene, std::string& error);
 
 /// The same from text; `filename` names the file in errors and is where relative paths start.
 bool parse_scene(const std::string& text, const std::string& filename, Scene& scene,
-                 std::string& error);
+                 std::string& error, OutsidePaths outside = OutsidePaths::kRefused);
 
 }  // namespace gfield

@@ -1,0 +1,63 @@
+// Issue 26: the files an input names stay in its folder (a JSON scene's: its root) unless
+// outside paths are allowed (gfield/confined_path.hpp).
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "gfield/confined_path.hpp"
+
+namespace gfield {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("confined_" + std::to_string(::getpid()));
+
+/// resolve_named_path from `base` inside `root`, refused: its problem ("" when it was allowed).
+std::string refusal(const fs::path& base, const std::string& name, const fs::path& root) {
+  std::string resolved, problem;
+  return resolve_named_path(base, name, root, OutsidePaths::kRefused, resolved, problem) ? ""
+                                                                                         : problem;
+}
+
+TEST(ConfinedPath, InsideByWholeComponentsAndCanonicalPaths) {
+  fs::create_directories(kDir / "a/b");
+  fs::create_directories(kDir / "a/bc");
+  std::error_code ec;
+  fs::create_symlink("../bc", kDir / "a/b/out", ec);
+  const fs::path root = kDir / "a/b";
+  EXPECT_EQ(refusal(root, "x.obj", root), "");
+  EXPECT_EQ(refusal(root, "./deeper/../x.obj", root), "");
+  EXPECT_NE(refusal(root, "../bc/x.obj", root).find("leaves " + fs::canonical(root).string()),
+            std::string::npos);  // a sibling whose name starts with the root's
+  EXPECT_NE(refusal(root, "out/x.obj", root).find("leaves"), std::string::npos);  // a link out
+  EXPECT_NE(refusal(root, "/etc/passwd", root).find("\"/etc/passwd\" is an absolute path"),
+            std::string::npos);
+  std::string resolved, problem;
+  EXPECT_TRUE(
+      resolve_named_path(root, "../bc/x.obj", root, OutsidePaths::kAllowed, resolved, problem));
+  EXPECT_EQ(resolved, (kDir / "a/bc/x.obj").string());
+  EXPECT_TRUE(path_is_inside(root, kDir / "a/b/c/d"));
+  EXPECT_FALSE(path_is_inside(root, kDir / "a/bc"));
+  fs::remove_all(kDir);
+}
+
+TEST(ConfinedPath, SceneRootIsTheNearestFolderWithTheMarker) {
+  fs::create_directories(kDir / "project/scenes/more");
+  EXPECT_EQ(scene_root((kDir / "project/scenes/more/s.json").string()),
+            fs::canonical(kDir / "project/scenes/more"));
+  std::ofstream(kDir / "project" / kPathRootMarker) << "";
+  EXPECT_EQ(scene_root((kDir / "project/scenes/more/s.json").string()),
+            fs::canonical(kDir / "project"));
+  // The example scenes' root is data/, which holds their meshes.
+  EXPECT_EQ(scene_root(std::string(GFIELD_DATA_DIR) + "/scenes/two-mirror-spheres.json"),
+            fs::canonical(GFIELD_DATA_DIR));
+  fs::remove_all(kDir);
+}
+
+}  // namespace
+}  // namespace gfield
