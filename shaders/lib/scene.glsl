@@ -51,7 +51,7 @@ SceneHit scene_miss() {
 // and from the shape's centre: a quad 1e6 wide is exact near its centre), not with the scene's
 // extent (1e-5 of it lost the shadows on a floor of 1e4).
 float analytic_epsilon(int k, vec3 p) {
-  return 1.0e-4f * (length(p) + distance(p, objects[k].to_world[3].xyz)) +
+  return 2.0e-5f * (length(p) + distance(p, objects[k].to_world[3].xyz)) +
          1.0e-9f * objects[k].absorption.w;
 }
 

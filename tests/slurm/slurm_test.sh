@@ -110,7 +110,7 @@ for i in 0 1 2 3; do
 done
 [ -n "$shard" ] || fail "no shard holds stanford-bunny.obj"
 job=$(submit "$work/resume" --array=0-3 --cpus-per-task=1)
-until compgen -G "$work/resume/assets/stanford-bunny.tmp-*" > /dev/null; do
+until compgen -G "$work/resume/assets/stanford-bunny.builds/b-*" > /dev/null; do
   [ -n "$(squeue -h -j "${job}_$shard" 2> /dev/null)" ] || fail "task $shard ended before the bunny"
   sleep 0.05
 done
@@ -136,4 +136,5 @@ for report in "$work"/resume/assets/*.report.json; do
     fail "gfield verify ${report%.report.json} failed"
 done
 ! compgen -G "$work/resume/assets/*.tmp-*" > /dev/null || fail "temporaries left behind"
+! compgen -G "$work/resume/assets/*.builds/[bl]*" > /dev/null || fail "build folders left behind"
 compare_assets "$work/single/assets" "$work/resume/assets"
