@@ -1,19 +1,26 @@
-// gfield-view's geometry-field renderer on this machine's GL (llvmpipe here): ms per frame per
-// lookup mode at 512^2 and 1024^2, ns per traced pixel per bounce, the reference tracer's time
-// for the same image (1 spp, same depth) in the same run, and the PSNR of the refined render
-// against it. Example scenes of data/scenes, their mesh assets built with `gfield build` (its
-// defaults, as scripts/demo.sh) into a temporary folder.
+// gfield-view's geometry-field method against its peer and its floor, on this machine's GL
+// (llvmpipe on the CI machine): per example scene, picture size and depth, ms per frame with
+// the meshes looked up in their geometry fields (refined; at depth 4 also nearest and linear)
+// and traced exactly through BVHs of their triangles (--intersect bvh), each against the Embree
+// reference tracer's time for the same picture (1 spp, same depth) in the same run, the PSNR of
+// each against that reference, the GPU bytes of each (geometry image + field against BVH + the
+// rasterised mesh, which both draw), secondary rays per traced pixel, and the work each does
+// (field texel and image texel fetches and Newton steps per lookup, nodes and triangles per BVH
+// traversal: counted on the GPU, independent of the device). Prints markdown tables. Assets are
+// built with `gfield build` (its defaults, as scripts/demo.sh) into a temporary folder.
 //
-// Usage: bench_runtime_field [--frames F] [SIZE...]   (default 512 1024, 2 frames)
+// Usage: bench_runtime_field [--frames F] [--depths D,D,...] [SIZE...]
+//        (default: 2 frames, depths 1,2,4, sizes 512 1024)
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 #include <thread>
 
 #include "example_scenes.hpp"
 #include "gfield/image_metrics.hpp"
+#include "gfield/stopwatch.hpp"
 #include "gl_bench_setup.hpp"
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/gl_context.hpp"
@@ -23,9 +30,149 @@
 namespace fs = std::filesystem;
 using namespace gfield;
 
+namespace {
+
+/// One configuration's timed render: ms per frame, PSNR against the reference, and its work.
+struct Run {
+  double ms = 0.0;
+  double cpu_ms = 0.0;  ///< CPU time per frame, all threads
+  double psnr = 0.0;
+  FrameStats per_sample;  ///< one untimed counting frame
+};
+
+Run run(GeometryFieldMethod& method, const Scene& scene, int size, int frames,
+        const Image& reference) {
+  Run r;
+  render_image(method, scene.camera, size, size, 1);  // warm-up (shader compilation, uploads)
+  FrameStats stats;
+  Image image;
+  const double cpu_start = process_cpu_ms();
+  for (int f = 0; f < frames; ++f)
+    image = render_image(method, scene.camera, size, size, 1, &stats);
+  r.cpu_ms = (process_cpu_ms() - cpu_start) / frames;
+  r.ms = stats.milliseconds / frames;
+  r.psnr = compare_images(clamped_to_display(image), reference).psnr;
+  method.settings().count_work = true;
+  render_image(method, scene.camera, size, size, 1, &r.per_sample);
+  method.settings().count_work = false;
+  return r;
+}
+
+/// GPU bytes of the meshes' geometry images and fields, and of their BVHs and rasterised meshes.
+void asset_bytes(const GpuScene& gpu, double& field_mb, double& bvh_mb) {
+  field_mb = bvh_mb = 0.0;
+  for (const GpuAsset& a : gpu.assets().assets()) {
+    const double mesh = double(a.source.vertex_count) * sizeof(GpuVertex) +
+                        double(a.source.index_count) * sizeof(unsigned);
+    field_mb += double(a.image_bytes + a.field_bytes) / 1e6;
+    bvh_mb += (double(a.bvh_bytes) + mesh) / 1e6;
+  }
+}
+
+std::string work_line(const FrameStats& s) {
+  const auto count = [&](int kind) { return s.count(work_count_name(kind)); };
+  char text[256];
+  const double lookups = count(gpu::WORK_LOOKUPS), traversals = count(gpu::WORK_BVH_TRAVERSALS);
+  if (lookups > 0.0) {
+    std::snprintf(text, sizeof(text), "%.0f lookups: %.1f field + %.1f image fetches, %.1f Newton",
+                  lookups, count(gpu::WORK_FIELD_FETCHES) / lookups,
+                  count(gpu::WORK_IMAGE_FETCHES) / lookups,
+                  count(gpu::WORK_NEWTON_STEPS) / lookups);
+  } else if (traversals > 0.0) {
+    std::snprintf(text, sizeof(text), "%.0f traversals: %.1f nodes, %.1f triangles", traversals,
+                  count(gpu::WORK_BVH_NODES) / traversals,
+                  count(gpu::WORK_BVH_TRIANGLES) / traversals);
+  } else {
+    std::snprintf(text, sizeof(text), "no mesh traced");
+  }
+  return text;
+}
+
+/// The reference tracer's time for the same picture: wall and CPU (all threads) ms.
+struct ReferenceTime {
+  double ms = 0.0;
+  double cpu_ms = 0.0;
+};
+
+void print_row(const char* what, const Run& r, const ReferenceTime& reference,
+               const FrameStats& rays) {
+  const double traced = rays.count("traced pixels");
+  std::printf("| %s | %.1f | %.2f | %.2f | %.2f | %.2f | %s |\n", what, r.ms, r.ms / reference.ms,
+              r.cpu_ms / reference.cpu_ms, r.psnr,
+              traced > 0.0 ? rays.count("secondary rays") / traced : 0.0,
+              work_line(r.per_sample).c_str());
+}
+
+/// The rows of one scene, size and depth.
+void bench_depth(GeometryFieldMethod& method, ReferenceTracer& tracer, const Scene& scene, int size,
+                 int depth, int frames) {
+  RenderOptions options;
+  options.width = options.height = size;
+  options.samples_per_pixel = 1;
+  options.max_depth = depth;
+  options.jitter = false;
+  RenderStats reference_stats;
+  const double cpu_start = process_cpu_ms();
+  const Image reference = clamped_to_display(tracer.render(options, &reference_stats));
+  ReferenceTime reference_time;
+  reference_time.cpu_ms = process_cpu_ms() - cpu_start;
+  reference_time.ms = reference_stats.seconds * 1e3;
+  std::printf("\n%dx%d, depth %d; reference tracer %.1f ms, CPU %.1f ms (1 spp, %u cores)\n\n",
+              size, size, depth, reference_time.ms, reference_time.cpu_ms,
+              std::thread::hardware_concurrency());
+  std::printf(
+      "| intersection | ms/frame | x reference | x reference (CPU time) | PSNR dB | rays / "
+      "traced pixel | work |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  method.settings().max_depth = depth;
+  method.settings().intersect = MeshIntersection::kField;
+  Run field;
+  for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
+    if (mode != LookupMode::kRefined && depth != 4)
+      continue;
+    method.settings().mode = mode;
+    field = run(method, scene, size, frames, reference);
+    print_row((std::string("field, ") + lookup_mode_name(mode)).c_str(), field, reference_time,
+              field.per_sample);
+  }
+  method.settings().intersect = MeshIntersection::kBvh;
+  const Run bvh = run(method, scene, size, frames, reference);
+  print_row("bvh (exact)", bvh, reference_time, bvh.per_sample);
+  method.settings().intersect = MeshIntersection::kField;
+  std::printf("\nfield (refined) / bvh time: %.2f\n", field.ms / bvh.ms);
+  std::fflush(stdout);
+}
+
+bool parse_depths(const char* text, std::vector<int>& depths) {
+  depths.clear();
+  for (const char* p = text; *p != '\0';) {
+    char* end = nullptr;
+    const long d = std::strtol(p, &end, 10);
+    if (end == p || d < 0 || d > 64 || (*end != ',' && *end != '\0'))
+      return false;
+    depths.push_back(int(d));
+    p = *end == ',' ? end + 1 : end;
+  }
+  return !depths.empty();
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  std::vector<int> depths = {1, 2, 4};
+  std::vector<char*> rest = {argv[0]};
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--depths" && i + 1 < argc) {
+      if (!parse_depths(argv[++i], depths)) {
+        std::fprintf(stderr, "--depths %s: expected D,D,... in [0, 64]\n", argv[i]);
+        return 2;
+      }
+    } else {
+      rest.push_back(argv[i]);
+    }
+  }
   GlBenchArguments arguments;
-  if (!parse_gl_bench_arguments(argc, argv, "bench_runtime_field", arguments))
+  if (!parse_gl_bench_arguments(int(rest.size()), rest.data(), "bench_runtime_field", arguments))
     return 2;
   const int frames = arguments.frames > 0 ? arguments.frames : 2;
   const fs::path dir = fs::temp_directory_path() / "gfield_bench_runtime_field";
@@ -34,57 +181,30 @@ int main(int argc, char** argv) {
   if (!context)
     return kExitNoOpenGL;
   std::string error;
-  constexpr int kDepth = 4;
-  for (const char* name :
-       {"mirror-torus-instances", "two-mirror-spheres", "davis-wyman-color-chart"}) {
+  for (const char* name : {"mirror-torus-instances", "textured-mirror", "davis-wyman-color-chart",
+                           "two-mirror-spheres"}) {
     std::string file;
     Scene scene;
+    GpuScene gpu;
+    GeometryFieldMethod method;
+    ReferenceTracer tracer;
     if (!prepare_example_scene(name, dir, false, file) ||
-        !load_scene(file, scene, error, OutsidePaths::kAllowed)) {
+        !load_scene(file, scene, error, OutsidePaths::kAllowed) || !gpu.load(scene, error) ||
+        !method.load(gpu, default_shader_dir(), error) || !tracer.build(scene, error)) {
       std::fprintf(stderr, "%s: %s\n", name, error.c_str());
       continue;
     }
-    GpuScene gpu;
-    GeometryFieldMethod field;
-    if (!gpu.load(scene, error) || !field.load(gpu, default_shader_dir(), error)) {
-      std::fprintf(stderr, "%s\n", error.c_str());
-      continue;
-    }
-    ReferenceTracer tracer;
-    if (!tracer.build(scene, error)) {
-      std::fprintf(stderr, "%s\n", error.c_str());
-      continue;
-    }
-    for (int size : arguments.sizes) {
-      RenderOptions options;
-      options.width = options.height = size;
-      options.samples_per_pixel = 1;
-      options.max_depth = kDepth;
-      options.jitter = false;
-      RenderStats reference_stats;
-      const Image reference = clamped_to_display(tracer.render(options, &reference_stats));
-      std::printf("%s %dx%d depth %d: reference tracer %.1f ms (1 spp, %u cores)\n", name, size,
-                  size, kDepth, reference_stats.seconds * 1e3, std::thread::hardware_concurrency());
-      for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
-        field.settings().mode = mode;
-        field.settings().max_depth = kDepth;
-        render_image(field, scene.camera, size, size, 1);  // warm-up (shader compilation)
-        FrameStats stats;
-        Image image;
-        for (int f = 0; f < frames; ++f)
-          image = render_image(field, scene.camera, size, size, 1, &stats);
-        const double ms = stats.milliseconds / frames;
-        const double rays = stats.count("secondary rays") / frames;
-        const double psnr = compare_images(clamped_to_display(image), reference).psnr;
-        std::printf(
-            "  %-8s %8.1f ms/frame (%.2fx the reference tracer), %.1f ns per traced pixel "
-            "per bounce, %.0f traced pixels, PSNR %.2f dB\n",
-            lookup_mode_name(mode), ms, ms / (reference_stats.seconds * 1e3),
-            rays > 0 ? stats.part_ms("tracing") / frames * 1e6 / rays : 0.0,
-            stats.count("traced pixels") / frames, psnr);
-        std::fflush(stdout);
-      }
-    }
+    method.settings().intersect = MeshIntersection::kBvh;
+    render_image(method, scene.camera, 8, 8, 1);  // loads the BVHs
+    double field_mb = 0.0, bvh_mb = 0.0;
+    asset_bytes(gpu, field_mb, bvh_mb);
+    std::printf(
+        "\n## %s\n\nGPU memory of the meshes: geometry images + fields %.1f MB; BVHs + "
+        "rasterised meshes %.1f MB (BVH build %.3f s)\n",
+        name, field_mb, bvh_mb, gpu.assets().bvhs().build_seconds());
+    for (int size : arguments.sizes)
+      for (int depth : depths)
+        bench_depth(method, tracer, scene, size, depth, frames);
   }
   return 0;
 }

@@ -170,12 +170,36 @@ bool GpuAssets::require(const Scene& scene, AssetNeeds needs, std::string& error
   if (assets_.size() != scene.meshes.size())
     assets_ = std::vector<GpuAsset>(scene.meshes.size());
   needs.images = needs.images || needs.fields || needs.parameterized_meshes;
+  needs.source_meshes = needs.source_meshes || needs.bvhs;
   const bool fields_loaded = loaded_.fields && field_bits_ == needs.field_bits;
-  return (!needs.images || loaded_.images || load_images(scene, error)) &&
-         (!needs.fields || fields_loaded || load_fields(scene, needs.field_bits, error)) &&
-         (!needs.source_meshes || loaded_.source_meshes || load_source_meshes(scene, error)) &&
-         (!needs.parameterized_meshes || loaded_.parameterized_meshes ||
-          load_parameterized_meshes(scene, error));
+  const bool optional = needs.optional_fields;
+  if (!((!needs.images || loaded_.images || load_images(scene, optional, error)) &&
+        (!needs.fields || fields_loaded || load_fields(scene, needs.field_bits, optional, error)) &&
+        (!needs.source_meshes || loaded_.source_meshes || load_source_meshes(scene, error)) &&
+        (!needs.parameterized_meshes || loaded_.parameterized_meshes ||
+         load_parameterized_meshes(scene, error)) &&
+        check_complete(scene, needs, error)))
+    return false;
+  if (needs.bvhs && !loaded_.bvhs) {
+    bvhs_.build(assets_);
+    loaded_.bvhs = true;
+  }
+  return true;
+}
+
+bool GpuAssets::check_complete(const Scene& scene, const AssetNeeds& needs,
+                               std::string& error) const {
+  for (size_t m = 0; m < assets_.size() && !needs.optional_fields; ++m) {
+    if (needs.images && assets_[m].layer < 0) {
+      error = missing_asset_message(scene.meshes[m], scene.filename, "geometry image");
+      return false;
+    }
+    if (needs.fields && assets_[m].samples_per_side == 0) {
+      error = missing_asset_message(scene.meshes[m], scene.filename, "geometry field");
+      return false;
+    }
+  }
+  return true;
 }
 
 bool GpuAssets::upload(const std::vector<const GeometryImage*>& images,
@@ -203,10 +227,12 @@ bool GpuAssets::upload(const std::vector<const GeometryImage*>& images,
   return true;
 }
 
-bool GpuAssets::load_images(const Scene& scene, std::string& error) {
+bool GpuAssets::load_images(const Scene& scene, bool optional, std::string& error) {
   images_.assign(scene.meshes.size(), GeometryImage{});
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const MeshAsset& mesh = scene.meshes[m];
+    if (mesh.geometry_image.empty() && optional)
+      continue;  // no image (size 0): traced by its BVH
     if (mesh.geometry_image.empty()) {
       error = missing_asset_message(mesh, scene.filename, "geometry image");
       return false;
@@ -222,7 +248,7 @@ bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
   std::vector<int> sizes;
   for (const GeometryImage& image : images_) {
     side = std::max(side, image.size);
-    sizes.push_back(image.size);
+    sizes.push_back(std::max(1, image.size));  // a missing image (size 0) holds a 1^2 slot
   }
   int layers = 0;
   const std::vector<AtlasSlot> slots = pack_image_atlas(sizes, side, layers);
@@ -235,6 +261,9 @@ bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   for (size_t m = 0; m < images_.size(); ++m) {
     const GeometryImage& image = images_[m];
+    assets_[m].layer = -1;
+    if (image.size == 0)
+      continue;
     std::vector<glm::vec4> position(image.position.size()), normal(image.position.size());
     std::vector<glm::vec4> albedo(image.position.size(), glm::vec4(1.0f));
     for (size_t t = 0; t < position.size(); ++t) {
@@ -265,13 +294,19 @@ bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
   return true;
 }
 
-bool GpuAssets::load_fields(const Scene& scene, int bits, std::string& error) {
+bool GpuAssets::load_fields(const Scene& scene, int bits, bool optional, std::string& error) {
   // Headers first (the array's size), then one field at a time: K float tables of 95 MB each at
-  // N = 24 need not all be in memory at once.
+  // N = 24 need not all be in memory at once. With `optional`, a mesh without a field or image
+  // gets none.
   std::vector<int> sides(scene.meshes.size(), 0), layers(scene.meshes.size(), 0);
+  const auto skipped = [&](size_t m) {
+    return optional && (scene.meshes[m].geometry_field.empty() || assets_[m].layer < 0);
+  };
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const MeshAsset& mesh = scene.meshes[m];
     ExrAssetHeader header;
+    if (skipped(m))
+      continue;
     if (mesh.geometry_field.empty()) {
       error = missing_asset_message(mesh, scene.filename, "geometry field");
       return false;
@@ -286,6 +321,8 @@ bool GpuAssets::load_fields(const Scene& scene, int bits, std::string& error) {
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const MeshAsset& mesh = scene.meshes[m];
     GeometryField field;
+    if (skipped(m))
+      continue;
     if (!load_geometry_field(mesh.geometry_field, field, error))
       return false;
     FieldLookup lookup;
@@ -423,11 +460,25 @@ std::string asset_memory_lines(const Scene& scene, const GpuAssets& assets) {
                                                    : "RG32F";
   for (size_t m = 0; m < assets.assets().size() && m < scene.meshes.size(); ++m) {
     const GpuAsset& a = assets.assets()[m];
-    char line[256];
-    std::snprintf(line, sizeof(line), "%s: image %.1f MB, field K = %d x %s %.1f MB\n",
-                  std::filesystem::path(scene.meshes[m].file).filename().c_str(),
-                  double(a.image_bytes) / 1e6, a.field_layers, format, double(a.field_bytes) / 1e6);
-    text += line;
+    char part[128];
+    std::string parts;
+    if (a.layer >= 0) {
+      std::snprintf(part, sizeof(part), "image %.1f MB", double(a.image_bytes) / 1e6);
+      parts += part;
+    }
+    if (a.samples_per_side > 0) {
+      std::snprintf(part, sizeof(part), ", field K = %d x %s %.1f MB", a.field_layers, format,
+                    double(a.field_bytes) / 1e6);
+      parts += part;
+    }
+    if (a.bvh_root >= 0) {
+      std::snprintf(part, sizeof(part), ", BVH %.1f MB", double(a.bvh_bytes) / 1e6);
+      parts += part;
+    }
+    if (parts.rfind(", ", 0) == 0)
+      parts.erase(0, 2);
+    text += std::filesystem::path(scene.meshes[m].file).filename().string() + ": " +
+            (parts.empty() ? "nothing loaded" : parts) + "\n";
   }
   return text;
 }

@@ -36,6 +36,7 @@
 #include "gfield/geometry_image.hpp"
 #include "gfield/scene.hpp"
 #include "runtime/gl_object.hpp"
+#include "runtime/gpu_bvh.hpp"
 
 namespace gfield {
 
@@ -70,6 +71,10 @@ struct AssetNeeds {
   int field_bits = 8;                 ///< bits per uv component of the fields: 8, 16, 32 (float)
   bool source_meshes = false;         ///< the mesh files themselves
   bool parameterized_meshes = false;  ///< NAME.gimage.obj (and the images)
+  bool bvhs = false;                  ///< the mesh files' BVHs (and the mesh files): gpu_bvh.hpp
+  /// A mesh without a geometry image or field is left without them (GpuAsset::layer -1,
+  /// samples_per_side 0) instead of an error: the field method traces it by its BVH.
+  bool optional_fields = false;
 };
 
 /// Where one asset (one mesh file of the scene) lives on the GPU.
@@ -88,6 +93,8 @@ struct GpuAsset {
   Box mesh_bounds;                   ///< bounds of the mesh file's vertices (with the source mesh)
   GpuMesh source;  ///< the mesh file, the reference tracer's normals, its own uvs and colours
   GpuMesh parameterized;  ///< NAME.gimage.obj with corner uvs, or the image's grid
+  int bvh_root = -1;      ///< its BVH's root in the BVH buffers (-1: none loaded)
+  size_t bvh_bytes = 0;   ///< GPU bytes of its BVH (nodes, triangles and their shading)
 };
 
 class GpuAssets {
@@ -108,6 +115,7 @@ class GpuAssets {
   GLuint fields() const { return fields_.id(); }
   GLuint albedo() const { return albedo_.id(); }
   GLuint mesh_textures() const { return mesh_textures_.id(); }
+  const GpuBvhs& bvhs() const { return bvhs_; }
   /// Bits per uv component of the fields loaded (8, 16, 32).
   int field_bits() const { return field_bits_; }
   /// Bytes of texture memory held.
@@ -118,8 +126,10 @@ class GpuAssets {
   int texture_uploads() const { return texture_uploads_; }
 
  private:
-  bool load_images(const Scene& scene, std::string& error);
-  bool load_fields(const Scene& scene, int bits, std::string& error);
+  bool load_images(const Scene& scene, bool optional, std::string& error);
+  bool load_fields(const Scene& scene, int bits, bool optional, std::string& error);
+  /// False with the missing-asset message of the first mesh without a geometry image or field.
+  bool check_complete(const Scene& scene, const AssetNeeds& needs, std::string& error) const;
   bool upload_images(const std::string& owner, std::string& error);
   /// Allocates the field array for fields of `sides` (table side, 0: none) and `layers`.
   bool make_field_array(const std::vector<int>& sides, const std::vector<int>& layers, int bits,
@@ -139,6 +149,7 @@ class GpuAssets {
   GlTexture fields_;
   GlTexture albedo_;
   GlTexture mesh_textures_;
+  GpuBvhs bvhs_;
   size_t image_texture_bytes_ = 0;  ///< geometry images (positions, normals, albedo)
   size_t field_texture_bytes_ = 0;  ///< the field array
   size_t mesh_texture_bytes_ = 0;   ///< the meshes' own textures
@@ -146,7 +157,8 @@ class GpuAssets {
   int field_bits_ = 0;
 };
 
-/// One line per asset: "NAME: image 10.5 MB, field K = 4 x RG8 95.6 MB" (the scene's mesh files).
+/// One line per asset: "NAME: image 10.5 MB, field K = 4 x RG8 95.6 MB" (the scene's mesh files),
+/// with ", BVH 1.2 MB" where BVHs are loaded and "no field" for a mesh without one.
 std::string asset_memory_lines(const Scene& scene, const GpuAssets& assets);
 
 /// Grid triangles of a geometry image: two per quad of texel centres whose 4 corners are covered

@@ -63,7 +63,7 @@ gpu::GpuObject gpu_object(const GpuScene& gpu_scene, int k) {
     g.asset =
         glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, asset.albedo ? 1 : 0);
     g.field = glm::ivec4(asset.field_layer, asset.field_layers, gpu_scene.assets().field_bits(), 0);
-    g.image = glm::ivec4(asset.image_origin, 0, 0);
+    g.image = glm::ivec4(asset.image_origin, asset.bvh_root, 0);
   }
   return g;
 }
@@ -126,6 +126,7 @@ void GpuScene::bind() const {
   glBindTextureUnit(gpu::UNIT_GI_ALBEDO, assets_.albedo());
   glBindTextureUnit(gpu::UNIT_MESH_TEXTURES, assets_.mesh_textures());
   glBindTextureUnit(gpu::UNIT_ENVIRONMENT, environment_.id());
+  assets_.bvhs().bind();
 }
 
 void GpuScene::set_uniforms(const ShaderProgram& program) const {

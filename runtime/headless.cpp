@@ -19,8 +19,9 @@ int fail(const std::string& message, int code = 2) {
 /// One method's picture and its timings.
 struct MethodRun {
   Image image;
-  FrameStats first;  ///< the first frame (shader warm-up included)
-  FrameStats rest;   ///< the other frames, summed
+  FrameStats first;          ///< the first frame (shader warm-up included)
+  FrameStats rest;           ///< the other frames, summed
+  double rest_cpu_ms = 0.0;  ///< CPU time of this process over the other frames (all threads)
 };
 
 /// Selects (loads) the method named `name`.
@@ -39,8 +40,10 @@ MethodRun render_frames(ViewSession& session, const HeadlessOptions& o) {
   const Camera& camera = session.scene().scene().camera;
   MethodRun run;
   run.image = render_image(method, camera, o.width, o.height, o.samples_per_pixel, &run.first);
+  const double cpu_start = process_cpu_ms();
   for (int f = 1; f < o.frames; ++f)
     run.image = render_image(method, camera, o.width, o.height, o.samples_per_pixel, &run.rest);
+  run.rest_cpu_ms = process_cpu_ms() - cpu_start;
   return run;
 }
 
@@ -55,6 +58,8 @@ void print_bench(const Method& method, const MethodRun& run, const HeadlessOptio
   for (size_t k = 0; k < s.parts_ms.size(); ++k)
     std::printf("%s %s %.2f ms", k == 0 ? ":" : ",", s.parts_ms[k].first.c_str(),
                 s.parts_ms[k].second / timed);
+  if (o.frames > 1)  // on a GL that runs on the CPU (llvmpipe): what another load does not change
+    std::printf("; CPU %.2f ms per frame", run.rest_cpu_ms / timed);
   std::printf("\n");
   // Counts per sample (one frame is samples_per_pixel samples).
   FrameStats per_sample;
@@ -71,6 +76,9 @@ void print_bench(const Method& method, const MethodRun& run, const HeadlessOptio
   const std::string summary = method.summary(per_sample);
   if (!summary.empty())
     std::printf("%s\n", summary.c_str());
+  const std::string status = method.status();
+  if (!status.empty())
+    std::printf("%s\n", status.c_str());
 }
 
 /// Prints PSNR and SSIM against o.reference and writes the heat map; false on a bad reference.

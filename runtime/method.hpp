@@ -117,6 +117,12 @@ class Method {
     (void)per_sample;
     return "";
   }
+  /// What the method does with this scene that the user should know (shown in the panel and by
+  /// --bench), one line or "".
+  virtual std::string status() const { return ""; }
+  /// What the method falls back on for this scene, one line each (e.g. a mesh without a geometry
+  /// field, traced through its BVH): gfield-view prints them on stderr once it has loaded it.
+  virtual std::vector<std::string> notes() const { return {}; }
 };
 
 /// Renders `width` x `height` of `camera` with `spp` stratified samples per pixel (the strata

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "gfield/image_metrics.hpp"
+#include "gfield/printable.hpp"
 #include "runtime/method_registry.hpp"
 
 namespace gfield {
@@ -36,6 +37,8 @@ bool ViewSession::ensure_loaded(int index, std::string& error) {
   if (!loaded_[size_t(index)]) {
     if (!methods_[size_t(index)]->load(scene_, shader_dir_, error))
       return false;
+    for (const std::string& note : methods_[size_t(index)]->notes())
+      std::fprintf(stderr, "gfield-view: note: %s\n", printable(note).c_str());
     loaded_[size_t(index)] = true;
   }
   return true;

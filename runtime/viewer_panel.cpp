@@ -121,6 +121,9 @@ void figures_section(ViewerState& s, const GlContext& context, const PictureFigu
               1000.0 / std::max(figures.window_ms, 1e-3));
   for (const auto& [name, value] : figures.stats.counts)
     ImGui::Text("%s %.0f", name.c_str(), value);
+  const std::string status = s.session->method(s.session->current()).status();
+  if (!status.empty())
+    ImGui::TextWrapped("%s", status.c_str());
   const GpuScene& scene = s.session->scene();
   ImGui::Text("texture memory %.1f MB", double(scene.assets().texture_bytes()) / 1e6);
   ImGui::TextUnformatted(asset_memory_lines(scene.scene(), scene.assets()).c_str());

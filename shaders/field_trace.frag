@@ -27,43 +27,71 @@ uniform int u_max_rays;       // secondary rays per pixel at most
 layout(location = 0) out vec4 o_color;  // linear radiance, alpha 1
 layout(location = 1) out vec4 o_hits;   // first hit object, secondary rays traced, 0, 0
 
-#define STACK_SIZE 8
+// Rays waiting to be traced, last in first out: path rays (reflections, refractions) and the
+// shadow rays of diffuse hits. Every ray is traced by the one call of trace_scene in main(), and
+// every hit shaded by the one call of shade_hit: each is inlined once (see gf_trace_from).
+#define STACK_SIZE 16
 
 struct PathRay {
   vec3 origin;
   vec3 direction;
-  vec3 weight;
+  vec3 weight;      // path rays: the path's weight; shadow rays: the radiance the light adds
+  float t_max;      // shadow rays: the distance to the light
+  bool shadow;
   int depth;
-  int inside;  // the dielectric object the ray travels in, -1 for air
+  int inside;       // the dielectric object the ray travels in, -1 for air
   SelfLookup self;  // the lookup of the object it leaves
 };
 
 PathRay stack_rays[STACK_SIZE];
 int stack_count = 0;
 
-// A ray leaving `hit` on the side of `g` (the geometric normal, or its negation).
-void push_ray(SceneHit hit, vec3 g, vec3 direction, vec3 weight, int depth, int inside) {
-  if (max(weight.r, max(weight.g, weight.b)) < u_min_weight) return;
+void push(PathRay r) {
   if (stack_count >= STACK_SIZE) return;
-  PathRay r;
-  r.origin = hit.position + object_epsilon(hit.object, false, hit.position) * g;
-  r.direction = normalize(direction);
-  r.weight = weight;
-  r.depth = depth;
-  r.inside = inside;
-  r.self = self_lookup(hit, g, hit.self_offset);
   stack_rays[stack_count] = r;
   stack_count++;
 }
 
-// What a ray sees at a hit: diffuse shading is added to `radiance`; mirrors and dielectrics
-// push their continuing rays.
+// A ray leaving `hit` on the side of `g` (the geometric normal, or its negation).
+void push_ray(SceneHit hit, vec3 g, vec3 direction, vec3 weight, int depth, int inside) {
+  if (max(weight.r, max(weight.g, weight.b)) < u_min_weight) return;
+  PathRay r;
+  r.origin = hit.position + object_epsilon(hit.object, false, hit.position) * g;
+  r.direction = normalize(direction);
+  r.weight = weight;
+  r.t_max = 3.0e38f;
+  r.shadow = false;
+  r.depth = depth;
+  r.inside = inside;
+  r.self = self_lookup(hit, g, hit.self_offset);
+  push(r);
+}
+
+// Diffuse shading of `hit` seen along `ray` (as the reference tracer's): the ambient part now,
+// each light's part by a shadow ray.
+void shade_diffuse(SceneHit hit, vec3 geometric, PathRay ray, inout vec3 radiance) {
+  radiance += ray.weight * hit.albedo * u_ambient;
+  for (int i = 0; i < u_light_count; i++) {
+    PathRay s;
+    if (!light_from(hit, geometric, ray.direction, i, s.direction, s.t_max, s.weight, s.self))
+      continue;
+    s.origin = s.self.origin;
+    s.weight *= ray.weight;
+    s.shadow = true;
+    s.depth = ray.depth;
+    s.inside = -1;
+    push(s);
+  }
+}
+
+// What a ray sees at a hit: diffuse shading is added to `radiance` (its lights by shadow rays);
+// mirrors and dielectrics push their continuing rays.
 void shade_hit(SceneHit hit, vec3 geometric, PathRay ray, inout vec3 radiance) {
   int k = hit.object;
   int material = objects[k].kind.y;
   vec3 d = ray.direction;
   if (material == MATERIAL_DIFFUSE) {
-    radiance += ray.weight * shade_diffuse(hit, geometric, d);
+    shade_diffuse(hit, geometric, ray, radiance);
     return;
   }
   bool front = dot(d, geometric) < 0.0f;
@@ -101,21 +129,23 @@ void main() {
   vec4 g_position = texelFetch(u_g_position, pixel, 0);
   vec4 g_normal = texelFetch(u_g_normal, pixel, 0);
   vec4 g_geometric = texelFetch(u_g_geometric, pixel, 0);
-  vec3 d = camera_direction();
   int first = int(g_position.w);
   PathRay camera;
   camera.origin = u_camera_position;
-  camera.direction = d;
+  camera.direction = camera_direction();
   camera.weight = vec3(1.0f);
+  camera.t_max = 3.0e38f;
+  camera.shadow = false;
   camera.depth = 0;
   camera.inside = -1;
   camera.self = no_self_lookup();
   vec3 radiance = vec3(0.0f);
   int traced = 0;
-  if (first < 0) {
-    radiance = environment_radiance(d);
-  } else {
-    SceneHit hit;
+  // The camera ray's hit is the G-buffer's; then rays from the stack, each traced.
+  PathRay ray = camera;
+  SceneHit hit = scene_miss();
+  vec3 geometric = vec3(0.0f);
+  if (first >= 0) {
     hit.hit = true;
     hit.object = first;
     hit.position = g_position.xyz;
@@ -123,28 +153,32 @@ void main() {
     hit.normal = g_normal.xyz;
     hit.uv = vec2(g_normal.w, g_geometric.w);
     hit.albedo = texelFetch(u_g_albedo, pixel, 0).rgb;
+    hit.has_albedo = true;
     hit.self_offset = object_epsilon(first, true, hit.position);
-    shade_hit(hit, g_geometric.xyz, camera, radiance);
-    while (stack_count > 0 && traced < u_max_rays) {
+    geometric = g_geometric.xyz;
+  }
+  for (bool traced_ray = false;; traced_ray = true) {
+    if (traced_ray) {
+      if (stack_count == 0) break;
       stack_count--;
-      PathRay ray = stack_rays[stack_count];
-      traced++;
-      SceneHit next;
-      if (ray.inside >= 0) {
-        // Inside a dielectric: its own surface beyond the origin (the exit).
-        next = objects[ray.inside].kind.x == SHAPE_MESH
-                   ? intersect_self(ray.origin, ray.direction, 3.0e38f, ray.self)
-                   : intersect_object(ray.inside, ray.origin, ray.direction, 0.0f, 3.0e38f);
-      } else {
-        next = trace_scene(ray.origin, ray.direction, 3.0e38f, false, ray.self);
+      ray = stack_rays[stack_count];
+      if (!ray.shadow) {
+        if (traced >= u_max_rays) continue;  // the shadow rays below it are still traced
+        traced++;
       }
-      if (!next.hit) {
-        radiance += ray.weight * environment_radiance(ray.direction);
-        continue;
-      }
-      shade_hit(next, next.normal, ray, radiance);
+      hit = trace_scene(ray.origin, ray.direction, ray.t_max, ray.shadow, ray.self, ray.inside);
+      geometric = hit.normal;
+    }
+    if (ray.shadow) {
+      if (!hit.hit) radiance += ray.weight;
+    } else if (!hit.hit) {
+      radiance += ray.weight * environment_radiance(ray.direction);
+    } else {
+      shade_hit(hit, geometric, ray, radiance);
     }
   }
+  WORK_ADD(WORK_RAYS, traced);
+  work_flush();
   o_color = vec4(radiance, 1.0f);
   o_hits = vec4(float(first), float(traced), 0.0f, 0.0f);
 }

@@ -1,5 +1,6 @@
 #include "runtime/methods/geometry_field.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -32,23 +33,87 @@ std::vector<MethodOption> GeometryFieldMethod::options() {
                    &s.min_weight, 0.0f, 1.0f),
       int_option("max-rays", "max rays / pixel", "Secondary rays per pixel at most", &s.max_rays, 1,
                  256),
+      choice_option(
+          "intersect", "intersect meshes",
+          "How rays meet meshes: field (a geometry-field lookup) or bvh (their triangles, "
+          "exactly, through a BVH); a mesh without a field always by its BVH",
+          &s.intersect, {"field", "bvh"}),
+      flag_option("count-work", "count work",
+                  "Count field lookups, texel fetches, Newton steps and BVH nodes (--bench prints "
+                  "them per sample)",
+                  &s.count_work),
   };
 }
 
 AssetNeeds GeometryFieldMethod::needs() const {
   AssetNeeds needs;
   needs.fields = true;
+  needs.optional_fields = true;  // a mesh without them is traced through its BVH
   needs.field_bits = field_bits(settings_.field_bits);
   needs.source_meshes = true;  // the G-buffer holds the surfaces the reference tracer sees
+  needs.bvhs = settings_.intersect == MeshIntersection::kBvh;
+  for (const MeshAsset& mesh : scene_->scene().meshes)
+    needs.bvhs = needs.bvhs || mesh.geometry_image.empty() || mesh.geometry_field.empty();
   return needs;
 }
 
 bool GeometryFieldMethod::load(GpuScene& scene, const std::filesystem::path& shader_dir,
                                std::string& error) {
   scene_ = &scene;
-  return scene.require(needs(), error) &&
-         gbuffer_program_.build(shader_dir, {"gbuffer.vert", "gbuffer.frag"}, "", error) &&
-         trace_program_.build(shader_dir, {"fullscreen.vert", "field_trace.frag"}, "", error);
+  shader_dir_ = shader_dir;
+  trace_programs_.clear();
+  auto program = std::make_unique<ShaderProgram>();
+  if (!scene.require(needs(), error) ||
+      !gbuffer_program_.build(shader_dir, {"gbuffer.vert", "gbuffer.frag"}, "", error) ||
+      !program->build(shader_dir, {"fullscreen.vert", "field_trace.frag"}, trace_defines(), error))
+    return false;
+  trace_programs_[trace_defines()] = std::move(program);
+  return true;
+}
+
+std::string GeometryFieldMethod::trace_defines() const {
+  bool by_field = false, by_bvh = false;
+  for (const GpuAsset& asset : scene_->assets().assets()) {
+    const bool field =
+        asset.samples_per_side > 0 && settings_.intersect == MeshIntersection::kField;
+    by_field = by_field || field;
+    by_bvh = by_bvh || !field;
+  }
+  return "#define GF_TRACE_MODE " + std::to_string(int(settings_.mode)) +
+         "\n#define GF_FIELD_MESHES " + (by_field ? "1" : "0") + "\n#define GF_BVH_MESHES " +
+         (by_bvh ? "1" : "0") + "\n" + (settings_.count_work ? "#define GF_COUNT_WORK 1\n" : "");
+}
+
+const ShaderProgram* GeometryFieldMethod::trace_program() {
+  const std::string defines = trace_defines();
+  std::unique_ptr<ShaderProgram>& program = trace_programs_[defines];
+  if (!program) {
+    auto built = std::make_unique<ShaderProgram>();
+    std::string error;
+    if (!built->build(shader_dir_, {"fullscreen.vert", "field_trace.frag"}, defines, error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      trace_programs_.erase(defines);
+      return nullptr;
+    }
+    program = std::move(built);
+  }
+  return program.get();
+}
+
+bool GeometryFieldMethod::follow_settings() {
+  std::string error;
+  const AssetNeeds wanted = needs();
+  const GpuAssets& assets = scene_->assets();
+  const bool bvhs_loaded = std::any_of(assets.assets().begin(), assets.assets().end(),
+                                       [](const GpuAsset& a) { return a.bvh_root >= 0; });
+  if ((assets.field_bits() != wanted.field_bits || (wanted.bvhs && !bvhs_loaded)) &&
+      !scene_->require(wanted, error)) {  // --field-bits or --intersect changed in the panel
+    std::fprintf(stderr, "%s\n", error.c_str());
+    settings_.field_bits = FieldBits(assets.field_bits() / 16);  // 8, 16, 32 -> 0, 1, 2
+    settings_.intersect = MeshIntersection::kField;
+    return false;
+  }
+  return true;
 }
 
 void GeometryFieldMethod::render_gbuffer(const Camera& camera, int width, int height,
@@ -83,17 +148,23 @@ void GeometryFieldMethod::render_tracing(const Camera& camera, Framebuffer& targ
                                          glm::vec2 jitter) {
   target.bind();
   glDisable(GL_DEPTH_TEST);
-  glUseProgram(trace_program_.id());
+  const ShaderProgram* built = trace_program();
+  if (built == nullptr)
+    return;
+  const ShaderProgram& program = *built;
+  glUseProgram(program.id());
   scene_->bind();
+  if (settings_.count_work)
+    work_.clear();
   glBindTextureUnit(gpu::UNIT_GBUFFER_POSITION, gbuffer_.texture(0));
   glBindTextureUnit(gpu::UNIT_GBUFFER_NORMAL, gbuffer_.texture(1));
   glBindTextureUnit(gpu::UNIT_GBUFFER_GEOMETRIC, gbuffer_.texture(2));
   glBindTextureUnit(gpu::UNIT_GBUFFER_ALBEDO, gbuffer_.texture(3));
-  const auto u = [&](const char* name) { return trace_program_.uniform(name); };
-  scene_->set_uniforms(trace_program_);
-  set_camera_uniforms(trace_program_, camera, target.width(), target.height(), jitter);
-  glUniform1i(u("u_mode"), int(settings_.mode));
+  const auto u = [&](const char* name) { return program.uniform(name); };
+  scene_->set_uniforms(program);
+  set_camera_uniforms(program, camera, target.width(), target.height(), jitter);
   glUniform1i(u("u_self_reflection"), settings_.self_reflection ? 1 : 0);
+  glUniform1i(u("u_intersect_bvh"), settings_.intersect == MeshIntersection::kBvh ? 1 : 0);
   glUniform1i(u("u_max_depth"), settings_.max_depth);
   glUniform1f(u("u_min_weight"), settings_.min_weight);
   glUniform1i(u("u_max_rays"), settings_.max_rays);
@@ -102,12 +173,7 @@ void GeometryFieldMethod::render_tracing(const Camera& camera, Framebuffer& targ
 
 void GeometryFieldMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 jitter,
                                  FrameStats* stats) {
-  std::string error;
-  if (scene_->assets().field_bits() != field_bits(settings_.field_bits) &&
-      !scene_->require(needs(), error)) {  // --field-bits changed in the panel
-    std::fprintf(stderr, "%s\n", error.c_str());
-    settings_.field_bits = FieldBits(scene_->assets().field_bits() / 16);  // 8, 16, 32 -> 0, 1, 2
-  }
+  follow_settings();
   const Stopwatch clock;
   render_gbuffer(camera, target.width(), target.height(), jitter);
   const double gbuffer_ms = timed_ms(stats != nullptr, clock);
@@ -126,10 +192,15 @@ void GeometryFieldMethod::render(const Camera& camera, Framebuffer& target, glm:
   }
   stats->add_count("traced pixels", double(traced));
   stats->add_count("secondary rays", double(rays));
+  if (settings_.count_work)
+    add_work_counts(*stats, work_.read());
 }
 
 bool GeometryFieldMethod::reload_shaders_if_changed(std::string& error) {
-  return reload_programs_if_changed({&gbuffer_program_, &trace_program_}, error);
+  std::vector<ShaderProgram*> programs = {&gbuffer_program_};
+  for (auto& [defines, program] : trace_programs_)
+    programs.push_back(program.get());
+  return reload_programs_if_changed(programs, error);
 }
 
 std::string GeometryFieldMethod::summary(const FrameStats& per_sample) const {
@@ -138,11 +209,59 @@ std::string GeometryFieldMethod::summary(const FrameStats& per_sample) const {
   const double tracing_ms = per_sample.part_ms("tracing");
   if (rays <= 0.0)
     return "";
-  char line[128];
+  char line[384];
   std::snprintf(line, sizeof(line),
                 "%.2f secondary rays per traced pixel; tracing %.1f ns per traced pixel per bounce",
                 traced > 0.0 ? rays / traced : 0.0, tracing_ms * 1e6 / rays);
-  return line;
+  std::string text = line;
+  const double lookups = per_sample.count(work_count_name(gpu::WORK_LOOKUPS));
+  const double traversals = per_sample.count(work_count_name(gpu::WORK_BVH_TRAVERSALS));
+  if (lookups > 0.0) {
+    std::snprintf(line, sizeof(line),
+                  "\nper field lookup: %.1f field texel fetches, %.1f image texel fetches, %.1f "
+                  "Newton steps",
+                  per_sample.count(work_count_name(gpu::WORK_FIELD_FETCHES)) / lookups,
+                  per_sample.count(work_count_name(gpu::WORK_IMAGE_FETCHES)) / lookups,
+                  per_sample.count(work_count_name(gpu::WORK_NEWTON_STEPS)) / lookups);
+    text += line;
+  }
+  if (traversals > 0.0) {
+    std::snprintf(line, sizeof(line), "\nper BVH traversal: %.1f nodes, %.1f triangles",
+                  per_sample.count(work_count_name(gpu::WORK_BVH_NODES)) / traversals,
+                  per_sample.count(work_count_name(gpu::WORK_BVH_TRIANGLES)) / traversals);
+    text += line;
+  }
+  return text;
+}
+
+std::vector<std::string> GeometryFieldMethod::notes() const {
+  std::vector<std::string> notes;
+  const Scene& scene = scene_->scene();
+  const std::vector<GpuAsset>& assets = scene_->assets().assets();
+  for (size_t m = 0; m < scene.meshes.size() && m < assets.size(); ++m) {
+    if (assets[m].samples_per_side == 0)
+      notes.push_back(missing_asset_message(scene.meshes[m], scene.filename, "geometry field") +
+                      ": traced through its BVH");
+  }
+  return notes;
+}
+
+std::string GeometryFieldMethod::status() const {
+  const Scene& scene = scene_->scene();
+  const std::vector<GpuAsset>& assets = scene_->assets().assets();
+  std::string by_field, by_bvh;
+  for (size_t m = 0; m < scene.meshes.size() && m < assets.size(); ++m) {
+    const std::string name = std::filesystem::path(scene.meshes[m].file).filename().string();
+    const bool field = assets[m].samples_per_side > 0;
+    if (field && settings_.intersect == MeshIntersection::kField)
+      by_field += (by_field.empty() ? "" : ", ") + name;
+    else
+      by_bvh += (by_bvh.empty() ? "" : ", ") + name + (field ? "" : " (no field)");
+  }
+  if (by_field.empty() && by_bvh.empty())
+    return "";
+  return "meshes by field: " + (by_field.empty() ? "none" : by_field) +
+         "; by BVH: " + (by_bvh.empty() ? "none" : by_bvh);
 }
 
 }  // namespace gfield

@@ -6,12 +6,20 @@
 // analytic shapes, recursively up to a depth, with shadows and the environment as the reference
 // tracer (`gfield render`) does.
 
+#include <map>
+#include <memory>
+
 #include "gfield/field_lookup.hpp"
 #include "runtime/method.hpp"
 #include "runtime/render_target.hpp"
 #include "runtime/shader_program.hpp"
+#include "runtime/work_counters.hpp"
 
 namespace gfield {
+
+/// How rays meet the mesh objects: a lookup in their geometry field, or exactly, through a BVH
+/// of their triangles (the peer of issue 27). Meshes without a field always use their BVH.
+enum class MeshIntersection { kField = 0, kBvh = 1 };
 
 /// Bits per uv component of the fields on the GPU (RG8, RG16, RG32F).
 enum class FieldBits { k8 = 0, k16 = 1, k32 = 2 };
@@ -33,6 +41,10 @@ struct GeometryFieldSettings {
   float min_weight = 0.005f;
   /// Secondary rays per pixel at most (the GPU has no unbounded recursion).
   int max_rays = 24;
+  MeshIntersection intersect = MeshIntersection::kField;
+  /// Count the work of lookups and traversals (work_counters.hpp) into the frame's stats: the
+  /// counting build of the shading pass.
+  bool count_work = false;
 };
 
 class GeometryFieldMethod : public Method {
@@ -45,8 +57,12 @@ class GeometryFieldMethod : public Method {
   void render(const Camera& camera, Framebuffer& target, glm::vec2 jitter,
               FrameStats* stats) override;
   bool reload_shaders_if_changed(std::string& error) override;
-  /// Secondary rays per traced pixel and ns of tracing per ray.
+  /// Secondary rays per traced pixel and ns of tracing per ray; with count-work, fetches per
+  /// lookup and BVH nodes per traversal.
   std::string summary(const FrameStats& per_sample) const override;
+  /// Which mesh objects are traced how ("by field: spot.obj; by BVH: torus.obj (no field)").
+  std::string status() const override;
+  std::vector<std::string> notes() const override;
 
   GeometryFieldSettings& settings() { return settings_; }
 
@@ -55,11 +71,25 @@ class GeometryFieldMethod : public Method {
   AssetNeeds needs() const;
   void render_gbuffer(const Camera& camera, int width, int height, glm::vec2 jitter);
   void render_tracing(const Camera& camera, Framebuffer& target, glm::vec2 jitter);
+  /// Loads what a changed setting needs (field bits, BVHs); false when it
+  /// cannot (the message on stderr, the setting back to what works).
+  bool follow_settings();
+  /// The defines of the shading pass for the settings and the scene: GF_TRACE_MODE,
+  /// GF_FIELD_MESHES, GF_BVH_MESHES (0: no mesh met that way), GF_COUNT_WORK.
+  std::string trace_defines() const;
+  /// The shading pass for trace_defines(), built on first use (null, the message on stderr,
+  /// when it does not build).
+  const ShaderProgram* trace_program();
 
   GeometryFieldSettings settings_;
   GpuScene* scene_ = nullptr;
+  std::filesystem::path shader_dir_;
   ShaderProgram gbuffer_program_;
-  ShaderProgram trace_program_;
+  /// The shading pass built for the settings and the scene (trace_defines()), each on first
+  /// use: on llvmpipe a shader runs every branch of its code under a mask, so the lookup modes
+  /// and the ways of meeting meshes that a frame does not use are compiled out.
+  std::map<std::string, std::unique_ptr<ShaderProgram>> trace_programs_;
+  WorkCounters work_;
   /// position + object, shading normal + u, geometric normal + v, albedo
   RenderTarget gbuffer_;
 };

@@ -46,8 +46,24 @@ GF_CONST int ENV_CUBE = 3;
 GF_CONST float GF_MIN_RAY_OFFSET = 1.0e-4f;
 
 // Shader storage buffer bindings.
-GF_CONST int BUFFER_OBJECTS = 0;  // GpuObject[], one per scene object
-GF_CONST int BUFFER_LIGHTS = 1;   // GpuLight[], one per light
+GF_CONST int BUFFER_OBJECTS = 0;        // GpuObject[], one per scene object
+GF_CONST int BUFFER_LIGHTS = 1;         // GpuLight[], one per light
+GF_CONST int BUFFER_BVH_NODES = 2;      // GpuBvhNode[]: every mesh's BVH, one after another
+GF_CONST int BUFFER_BVH_TRIANGLES = 3;  // GpuBvhTriangle[]: their triangles in leaf order
+GF_CONST int BUFFER_BVH_SHADING = 4;    // GpuBvhShading[]: the same triangles' shading data
+GF_CONST int BUFFER_WORK = 5;           // uint[WORK_COUNT]: work counters (GF_COUNT_WORK)
+
+// Work counters (runtime/work_counters.hpp), summed over a frame's fragments: what a lookup or a
+// traversal costs, independent of the device.
+GF_CONST int WORK_LOOKUPS = 0;           // geometry-field lookups (gf_trace)
+GF_CONST int WORK_FIELD_FETCHES = 1;     // field texels read
+GF_CONST int WORK_IMAGE_FETCHES = 2;     // geometry-image texels read (positions, normals, ...)
+GF_CONST int WORK_NEWTON_STEPS = 3;      // iterations of gf_refine
+GF_CONST int WORK_BVH_TRAVERSALS = 4;    // BVH traversals (gb_trace)
+GF_CONST int WORK_BVH_NODES = 5;         // BVH nodes whose bounds were tested
+GF_CONST int WORK_BVH_TRIANGLES = 6;     // triangles tested
+GF_CONST int WORK_RAYS = 7;              // secondary rays traced (the field method's stack)
+GF_CONST int WORK_COUNT = 8;
 
 // Texture units. Every program of the runtime draws from this one table, so a unit means the
 // same texture in every pass.
@@ -115,7 +131,35 @@ struct GpuObject {
                 // geometry image holds albedo (UNIT_GI_ALBEDO) else 0
   ivec4 field;  // mesh: first layer of its field in the field array, layers K, bits, 0
   ivec4 image;  // mesh: texel (x, y) of its geometry image's corner in layer asset.x (images
-                // share layers: runtime/image_atlas.hpp), 0, 0
+                // share layers: runtime/image_atlas.hpp); z: the root of its BVH in
+                // BUFFER_BVH_NODES (-1: none loaded); w: 0
+};
+
+// One BVH node (std430, 32 bytes; geometry/mesh_bvh.hpp), bounds in mesh coordinates. The
+// integers are stored as float bits (floatBitsToInt).
+struct GpuBvhNode {
+  vec4 lo;  // xyz: bounds min; w: inner node: its left child (the right one follows it); leaf:
+            // its first triangle in BUFFER_BVH_TRIANGLES
+  vec4 hi;  // xyz: bounds max; w: the leaf's triangles (0: an inner node)
+};
+
+// One triangle of a BVH (std430, 48 bytes), mesh coordinates.
+struct GpuBvhTriangle {
+  vec4 p0;  // xyz: corner 0; w: the layer of its texture in UNIT_MESH_TEXTURES (-1: none)
+  vec4 e1;  // xyz: corner 1 - corner 0
+  vec4 e2;  // xyz: corner 2 - corner 0
+};
+
+// What shades a BVH triangle's hit (std430, 96 bytes): per corner, the shading normal (mesh
+// coordinates) with texture u, and the base colour (the mesh's material colour x vertex colour,
+// linear) with texture v: the rasterised mesh's vertex attributes (runtime/gpu_assets.hpp).
+struct GpuBvhShading {
+  vec4 normal_u0;
+  vec4 normal_u1;
+  vec4 normal_u2;
+  vec4 base_v0;
+  vec4 base_v1;
+  vec4 base_v2;
 };
 
 // One light (std430, 48 bytes).

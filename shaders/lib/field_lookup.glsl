@@ -37,6 +37,12 @@
 #define GF_INOUT(T) inout T
 #endif
 
+// Work counting (shaders/lib/work.glsl): the includer may define GF_COUNT(kind, n) to count the
+// lookups and the Newton steps; by default it is nothing.
+#ifndef GF_COUNT
+#define GF_COUNT(kind, n)
+#endif
+
 #define GF_MODE_NEAREST 0
 #define GF_MODE_LINEAR 1
 #define GF_MODE_REFINED 2
@@ -225,6 +231,7 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
   vec2 x = gf_image_grid(uv, n);
   p = vec3(0.0f);
   for (int iteration = 0; iteration < GF_NEWTON_ITERATIONS; iteration++) {
+    GF_COUNT(WORK_NEWTON_STEPS, 1);
     ivec2 c = gf_image_cell(x, n);
     vec2 f = x - vec2(c);
     vec3 p00 = gf_image_position_texel(c.x, c.y);
@@ -415,6 +422,7 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
 // true: the field read from the exit side, i.e. the reversed line) of o + t d, t in
 // [t_min, t_max], in mesh coordinates, over the stored hits of all layers (see the modes above).
 GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
+  GF_COUNT(WORK_LOOKUPS, 1);
   if (!(dot(d, d) > 0.0f)) {
     return gf_miss();  // zero or NaN direction
   }
@@ -490,26 +498,53 @@ GfHit gf_hit_near(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
 // (the surface curving back). Where that does not settle it, the hit of the parallel ray from
 // self_origin beyond self_t_min is taken, moved onto the ray (refined mode: gf_hit_near; where
 // that fails the ray passes beside it: a miss).
-GfHit gf_trace_leaving(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin,
-                       float self_t_min, float facing, int mode) {
-  GfHit h = gf_trace(o, d, t_min, t_max, mode, false);
-  for (int i = 0; i < GF_SELF_CROSSINGS && h.hit && h.t < self_t_min; i++) {
-    if (facing * dot(h.normal, d) < 0.0f) {
+// gf_trace_leaving when `leaving`, else gf_trace(o, d, t_min, t_max, mode, false). One call of
+// gf_trace in a loop, so that a shader holds one copy of the lookup however it is used (each
+// call is inlined: with a call per case the geometry-field method's shader held some two dozen
+// copies, and llvmpipe ran even a scene without meshes 5x slower).
+GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, float self_t_min,
+                    float facing, int mode, bool leaving) {
+  float shift = dot(self_origin - o, d) / dot(d, d);
+  vec3 start = o;
+  float from = t_min;
+  float to = t_max;
+  bool parallel = false;  // looking up the parallel ray from self_origin
+  int crossings = 0;
+  for (int i = 0; i < GF_SELF_CROSSINGS + 2; i++) {
+    GfHit h = gf_trace(start, d, from, to, mode, false);
+    if (!leaving) {
       return h;
     }
-    h = gf_trace(o, d, h.t + t_min, t_max, mode, false);
+    if (parallel) {
+      if (!h.hit) {
+        return h;
+      }
+      if (mode != GF_MODE_REFINED) {
+        h.t += shift;
+        return h;
+      }
+      return gf_hit_near(o, d, t_min, t_max, h.uv);
+    }
+    if (h.hit && h.t >= self_t_min) {
+      return h;
+    }
+    if (h.hit && crossings < GF_SELF_CROSSINGS) {
+      if (facing * dot(h.normal, d) < 0.0f) {
+        return h;
+      }
+      from = h.t + t_min;
+      crossings++;
+    } else {
+      parallel = true;
+      start = self_origin;
+      from = self_t_min;
+      to = t_max - shift;
+    }
   }
-  if (h.hit && h.t >= self_t_min) {
-    return h;
-  }
-  float shift = dot(self_origin - o, d) / dot(d, d);
-  GfHit s = gf_trace(self_origin, d, self_t_min, t_max - shift, mode, false);
-  if (!s.hit) {
-    return s;
-  }
-  if (mode != GF_MODE_REFINED) {
-    s.t += shift;
-    return s;
-  }
-  return gf_hit_near(o, d, t_min, t_max, s.uv);
+  return gf_miss();
+}
+
+GfHit gf_trace_leaving(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin,
+                       float self_t_min, float facing, int mode) {
+  return gf_trace_from(o, d, t_min, t_max, self_origin, self_t_min, facing, mode, true);
 }

@@ -6,6 +6,7 @@
 // asset's layers.
 
 #include "lib/contract.glsl"
+#include "lib/work.glsl"
 
 layout(binding = UNIT_GI_POSITIONS) uniform sampler2DArray u_gi_positions;  // xyz P, w A
 layout(binding = UNIT_GI_NORMALS) uniform sampler2DArray u_gi_normals;      // xyz unit normal
@@ -40,6 +41,7 @@ void gs_select_asset(ivec3 asset, ivec2 image_origin, ivec3 field, vec3 box_min,
 int gf_samples_per_side() { return gs_samples_per_side; }
 int gf_field_layers() { return gs_field_layers; }
 vec2 gf_field_texel(int layer, int entry, int exit) {
+  WORK_ADD(WORK_FIELD_FETCHES, 1);
   vec2 texel = texelFetch(u_fields, ivec3(exit, entry, gs_field_layer + layer), 0).xy;
   return gf_decode_field_texel(texel, gs_field_bits);
 }
@@ -49,12 +51,15 @@ ivec3 gs_image_texel(int i, int j) {
   return ivec3(gs_image_origin + ivec2(i, j), gs_layer);
 }
 vec3 gf_image_position_texel(int i, int j) {
+  WORK_ADD(WORK_IMAGE_FETCHES, 1);
   return texelFetch(u_gi_positions, gs_image_texel(i, j), 0).xyz;
 }
 float gf_image_coverage_texel(int i, int j) {
+  WORK_ADD(WORK_IMAGE_FETCHES, 1);
   return texelFetch(u_gi_positions, gs_image_texel(i, j), 0).w;
 }
 vec3 gf_image_normal_texel(int i, int j) {
+  WORK_ADD(WORK_IMAGE_FETCHES, 1);
   return texelFetch(u_gi_normals, gs_image_texel(i, j), 0).xyz;
 }
 // The selected asset's albedo at geometry-image uv: bilinear between texel centres, clamped to
@@ -75,4 +80,5 @@ vec3 gs_image_albedo(vec2 uv) {
 vec3 gf_box_min() { return gs_box_min; }
 vec3 gf_box_max() { return gs_box_max; }
 
+#define GF_COUNT(kind, n) WORK_ADD(kind, n)
 #include "lib/field_lookup.glsl"

@@ -2,10 +2,13 @@
 // shader storage buffers (runtime/gpu_scene.cpp fills them), the nearest hit of a world ray over
 // all objects (Li et al. 2006, TraceRay step 1-2) with its albedo (a mesh's own base colour from
 // its geometry image's albedo at the hit's uv), shadow rays and diffuse shading as the reference
-// tracer does them (preprocess/reference_tracer.cpp).
+// tracer does them (preprocess/reference_tracer.cpp). A mesh is looked up in its geometry field,
+// or traced exactly through its BVH (shaders/lib/gpu_bvh.glsl) with u_intersect_bvh or when it
+// has no field.
 
 #include "lib/contract.glsl"
 #include "lib/gpu_assets.glsl"
+#include "lib/gpu_bvh.glsl"
 #include "lib/objects.glsl"
 #include "lib/shapes.glsl"
 #include "lib/scene_environment.glsl"
@@ -17,8 +20,24 @@ layout(std430, binding = BUFFER_LIGHTS) readonly buffer Lights { GpuLight lights
 uniform int u_object_count;
 uniform int u_light_count;
 uniform vec3 u_ambient;
-uniform int u_mode;             // GF_MODE_NEAREST, GF_MODE_LINEAR, GF_MODE_REFINED
+// The geometry-field method builds one program per setting (runtime/methods/geometry_field.cpp):
+// GF_TRACE_MODE, the lookup mode (else the uniform u_mode); GF_FIELD_MESHES and GF_BVH_MESHES,
+// 0 where no mesh is met that way. llvmpipe runs every branch of a shader under a mask, so code
+// a frame does not use costs as much as code it does.
+#ifdef GF_TRACE_MODE
+#define SCENE_LOOKUP_MODE GF_TRACE_MODE
+#else
+uniform int u_mode;  // GF_MODE_NEAREST, GF_MODE_LINEAR, GF_MODE_REFINED
+#define SCENE_LOOKUP_MODE u_mode
+#endif
+#ifndef GF_FIELD_MESHES
+#define GF_FIELD_MESHES 1
+#endif
+#ifndef GF_BVH_MESHES
+#define GF_BVH_MESHES 1
+#endif
 uniform bool u_self_reflection; // mesh objects look themselves up too
+uniform bool u_intersect_bvh;   // every mesh through its BVH (else only those without a field)
 uniform float u_scene_extent;   // diagonal of the scene bounds (ray offsets)
 
 struct SceneHit {
@@ -29,6 +48,7 @@ struct SceneHit {
   vec3 normal;     // world, unit, out of the solid
   vec2 uv;         // analytic: texture coordinates; mesh: geometry-image uv
   vec3 albedo;     // diffuse hits found by trace_scene (or the G-buffer): the surface's albedo
+  bool has_albedo;  // albedo set where the hit was found (a BVH hit), not from its uv
   float self_offset;  // rays leaving this point look its object up from this far off the
                       // surface (object_epsilon)
 };
@@ -42,8 +62,14 @@ SceneHit scene_miss() {
   h.normal = vec3(0.0f);
   h.uv = vec2(0.0f);
   h.albedo = vec3(0.0f);
+  h.has_albedo = false;
   h.self_offset = 0.0f;
   return h;
+}
+
+// Whether mesh object k is traced through its BVH rather than looked up in its field.
+bool traced_by_bvh(int k) {
+  return objects[k].image.z >= 0 && (u_intersect_bvh || objects[k].asset.y == 0);
 }
 
 // Offset of rays leaving world point `p` of analytic shape k: beyond the float error of the
@@ -59,13 +85,14 @@ float analytic_epsilon(int k, vec3 p) {
 // size (for analytic shapes analytic_epsilon) off the surface along its normal (a larger start
 // offset moves the paths: 1e-3 cost the glass spot 2.6 dB against the reference tracer); the
 // lookup of the mesh it leaves starts `object_epsilon(k, rasterised)` off the surface and looks
-// beyond 2 of them (SceneHit.self_offset, intersect_self). A point found by a field lookup lies
+// beyond 2 of them (SceneHit.self_offset, intersect_object). A point found by a field lookup lies
 // on the geometry image: 1e-4 of the size. A point of the rasterised mesh (`rasterised`: the
 // G-buffer's first hits) lies off the image by the image's deviation from the mesh, through which
 // the lookup would find the surface the ray leaves: the image's ray offset (GpuObject.box_min.w:
 // the deviation at 98% of the surface, at least 1e-4).
 float object_epsilon(int k, bool rasterised, vec3 p) {
   if (objects[k].kind.x != SHAPE_MESH) return analytic_epsilon(k, p);
+  if (traced_by_bvh(k)) return GF_MIN_RAY_OFFSET * objects[k].absorption.w;  // the mesh itself
   return (rasterised ? objects[k].box_min.w : GF_MIN_RAY_OFFSET) * objects[k].absorption.w;
 }
 
@@ -101,45 +128,21 @@ SceneHit world_mesh_hit(int k, GfHit g) {
   return h;
 }
 
-// The nearest hit of o + t d (world, d unit) on object k with t in (t_min, t_max): for meshes the
-// field's first hit beyond t_min over its layers (a ray leaving the surface or inside the solid
-// sees the surface beyond its origin).
-SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max) {
-  vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
-  vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
-  if (objects[k].kind.x == SHAPE_MESH) {
-    select_mesh(k);
-    return world_mesh_hit(k, gf_trace(lo, ld, t_min, t_max, u_mode, false));
-  }
+// The exact hit `m` of mesh object k (mesh coordinates, from its BVH) in world coordinates, with
+// the albedo the G-buffer would give it (its colour x its own base colour).
+SceneHit world_bvh_hit(int k, BvhMeshHit m) {
   SceneHit h = scene_miss();
-  ShapeHit s = intersect_shape(objects[k].kind.x, objects[k].shape, objects[k].size.xyz, lo, ld,
-                               t_min, t_max);
-  if (!s.hit) return h;
+  if (!m.hit) return h;
   h.hit = true;
-  h.t = s.t;
+  h.t = m.t;
   h.object = k;
-  h.position = o + s.t * d;
-  h.normal = normalize(transpose(mat3(objects[k].to_object)) * s.normal);
-  h.uv = s.uv;
+  h.position = (objects[k].to_world * vec4(m.position, 1.0f)).xyz;
+  h.normal = normalize(transpose(mat3(objects[k].to_object)) * m.normal);
+  h.uv = m.uv;
+  h.albedo = objects[k].color.rgb * (objects[k].kind.z == TEXTURE_MESH ? m.base_color : vec3(1.0f));
+  h.has_albedo = true;
   h.self_offset = object_epsilon(k, false, h.position);
   return h;
-}
-
-// Albedo of object k's diffuse material at texture coordinates uv (gfield::texture_albedo).
-vec3 object_albedo(int k, vec2 uv) {
-  return texture_albedo(objects[k].kind.z, objects[k].color.rgb, objects[k].checker0,
-                        objects[k].checker1, uv);
-}
-
-// Albedo of object k at a hit's uv (analytic: texture coordinates; mesh: geometry-image uv): a
-// mesh with its own base colour (TEXTURE_MESH) multiplies its colour by the geometry image's
-// albedo there.
-vec3 hit_albedo(int k, vec2 uv) {
-  if (objects[k].kind.x != SHAPE_MESH || objects[k].kind.z != TEXTURE_MESH ||
-      objects[k].asset.w == 0)
-    return object_albedo(k, uv);
-  select_mesh(k);
-  return objects[k].color.rgb * gs_image_albedo(uv);
 }
 
 // How a ray looks up the object it leaves (the camera's: object -1): a mesh from `origin` (its
@@ -172,70 +175,105 @@ SelfLookup self_lookup(SceneHit hit, vec3 g, float offset) {
   return s;
 }
 
-// The hit of o + t d (world, d unit; o: object_epsilon(k, false) off the surface) on mesh object
-// k = self.object, which the ray leaves, t < t_max: gf_trace_leaving (a ray that looks from its
-// own start, a shadow ray, looks beyond self.t_min).
-SceneHit intersect_self(vec3 o, vec3 d, float t_max, SelfLookup self) {
-  int k = self.object;
-  if (self.origin == o) return intersect_object(k, o, d, self.t_min, t_max);
-  select_mesh(k);
+// The nearest hit of o + t d (world, d unit) on object k with t in (t_min, t_max): for meshes the
+// field's first hit beyond t_min over its layers (a ray leaving the surface or inside the solid
+// sees the surface beyond its origin), or the exact one of its BVH. A mesh that the ray leaves
+// (self.object == k; o: object_epsilon(k, false) off the surface) is looked up as
+// gf_trace_leaving does from self.origin (a shadow ray, which looks from its own start, beyond
+// self.t_min). Each lookup is called once here: the shader holds one copy of it.
+SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, SelfLookup self) {
   vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
   vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
-  vec3 ls = (objects[k].to_object * vec4(self.origin, 1.0f)).xyz;
-  return world_mesh_hit(k, gf_trace_leaving(lo, ld, 2.0f * object_epsilon(k, false, o), t_max, ls,
-                                            self.t_min, self.facing, u_mode));
+  if (objects[k].kind.x == SHAPE_MESH) {
+#if GF_BVH_MESHES
+    if (GF_FIELD_MESHES == 0 || traced_by_bvh(k))  // a ray leaving the mesh starts off it
+      return world_bvh_hit(k, bvh_mesh_hit(objects[k].image.z, lo, ld, t_min, t_max));
+#endif
+#if GF_FIELD_MESHES
+    bool own = self.object == k;
+    bool leaving = own && self.origin != o;
+    float from = leaving ? 2.0f * object_epsilon(k, false, o) : (own ? self.t_min : t_min);
+    vec3 ls = (objects[k].to_object * vec4(self.origin, 1.0f)).xyz;
+    select_mesh(k);
+    return world_mesh_hit(k, gf_trace_from(lo, ld, from, t_max, ls, self.t_min, self.facing,
+                                           SCENE_LOOKUP_MODE, leaving));
+#endif
+    return scene_miss();
+  }
+  SceneHit h = scene_miss();
+  ShapeHit s = intersect_shape(objects[k].kind.x, objects[k].shape, objects[k].size.xyz, lo, ld,
+                               t_min, t_max);
+  if (!s.hit) return h;
+  h.hit = true;
+  h.t = s.t;
+  h.object = k;
+  h.position = o + s.t * d;
+  h.normal = normalize(transpose(mat3(objects[k].to_object)) * s.normal);
+  h.uv = s.uv;
+  h.self_offset = object_epsilon(k, false, h.position);
+  return h;
 }
 
-// The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects; `opaque_only`
-// skips dielectrics (shadow rays). A mesh object that the ray leaves (self.object) looks itself
-// up only with u_self_reflection, and then with intersect_self.
-SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup self) {
+// Albedo of object k's diffuse material at texture coordinates uv (gfield::texture_albedo).
+vec3 object_albedo(int k, vec2 uv) {
+  return texture_albedo(objects[k].kind.z, objects[k].color.rgb, objects[k].checker0,
+                        objects[k].checker1, uv);
+}
+
+// Albedo of object k at a hit's uv (analytic: texture coordinates; mesh: geometry-image uv): a
+// mesh with its own base colour (TEXTURE_MESH) multiplies its colour by the geometry image's
+// albedo there.
+vec3 hit_albedo(int k, vec2 uv) {
+  if (objects[k].kind.x != SHAPE_MESH || objects[k].kind.z != TEXTURE_MESH ||
+      objects[k].asset.w == 0)
+    return object_albedo(k, uv);
+  select_mesh(k);
+  return objects[k].color.rgb * gs_image_albedo(uv);
+}
+
+// The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects, or only over
+// object `only` (>= 0: a ray inside that dielectric meets its surface); `opaque_only` skips
+// dielectrics (shadow rays). A mesh object that the ray leaves (self.object) looks itself up only
+// with u_self_reflection (or when it is `only`).
+SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup self, int only) {
   SceneHit best = scene_miss();
   best.t = t_max;
-  for (int k = 0; k < u_object_count; k++) {
+  int first = only >= 0 ? only : 0;
+  int end = only >= 0 ? only + 1 : u_object_count;
+  for (int k = first; k < end; k++) {
     if (opaque_only && objects[k].kind.y == MATERIAL_DIELECTRIC) continue;
-    SceneHit h;
-    if (k == self.object && objects[k].kind.x == SHAPE_MESH) {
-      if (!u_self_reflection) continue;
-      h = intersect_self(o, d, best.t, self);
-    } else {
-      h = intersect_object(k, o, d, 0.0f, best.t);
-    }
+    bool own = k == self.object && objects[k].kind.x == SHAPE_MESH;
+    if (own && !u_self_reflection && only < 0) continue;
+    SceneHit h = intersect_object(k, o, d, 0.0f, best.t, own ? self : no_self_lookup());
     if (h.hit && h.t < best.t) best = h;
   }
-  if (best.hit && !opaque_only) best.albedo = hit_albedo(best.object, best.uv);
+  if (best.hit && !opaque_only && !best.has_albedo) best.albedo = hit_albedo(best.object, best.uv);
   return best;
 }
 
-// Diffuse shading of a hit seen along `incoming`: albedo * (ambient + lights * cos / d^2), two
-// sided, with shadow rays blocked by diffuse and mirror objects.
-vec3 shade_diffuse(SceneHit hit, vec3 geometric_normal, vec3 incoming) {
-  vec3 albedo = hit.albedo;
+// Light i as diffuse shading sees it from `hit` (seen along `incoming`): the radiance it adds,
+// albedo * light * cos / d^2 (two sided), when nothing blocks the shadow ray `direction`,
+// `distance` long, that starts at self.origin (diffuse and mirror objects block it); false when
+// the light is behind the surface.
+bool light_from(SceneHit hit, vec3 geometric_normal, vec3 incoming, int i, out vec3 direction,
+                out float distance, out vec3 radiance, out SelfLookup self) {
   float facing = dot(incoming, geometric_normal) < 0.0f ? 1.0f : -1.0f;
   vec3 n = facing * hit.normal;
   vec3 g = facing * geometric_normal;
-  vec3 light_sum = u_ambient;
-  float shadow_offset = shadow_epsilon(hit);
-  for (int i = 0; i < u_light_count; i++) {
-    vec3 l;
-    float distance_to_light;
-    bool point = lights[i].direction.w > 0.5f;
-    if (!point) {
-      l = -lights[i].direction.xyz;
-      distance_to_light = 3.0e38f;
-    } else {
-      l = lights[i].position.xyz - hit.position;
-      distance_to_light = length(l);
-      if (distance_to_light <= 0.0f) continue;
-      l /= distance_to_light;
-    }
-    float cosine = dot(n, l);
-    if (cosine <= 0.0f || dot(l, g) <= 0.0f) continue;
-    SelfLookup self = self_lookup(hit, g, shadow_offset);
-    SceneHit blocker = trace_scene(self.origin, l, distance_to_light, true, self);
-    if (blocker.hit) continue;
-    float falloff = point ? 1.0f / (distance_to_light * distance_to_light) : 1.0f;
-    light_sum += lights[i].color.rgb * cosine * falloff;
+  bool point = lights[i].direction.w > 0.5f;
+  vec3 l = -lights[i].direction.xyz;
+  distance = 3.0e38f;
+  if (point) {
+    l = lights[i].position.xyz - hit.position;
+    distance = length(l);
+    if (distance <= 0.0f) return false;
+    l /= distance;
   }
-  return albedo * light_sum;
+  float cosine = dot(n, l);
+  if (cosine <= 0.0f || dot(l, g) <= 0.0f) return false;
+  direction = l;
+  float falloff = point ? 1.0f / (distance * distance) : 1.0f;
+  radiance = hit.albedo * lights[i].color.rgb * cosine * falloff;
+  self = self_lookup(hit, g, shadow_epsilon(hit));
+  return true;
 }

@@ -55,10 +55,15 @@ step "gfield-view --headless on installed example scenes"
 for f in mirror.png spheres.exr glass.png; do
   [ -s "$f" ] || fail "$f: not written"
 done
-step "without --assets the viewer names what is missing"
+step "without --assets the viewer traces the meshes through their BVHs and says how to build"
+"$prefix/bin/gfield-view" "$share/scenes/mirror-torus-instances.json" --headless --size 64x64 \
+  -o bvh.png 2> missing.txt || fail "a scene without assets: $(cat missing.txt)"
+[ -s bvh.png ] || fail "bvh.png: not written"
+grep -q "no geometry field.*gfield build.*traced through its BVH" missing.txt ||
+  fail "no note naming the missing field and how to build it: $(cat missing.txt)"
 if "$prefix/bin/gfield-view" "$share/scenes/mirror-torus-instances.json" --headless \
-  -o none.png 2> missing.txt; then
-  fail "rendered a scene whose assets do not exist"
+  --method cubemap -o none.png 2> missing.txt; then
+  fail "the cube-map method rendered a scene whose assets do not exist"
 fi
 grep -q "gfield build" missing.txt || fail "no hint how to build the assets: $(cat missing.txt)"
 

@@ -19,6 +19,7 @@
 #include "runtime/gl_context.hpp"
 #include "runtime/methods/geometry_field.hpp"
 #include "runtime/shader_program.hpp"
+#include "runtime/work_counters.hpp"
 
 namespace gfield {
 namespace {
@@ -242,6 +243,60 @@ TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
       EXPECT_EQ(psnr[1], psnr[0]);
     }
   }
+}
+
+/// The work of one frame of the "mirror" test scene at 64^2, depth 4, 1 spp: per counter of
+/// work_counters.hpp, for the refined field lookups and for the BVH.
+nlohmann::json work_of_mirror_scene() {
+  const TestScene test = test_scenes()[0];
+  const fs::path file = kDir / "work.json";
+  std::ofstream(file) << test.text;
+  Scene scene;
+  std::string error;
+  std::vector<std::string> warnings;
+  GpuScene gpu;
+  GeometryFieldMethod field;
+  if (!load_scene_file(file.string(), scene, warnings, error, OutsidePaths::kAllowed) ||
+      !gpu.load(scene, error) || !field.load(gpu, default_shader_dir(), error)) {
+    ADD_FAILURE() << error;
+    return {};
+  }
+  nlohmann::json work;
+  field.settings().max_depth = 4;
+  field.settings().count_work = true;
+  for (MeshIntersection intersect : {MeshIntersection::kField, MeshIntersection::kBvh}) {
+    field.settings().intersect = intersect;
+    FrameStats stats;
+    render_image(field, scene.camera, 64, 64, 1, &stats);
+    nlohmann::json& counts = work[intersect == MeshIntersection::kBvh ? "bvh" : "field"];
+    for (int k = 0; k < gpu::WORK_COUNT; ++k)
+      counts[work_count_name(k)] = stats.count(work_count_name(k));
+  }
+  return work;
+}
+
+TEST_F(RenderTest, WorkPerFrameStaysWithinItsCommittedBaseline) {
+  // A guard that counts work, not time (issue 27): texel fetches, Newton steps and BVH nodes are
+  // the same on any device. A rise over 10% fails; after a change that is meant to do more (or
+  // less) work, GFIELD_WRITE_WORK_BASELINES=1 rewrites the baseline file, to be committed.
+  const fs::path baselines = fs::path(GFIELD_TESTS_DIR) / "runtime" / "work_baselines.json";
+  const nlohmann::json work = work_of_mirror_scene();
+  if (const char* write = std::getenv("GFIELD_WRITE_WORK_BASELINES"); write && *write == '1') {
+    std::ofstream(baselines) << work.dump(2) << "\n";
+    GTEST_SKIP() << "wrote " << baselines;
+  }
+  const nlohmann::json baseline = nlohmann::json::parse(std::ifstream(baselines));
+  for (const auto& [intersect, counts] : baseline.items()) {
+    for (const auto& [name, count] : counts.items()) {
+      const double now = work[intersect][name].get<double>();
+      std::printf("%s %s: %.0f (baseline %.0f)\n", intersect.c_str(), name.c_str(), now,
+                  count.get<double>());
+      EXPECT_LE(now, 1.1 * count.get<double>()) << intersect << " " << name;
+    }
+  }
+  EXPECT_GT(work["field"]["field lookups"].get<double>(), 0.0);
+  EXPECT_GT(work["bvh"]["BVH nodes"].get<double>(), 0.0);
+  EXPECT_EQ(work["bvh"]["field lookups"].get<double>(), 0.0);
 }
 
 }  // namespace

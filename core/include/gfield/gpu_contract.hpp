@@ -16,4 +16,6 @@ static_assert(sizeof(GpuObject) == 320 && offsetof(GpuObject, kind) == 256 &&
               offsetof(GpuObject, asset) == 272 && offsetof(GpuObject, field) == 288 &&
               offsetof(GpuObject, image) == 304);
 static_assert(sizeof(GpuLight) == 48 && offsetof(GpuLight, color) == 32);
+static_assert(sizeof(GpuBvhNode) == 32 && sizeof(GpuBvhTriangle) == 48 &&
+              sizeof(GpuBvhShading) == 96);
 }  // namespace gfield::gpu
