@@ -221,6 +221,14 @@ bool add_primitive(const GltfDocument& d, int m, size_t index, const glm::dmat4&
     what = "no POSITION attribute";
     return false;
   }
+  if (uv < 0 && p.material >= 0 &&
+      json_at(d.json["materials"][size_t(p.material)],
+              {"pbrMetallicRoughness", "baseColorTexture"}))
+    warnings.push_back(d.file + ": meshes[" + std::to_string(m) + "].primitives[" +
+                       std::to_string(index) +
+                       "]: its material's base colour texture reads TEXCOORD_" +
+                       std::to_string(transform.tex_coord) +
+                       ", which the primitive lacks: its texture at (0, 0) everywhere");
   const size_t vertices = d.model.accessors[size_t(position)].count;
   const auto attribute_count = [&](int a) {
     return a < 0 || d.model.accessors[size_t(a)].count >= vertices;

@@ -289,6 +289,18 @@ TEST(GltfExtensions, TextureTransformMapsTheTexCoordSetItNames) {
   write(dir / "far.glb", glb_bytes(d.dump(), bin));
   EXPECT_FALSE(read_mesh(dir / "far.glb", mesh, a, error));
   EXPECT_NE(error.find("baseColorTexture.KHR_texture_transform.scale"), std::string::npos) << error;
+  // A texCoord set the primitive lacks reads the texture at (0, 0): a warning naming the place.
+  d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]
+   ["KHR_texture_transform"] = {{"texCoord", 2}};
+  write(dir / "set2.glb", glb_bytes(d.dump(), bin));
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(load_mesh(MeshSource{(dir / "set2.glb").string(), ""}, mesh, &a, warnings, error))
+      << error;
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("set2.glb: meshes[0].primitives[0]: its material's base colour "
+                             "texture reads TEXCOORD_2, which the primitive lacks"),
+            std::string::npos)
+      << warnings[0];
 }
 
 /// A corner of a triangle: position and gfield uv.
