@@ -11,7 +11,7 @@
 # Usage: gltf_conformance_test.sh GFIELD SOURCE_DIR
 set -euo pipefail
 gfield=$1
-source_dir=$2
+source_dir=$(cd "$2" && pwd)
 source "$source_dir/scripts/gltf-tools/location.sh"
 [ -f "$gltf_tools_dir/node_modules/.gfield-installed" ] ||
   { echo "the glTF tools are not installed: run scripts/install-gltf-tools.sh" >&2; exit 1; }
@@ -42,7 +42,7 @@ scene torus-obj '{"shape": "mesh", "file": "torus.obj", "material": {"type": "di
 render spot-painted-obj
 render torus-obj
 failures=0
-printf '%-40s %-48s %10s\n' "file" "made by" "PSNR" > "$work/table.txt"
+printf '%-36s %-44s %10s\n' "file" "made by" "PSNR" > "$work/table.txt"
 while read -r file source tool args; do
   name=${file//\//_}
   "$gfield" info "$work/$file" > "$work/$name.info" 2> "$work/$name.err" ||
@@ -56,7 +56,8 @@ while read -r file source tool args; do
   psnr=$("$gfield" compare "$work/${source%.obj}-obj.png" "$work/$name.png" | awk '$1 == "PSNR" {print $2}')
   bound=40
   made="$tool ${args//$source_dir\/data\/meshes\//}"
-  printf '%-40s %-48s %7s dB\n' "$file" "${made//-o $file/}" "$psnr" >> "$work/table.txt"
+  made=${made//-o $file/}
+  printf '%-36s %-44s %7s dB\n' "$file" "${made//  / }" "$psnr" >> "$work/table.txt"
   awk -v p="$psnr" -v b="$bound" 'BEGIN { exit !(p == "inf" || p >= b) }' ||
     { echo "FAIL $file: PSNR $psnr dB against $source, below $bound dB"; failures=$((failures + 1)); }
   [ -s "$work/$name.err" ] && echo "$file: $(cat "$work/$name.err")"
