@@ -318,7 +318,7 @@ bool placements(const GltfDocument& d, const std::string& part,
 }  // namespace
 
 std::string gltf_mesh_part(int index) {
-  return "#" + std::to_string(index);
+  return std::string("#") + std::to_string(index);
 }
 
 bool read_gltf_mesh(const GltfDocument& d, const std::string& part, TriangleMesh& mesh,

@@ -28,8 +28,10 @@ bool number_at(const json& object, std::initializer_list<const char*> keys, doub
   const json* v = json_at(object, keys);
   value = v != nullptr && v->is_number() ? v->get<double>() : fallback;
   if (!(value >= lo && value <= hi)) {
-    for (const char* key : keys)
-      what += (what.empty() ? "" : ".") + std::string(key);
+    for (const char* key : keys) {
+      what += what.empty() ? "" : ".";
+      what += key;
+    }
     what += std::string(" must be in ") + range + " (is " + double_text(value) + ")";
     return false;
   }

@@ -96,8 +96,9 @@ TEST_P(Tessellation, LiesOnTheShapeEnclosesItsVolumeFacesOutAndCarriesItsTexture
       const bool pole =
           shape.type == ShapeType::kSphere && std::abs(std::abs(p.y) - shape.radius) < 1e-9;
       const double du = std::abs(uv.x - hit.uv.x);
-      if (!pole)
+      if (!pole) {
         EXPECT_LT(std::min(du, 1.0 - du), 0.02) << "face " << f << " corner " << k;
+      }
       EXPECT_NEAR(uv.y, hit.uv.y, 0.02) << "face " << f << " corner " << k;
     }
   }
