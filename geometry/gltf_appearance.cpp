@@ -42,9 +42,9 @@ bool decode_gltf_image(const GltfDocument& d, int index, bool pixels, MeshAppear
   return true;
 }
 
-/// Material `m`'s base colour; its texture's image (-1: none) in `image`.
-BaseColorMaterial base_color_material(const GltfDocument& d, size_t m, int& image,
-                                      std::vector<std::string>& warnings) {
+/// Material `m`'s base colour; its texture's image (-1: none) in `image` (the texture's
+/// coordinates, with their texCoord set and KHR_texture_transform, were read per primitive).
+BaseColorMaterial base_color_material(const GltfDocument& d, size_t m, int& image) {
   const tinygltf::Material& material = d.model.materials[m];
   const std::vector<double>& f = material.pbrMetallicRoughness.baseColorFactor;
   BaseColorMaterial out;
@@ -54,10 +54,6 @@ BaseColorMaterial base_color_material(const GltfDocument& d, size_t m, int& imag
                             glm::vec3(float(kMaxColorComponent)));
   const tinygltf::TextureInfo& info = material.pbrMetallicRoughness.baseColorTexture;
   image = info.index >= 0 ? d.model.textures[size_t(info.index)].source : -1;
-  if (image >= 0 && info.texCoord != 0)
-    warnings.push_back(d.file + ": materials[" + std::to_string(m) +
-                       "]: baseColorTexture uses TEXCOORD_" + std::to_string(info.texCoord) +
-                       "; gfield reads TEXCOORD_0");
   return out;
 }
 
@@ -81,7 +77,7 @@ bool gltf_appearance(const GltfDocument& d, bool any_uv, bool any_color, bool an
   std::map<int, int> textures;  // glTF image -> appearance texture
   for (size_t m = 0; m < d.model.materials.size(); ++m) {
     int image = -1;
-    appearance.materials.push_back(base_color_material(d, m, image, warnings));
+    appearance.materials.push_back(base_color_material(d, m, image));
     if (image < 0 || !used[m])
       continue;
     const auto [it, added] = textures.emplace(image, int(appearance.textures.size()));

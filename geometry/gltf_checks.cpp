@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "geometry/gltf_buffers.hpp"
+#include "geometry/gltf_extensions.hpp"
 #include "gfield/limits.hpp"
 #include "gfield/located_json.hpp"
 
@@ -67,6 +69,8 @@ constexpr Reference kReferences[] = {
     {"accessors/*/sparse/indices/bufferView", "bufferViews"},
     {"accessors/*/sparse/values/bufferView", "bufferViews"},
     {"bufferViews/*/buffer", "buffers"},
+    {"bufferViews/*/extensions/EXT_meshopt_compression/buffer", "buffers"},
+    {"meshes/*/primitives/*/extensions/KHR_draco_mesh_compression/bufferView", "bufferViews"},
     {"materials/*/pbrMetallicRoughness/baseColorTexture/index", "textures"},
     {"materials/*/pbrMetallicRoughness/metallicRoughnessTexture/index", "textures"},
     {"materials/*/normalTexture/index", "textures"},
@@ -303,9 +307,13 @@ bool check_buffers(const json& document, const std::string& folder, std::int64_t
     lengths.push_back(length);
     const bool has_uri = buffer.is_object() && buffer.contains("uri") && buffer["uri"].is_string();
     const std::string uri = has_uri ? buffer["uri"].get<std::string>() : "";
+    if (!has_uri && is_meshopt_fallback(buffer)) {
+      continue;  // no bytes: EXT_meshopt_compression views decode into it
+    }
     if (!has_uri && (bin_bytes < 0 || b > 0 || std::int64_t(length) > bin_bytes)) {
       failure = {pointer, bin_bytes < 0 || b > 0
-                              ? "a buffer without a uri (only a .glb's first buffer may have none)"
+                              ? "a buffer without a uri (only a .glb's first buffer and "
+                                "EXT_meshopt_compression fallback buffers may have none)"
                               : "byteLength " + std::to_string(length) +
                                     " is beyond the BIN chunk's " + std::to_string(bin_bytes) +
                                     " bytes (truncated file?)"};
@@ -359,34 +367,6 @@ bool check_buffer_views(const json& document, const std::vector<std::uint64_t>& 
   return true;
 }
 
-/// Bytes of one component of glTF component type `type` (0: not a valid type).
-std::uint64_t component_bytes(std::int64_t type) {
-  switch (type) {
-    case 5120:
-    case 5121:
-      return 1;
-    case 5122:
-    case 5123:
-      return 2;
-    case 5125:
-    case 5126:
-      return 4;
-    default:
-      return 0;
-  }
-}
-
-std::uint64_t type_components(const std::string& type) {
-  const std::pair<const char*, std::uint64_t> kTypes[] = {
-      {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}, {"MAT2", 4}, {"MAT3", 9}, {"MAT4", 16}};
-  for (const auto& [name, n] : kTypes) {
-    if (type == name) {
-      return n;
-    }
-  }
-  return 0;
-}
-
 /// Accessors: valid types, within their buffer views.
 bool check_accessors(const json& document, const std::vector<std::uint64_t>& views,
                      CheckFailure& failure) {
@@ -400,9 +380,9 @@ bool check_accessors(const json& document, const std::vector<std::uint64_t>& vie
         !unsigned_member(accessor, pointer, "componentType", 0, 1u << 16, type_code, failure)) {
       return false;
     }
-    const std::uint64_t bytes = component_bytes(std::int64_t(type_code));
+    const std::uint64_t bytes = gltf_component_bytes(std::int64_t(type_code));
     const std::uint64_t components = accessor.contains("type") && accessor["type"].is_string()
-                                         ? type_components(accessor["type"].get<std::string>())
+                                         ? gltf_type_components(accessor["type"].get<std::string>())
                                          : 0;
     if (bytes == 0 || components == 0 || count == 0) {
       failure = {pointer,
@@ -434,6 +414,33 @@ bool check_accessors(const json& document, const std::vector<std::uint64_t>& vie
 
 }  // namespace
 
+std::uint64_t gltf_component_bytes(std::int64_t type) {
+  switch (type) {
+    case 5120:
+    case 5121:
+      return 1;
+    case 5122:
+    case 5123:
+      return 2;
+    case 5125:
+    case 5126:
+      return 4;
+    default:
+      return 0;
+  }
+}
+
+std::uint64_t gltf_type_components(const std::string& type) {
+  const std::pair<const char*, std::uint64_t> kTypes[] = {
+      {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}, {"MAT2", 4}, {"MAT3", 9}, {"MAT4", 16}};
+  for (const auto& [name, n] : kTypes) {
+    if (type == name) {
+      return n;
+    }
+  }
+  return 0;
+}
+
 std::string decode_uri(const std::string& uri) {
   std::string out;
   for (size_t i = 0; i < uri.size(); ++i) {
@@ -461,8 +468,8 @@ bool check_gltf_json(const nlohmann::json& document, const std::string& folder,
   }
   std::vector<std::uint64_t> buffers, views;
   std::uint64_t visits = 0;
-  return check_array_sizes(document, failure) && check_references(document, failure) &&
-         check_node_forest(document, failure, visits) &&
+  return check_required_extensions(document, failure) && check_array_sizes(document, failure) &&
+         check_references(document, failure) && check_node_forest(document, failure, visits) &&
          check_uris(document, folder, outside, failure) &&
          check_buffers(document, folder, bin_bytes, buffers, failure) &&
          check_buffer_views(document, buffers, views, failure) &&

@@ -1,7 +1,8 @@
 #pragma once
 // The checks of a glTF document's JSON that come before tinygltf reads it (gltf_document.hpp):
-// indices, the node forest, accessors and buffer views against the buffers' lengths, external
-// buffers on disk. Each failure is a CheckFailure at a JSON pointer. Internal to the glTF code.
+// the extensions it requires (gltf_extensions.hpp), indices, the node forest, accessors and
+// buffer views against the buffers' lengths, external buffers on disk. Each failure is a
+// CheckFailure at a JSON pointer. Internal to the glTF code.
 
 #include <cstdint>
 #include <string>
@@ -29,6 +30,11 @@ bool check_gltf_json(const nlohmann::json& document, const std::string& folder,
 /// visits the check took: at most 3 per node plus 2 per child, whatever the hierarchy's shape.
 bool check_node_forest(const nlohmann::json& document, CheckFailure& failure,
                        std::uint64_t& visits);
+
+/// Bytes of one component of glTF component type `type` (5120 ... 5126; 0 for another).
+std::uint64_t gltf_component_bytes(std::int64_t type);
+/// Components of glTF accessor type `type` (SCALAR 1 ... MAT4 16; 0 for another).
+std::uint64_t gltf_type_components(const std::string& type);
 
 /// A URI's path with %XX escapes decoded (as tinygltf decodes it).
 std::string decode_uri(const std::string& uri);

@@ -1,5 +1,6 @@
 #include "geometry/gltf_document.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <filesystem>
@@ -9,7 +10,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "geometry/glb_container.hpp"
 #include "geometry/gltf_checks.hpp"
+#include "geometry/gltf_decompress.hpp"
 #include "geometry/gltf_mesh.hpp"
 #include "gfield/file_read.hpp"
 #include "gfield/limits.hpp"
@@ -20,49 +23,6 @@ namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::uint32_t little_endian_u32(const std::string& data, size_t offset) {
-  const auto* b = reinterpret_cast<const unsigned char*>(data.data() + offset);
-  return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
-         std::uint32_t(b[3]) << 24;
-}
-
-/// The .glb container: a 12-byte header ("glTF", version 2, the file's length), a JSON chunk and
-/// an optional BIN chunk, each an 8-byte header (length, type) and its bytes, all within the
-/// file. `json` receives the JSON chunk, `bin_bytes` the BIN chunk's length (0: none).
-bool read_glb_container(const std::string& data, std::string& json, std::int64_t& bin_bytes,
-                        std::string& what) {
-  if (data.size() < 20 || data.compare(0, 4, "glTF") != 0) {
-    what = data.size() < 20 ? "truncated .glb (" + std::to_string(data.size()) +
-                                  " bytes; a header and a JSON chunk need at least 20)"
-                            : "not a binary glTF file (no \"glTF\" magic)";
-    return false;
-  }
-  const std::uint32_t version = little_endian_u32(data, 4), length = little_endian_u32(data, 8);
-  const std::uint32_t json_length = little_endian_u32(data, 12);
-  if (version != 2 || length != data.size() || little_endian_u32(data, 16) != 0x4E4F534Au ||
-      json_length == 0 || json_length % 4 != 0 || std::uint64_t(json_length) + 20 > data.size()) {
-    what = version != 2 ? "binary glTF version " + std::to_string(version) + " (expected 2)"
-           : length != data.size()
-               ? "the header says " + std::to_string(length) + " bytes, the file has " +
-                     std::to_string(data.size()) + " (truncated or padded)"
-               : "the first chunk is not a JSON chunk within the file, padded to 4 bytes";
-    return false;
-  }
-  json = data.substr(20, json_length);
-  const std::uint64_t bin = 20 + std::uint64_t(json_length);
-  bin_bytes = 0;
-  if (bin + 8 <= data.size()) {
-    const std::uint64_t bin_length = little_endian_u32(data, size_t(bin));
-    if (little_endian_u32(data, size_t(bin) + 4) != 0x004E4942u ||
-        bin + 8 + bin_length > data.size()) {
-      what = "the second chunk is not a BIN chunk within the file (truncated?)";
-      return false;
-    }
-    bin_bytes = std::int64_t(bin_length);
-  }
-  return true;
-}
 
 /// tinygltf's file access: only below the glTF file's folder (unless outside paths are
 /// allowed), at most kMaxMeshFileBytes. The URIs were checked before (gltf_checks.hpp); this
@@ -133,6 +93,14 @@ bool parse_with_tinygltf(const std::string& data, const std::string& json, bool 
   return true;
 }
 
+/// "FILE:LINE:COLUMN: POINTER: what" for `failure`, located in `located`.
+std::string located_failure(const std::string& filename, const LocatedJson& located,
+                            const CheckFailure& failure) {
+  const JsonLocation where = located.at(failure.pointer);
+  return filename + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": " +
+         printable(failure.pointer + ": " + failure.what);
+}
+
 }  // namespace
 
 bool load_gltf_document(const std::string& filename, OutsidePaths outside, GltfDocument& document,
@@ -146,7 +114,8 @@ bool load_gltf_document(const std::string& filename, OutsidePaths outside, GltfD
     c = char(std::tolower(static_cast<unsigned char>(c)));
   const bool binary = extension == ".glb" || data.compare(0, 4, "glTF") == 0;
   std::int64_t bin_bytes = -1;
-  if (binary && !read_glb_container(data, json, bin_bytes, error)) {
+  std::uint64_t bin_offset = 0;
+  if (binary && !read_glb_container(data, json, bin_offset, bin_bytes, error)) {
     error = filename + ": " + error;
     return false;
   }
@@ -156,26 +125,40 @@ bool load_gltf_document(const std::string& filename, OutsidePaths outside, GltfD
     error = filename + ":" + printable(parse_error);
     return false;
   }
+  const std::string folder = fs::path(filename).parent_path().string();
   CheckFailure failure;
-  if (!check_gltf_json(located.value, fs::path(filename).parent_path().string(), bin_bytes, outside,
-                       failure)) {
-    const JsonLocation where = located.at(failure.pointer);
-    error = filename + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
-            ": " + printable(failure.pointer + ": " + failure.what);
+  if (!check_gltf_json(located.value, folder, bin_bytes, outside, failure)) {
+    error = located_failure(filename, located, failure);
     return false;
   }
   document = GltfDocument{};
   document.file = filename;
-  document.json = std::move(located.value);
   document.outside_paths = outside;
-  return parse_with_tinygltf(data, binary ? json : data, binary, document, error);
+  if (!gltf_is_compressed(located.value)) {
+    document.json = std::move(located.value);
+    return parse_with_tinygltf(data, binary ? json : data, binary, document, error);
+  }
+  // Draco and meshopt: decoded into one buffer, checked again, read as a .glb.
+  std::string bin;
+  const std::string chunk = binary ? data.substr(size_t(bin_offset), size_t(bin_bytes)) : "";
+  if (!decompress_gltf(located.value, folder, chunk, document.json, bin, document.draco_accessors,
+                       failure) ||
+      !check_gltf_json(document.json, folder, std::int64_t(bin.size()), outside, failure)) {
+    error = located_failure(filename, located, failure);
+    return false;
+  }
+  return parse_with_tinygltf(
+      glb_bytes(document.json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), bin),
+      "", true, document, error);
 }
 
 std::vector<std::string> gltf_external_files(const std::string& filename, OutsidePaths outside) {
   std::string data, json, ignored;
   std::int64_t bin_bytes = 0;
+  std::uint64_t bin_offset = 0;
   if (!read_file(filename, kMaxMeshFileBytes, data, ignored) ||
-      (data.compare(0, 4, "glTF") == 0 && !read_glb_container(data, json, bin_bytes, ignored))) {
+      (data.compare(0, 4, "glTF") == 0 &&
+       !read_glb_container(data, json, bin_offset, bin_bytes, ignored))) {
     return {};
   }
   const nlohmann::json document = nlohmann::json::parse(json.empty() ? data : json, nullptr, false);
@@ -219,27 +202,50 @@ int accessor_components(const tinygltf::Accessor& accessor) {
 
 namespace {
 
-/// Component `k` of element `e` of `accessor` as a double (normalised when asked).
+/// A stored component `value` of glTF component type `type` as it reads when normalized
+/// (glTF 2.0, "Animations": signed types clamped to -1).
+double normalized_value(double value, int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+      return std::max(value / 127.0, -1.0);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return value / 255.0;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+      return std::max(value / 32767.0, -1.0);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return value / 65535.0;
+    default:
+      return value;
+  }
+}
+
+/// One component at `base` of `accessor` as a double (normalised when asked).
 double component(const unsigned char* base, const tinygltf::Accessor& accessor) {
   const auto load = [&](auto v) {
     std::memcpy(&v, base, sizeof(v));
-    return v;
+    return double(v);
   };
-  const bool n = accessor.normalized;
+  double value = 0.0;
   switch (accessor.componentType) {
     case TINYGLTF_COMPONENT_TYPE_BYTE:
-      return n ? std::max(double(load(std::int8_t())) / 127.0, -1.0) : load(std::int8_t());
+      value = load(std::int8_t());
+      break;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return n ? double(load(std::uint8_t())) / 255.0 : load(std::uint8_t());
+      value = load(std::uint8_t());
+      break;
     case TINYGLTF_COMPONENT_TYPE_SHORT:
-      return n ? std::max(double(load(std::int16_t())) / 32767.0, -1.0) : load(std::int16_t());
+      value = load(std::int16_t());
+      break;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return n ? double(load(std::uint16_t())) / 65535.0 : load(std::uint16_t());
+      value = load(std::uint16_t());
+      break;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-      return load(std::uint32_t());
+      value = load(std::uint32_t());
+      break;
     default:
-      return load(float());
+      value = load(float());
   }
+  return accessor.normalized ? normalized_value(value, accessor.componentType) : value;
 }
 
 /// Calls visit(element, component, value) for every value of accessor `index` (zeros without a
@@ -355,6 +361,8 @@ void position_bounds(const std::vector<float>& xyz, glm::dvec3& lo, glm::dvec3& 
 void check_declared_bounds(const GltfDocument& document, int index, const glm::dvec3& lo,
                            const glm::dvec3& hi, std::vector<std::string>& warnings) {
   const tinygltf::Accessor& a = document.model.accessors[size_t(index)];
+  if (document.draco_accessors.count(index))
+    return;
   const auto text = [](const glm::dvec3& v) {
     return "[" + double_text(v.x) + ", " + double_text(v.y) + ", " + double_text(v.z) + "]";
   };
@@ -362,17 +370,27 @@ void check_declared_bounds(const GltfDocument& document, int index, const glm::d
        {std::tuple{"max", &a.maxValues, hi}, std::tuple{"min", &a.minValues, lo}}) {
     if (declared->size() != 3)
       continue;
-    const glm::dvec3 value((*declared)[0], (*declared)[1], (*declared)[2]);
+    const glm::dvec3 stored((*declared)[0], (*declared)[1], (*declared)[2]);
+    glm::dvec3 value = stored;
+    for (int k = 0; k < 3 && a.normalized; ++k)
+      value[k] = normalized_value(stored[k], a.componentType);
     // Exporters round; a float's value printed to 7 digits is off by 1e-7 of it.
     const glm::dvec3 scale = glm::max(hi - lo, glm::max(glm::abs(lo), glm::abs(hi)));
     if (glm::all(glm::lessThanEqual(glm::abs(value - data), 1e-5 * scale)))
       continue;
     warnings.push_back(document.file + ": " +
                        json_pointer_child(json_pointer_child("/accessors", size_t(index)), key) +
-                       ": declares " + text(value) + ", the data reach " + text(data) +
-                       " (gfield uses the bounds of the data)");
+                       ": declares " + text(stored) +
+                       (a.normalized ? " (normalized " + text(value) + ")" : "") +
+                       ", the data reach " + text(data) + " (gfield uses the bounds of the data)");
     return;
   }
+}
+
+bool uses_extension(const GltfDocument& document, const char* name) {
+  const nlohmann::json* used = json_at(document.json, {"extensionsUsed"});
+  return used != nullptr && used->is_array() &&
+         std::find(used->begin(), used->end(), nlohmann::json(name)) != used->end();
 }
 
 const nlohmann::json* json_at(const nlohmann::json& object,

@@ -10,6 +10,7 @@
 // accessor within its view. Internal to geometry's glTF code (gltf_mesh.cpp, gltf_scene.cpp);
 // tiny_gltf.h is included here only.
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct GltfDocument {
   tinygltf::Model model;  ///< every index checked (see above)
   nlohmann::json json;    ///< the document's JSON: extensions and extras are read from it
   OutsidePaths outside_paths = OutsidePaths::kRefused;  ///< as it was read
+  /// Accessors decoded from KHR_draco_mesh_compression: their declared min and max bound Draco's
+  /// quantisation grid (gltf-pipeline writes them so), not the decoded values; not checked.
+  std::set<int> draco_accessors;
 };
 
 /// Reads and checks `filename`, its URIs confined to its folder unless `outside` is kAllowed.
@@ -38,8 +42,9 @@ bool load_gltf_document(const std::string& filename, OutsidePaths outside, GltfD
 void position_bounds(const std::vector<float>& xyz, glm::dvec3& lo, glm::dvec3& hi);
 
 /// Checks the min and max that accessor `index` declares against `lo` and `hi`, the bounds of
-/// its values computed from the data: a warning "FILE: /accessors/I/max: declares ..., the data
-/// reach ...; gfield uses the data's bounds" when they differ by more than rounding.
+/// its values computed from the data (normalised for a normalized accessor, whose min and max
+/// hold the stored integers): a warning "FILE: /accessors/I/max: declares ..., the data reach
+/// ...; gfield uses the data's bounds" when they differ by more than rounding.
 void check_declared_bounds(const GltfDocument& document, int index, const glm::dvec3& lo,
                            const glm::dvec3& hi, std::vector<std::string>& warnings);
 
@@ -77,6 +82,9 @@ struct MeshAppearance;
 bool gltf_appearance(const GltfDocument& document, bool any_uv, bool any_color, bool any_material,
                      bool pixels, MeshAppearance& appearance, std::vector<std::string>& warnings,
                      std::string& error);
+
+/// True when the document's extensionsUsed names extension `name`.
+bool uses_extension(const GltfDocument& document, const char* name);
 
 /// `"KEY"` of JSON object `object` at path `keys` (e.g. {"extensions",
 /// "KHR_materials_ior", "ior"}), or null.

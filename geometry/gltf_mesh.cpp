@@ -6,6 +6,7 @@
 #include <glm/gtx/compatibility.hpp>
 
 #include "geometry/gltf_document.hpp"
+#include "geometry/gltf_texture_transform.hpp"
 #include "geometry/mesh_appearance.hpp"
 #include "gfield/limits.hpp"
 
@@ -25,8 +26,37 @@ std::string where(int mesh, size_t primitive) {
   return "meshes[" + std::to_string(mesh) + "].primitives[" + std::to_string(primitive) + "]: ";
 }
 
-/// The accessor of attribute `name` (-1: none), refused when sparse or of the wrong type.
-bool attribute(const GltfDocument& d, const tinygltf::Primitive& p, const char* name,
+/// "SHORT" ... for glTF component type `type`, with " normalized" when `normalized`.
+std::string component_name(int type, bool normalized) {
+  const char* names[] = {"BYTE", "UNSIGNED_BYTE", "SHORT", "UNSIGNED_SHORT",
+                         "",     "UNSIGNED_INT",  "FLOAT"};
+  const int k = type - TINYGLTF_COMPONENT_TYPE_BYTE;
+  return std::string(k >= 0 && k < 7 ? names[k] : "an unknown component type") +
+         (normalized ? " normalized" : "");
+}
+
+/// Whether the glTF specification allows accessor `a` for attribute `name` (POSITION,
+/// TEXCOORD_n, COLOR_0): floats, normalised unsigned bytes and shorts for uvs and colours, and
+/// with KHR_mesh_quantization (`quantized`) bytes and shorts of either kind for positions and uvs.
+bool component_type_allowed(const std::string& name, const tinygltf::Accessor& a, bool quantized) {
+  const int t = a.componentType;
+  const bool n = a.normalized;
+  const bool small_integer =
+      t >= TINYGLTF_COMPONENT_TYPE_BYTE && t <= TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  const bool unsigned_normalized = n && (t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                         t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+  if (t == TINYGLTF_COMPONENT_TYPE_FLOAT)
+    return !n;
+  if (name == "POSITION")
+    return quantized && small_integer;
+  if (name == "COLOR_0")
+    return unsigned_normalized;
+  return unsigned_normalized || (quantized && small_integer);  // TEXCOORD_n
+}
+
+/// The accessor of attribute `name` (-1: none), refused when sparse, of the wrong type or of a
+/// component type the specification does not allow for it.
+bool attribute(const GltfDocument& d, const tinygltf::Primitive& p, const std::string& name,
                std::initializer_list<int> types, int& accessor, std::string& what) {
   const auto found = p.attributes.find(name);
   accessor = found == p.attributes.end() ? -1 : found->second;
@@ -35,12 +65,39 @@ bool attribute(const GltfDocument& d, const tinygltf::Primitive& p, const char* 
   }
   const tinygltf::Accessor& a = d.model.accessors[size_t(accessor)];
   const bool type_ok = std::find(types.begin(), types.end(), a.type) != types.end();
+  const bool quantized = uses_extension(d, "KHR_mesh_quantization");
   if (a.sparse.isSparse || !type_ok) {
-    what = std::string(name) + ": accessor " + std::to_string(accessor) +
+    what = name + ": accessor " + std::to_string(accessor) +
            (a.sparse.isSparse ? " is sparse (not supported)" : " has the wrong type");
     return false;
   }
+  if (!component_type_allowed(name, a, quantized)) {
+    what = name + ": accessor " + std::to_string(accessor) + " is " +
+           component_name(a.componentType, a.normalized) + ", which glTF " +
+           (component_type_allowed(name, a, true)
+                ? "allows only with KHR_mesh_quantization (not in extensionsUsed)"
+                : "does not allow for " + name);
+    return false;
+  }
   return true;
+}
+
+/// The primitive's index accessor: UNSIGNED_BYTE, _SHORT or _INT, not normalized (glTF 2.0).
+bool check_indices(const GltfDocument& d, const tinygltf::Primitive& p, std::string& what) {
+  if (p.indices < 0)
+    return true;
+  const tinygltf::Accessor& a = d.model.accessors[size_t(p.indices)];
+  const int t = a.componentType;
+  const bool ok =
+      !a.normalized && !a.sparse.isSparse && a.type == TINYGLTF_TYPE_SCALAR &&
+      (t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+       t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+  if (!ok)
+    what = "indices: accessor " + std::to_string(p.indices) + " is " +
+           (a.sparse.isSparse ? std::string("sparse (not supported)")
+                              : component_name(t, a.normalized) +
+                                    " (glTF indices are scalar UNSIGNED_BYTE, _SHORT or _INT)");
+  return ok;
 }
 
 /// Triangles of a primitive's `indices` in `mode` (4 triangles, 5 strip, 6 fan).
@@ -97,9 +154,10 @@ bool add_colors(const GltfDocument& d, int accessor, size_t count, GltfSoup& sou
   return true;
 }
 
-/// The primitive's triangle corners' texture coordinates (TEXCOORD_0, v flipped), or (0, 0).
-bool add_corner_uvs(const GltfDocument& d, int accessor, const std::vector<glm::ivec3>& triangles,
-                    size_t first_vertex, GltfSoup& soup, std::string& what) {
+/// The primitive's triangle corners' texture coordinates (`accessor`: TEXCOORD_n, through
+/// `transform`, v flipped), or (0, 0) without one.
+bool add_corner_uvs(const GltfDocument& d, int accessor, const TextureTransform& transform,
+                    const std::vector<glm::ivec3>& triangles, GltfSoup& soup, std::string& what) {
   std::vector<float> uv;
   if (accessor >= 0) {
     soup.any_uv = true;
@@ -108,17 +166,32 @@ bool add_corner_uvs(const GltfDocument& d, int accessor, const std::vector<glm::
   for (const glm::ivec3& t : triangles) {
     for (int k = 0; k < 3; ++k) {
       const size_t v = size_t(t[k]);
-      const glm::vec2 c = uv.empty() ? glm::vec2(0.0f) : glm::vec2(uv[2 * v], 1.0f - uv[2 * v + 1]);
+      const glm::dvec2 c =
+          uv.empty() ? glm::dvec2(0.0) : transformed_uv(transform, {uv[2 * v], uv[2 * v + 1]});
       if (!glm::all(glm::isfinite(c)) ||
-          glm::any(glm::greaterThan(glm::abs(c), glm::vec2(float(kMaxTextureCoordinate))))) {
-        what = "TEXCOORD_0: a texture coordinate is not finite or beyond the limit of 1e4";
+          glm::any(glm::greaterThan(glm::abs(c), glm::dvec2(kMaxTextureCoordinate)))) {
+        what = "TEXCOORD_" + std::to_string(transform.tex_coord) +
+               ": a texture coordinate is not finite or beyond the limit of 1e4" +
+               (transform.transformed ? " (after KHR_texture_transform)" : "");
         return false;
       }
-      soup.appearance.corner_uv.push_back(c);
+      soup.appearance.corner_uv.push_back(glm::vec2(c));
     }
   }
-  (void)first_vertex;
   return true;
+}
+
+/// The texture transform of the base colour texture of material `m` (-1: none; identity).
+bool material_uv_transform(const GltfDocument& d, int m, TextureTransform& transform,
+                           std::string& what) {
+  transform = TextureTransform{};
+  const nlohmann::json* info =
+      m < 0 ? nullptr
+            : json_at(d.json["materials"][size_t(m)], {"pbrMetallicRoughness", "baseColorTexture"});
+  if (info == nullptr || texture_transform(*info, transform, what))
+    return true;
+  what = "materials[" + std::to_string(m) + "].pbrMetallicRoughness.baseColorTexture." + what;
+  return false;
 }
 
 /// Appends primitive `p` of mesh `m` placed by `world`; `warnings` gets a POSITION accessor's
@@ -128,6 +201,7 @@ bool add_primitive(const GltfDocument& d, int m, size_t index, const glm::dmat4&
   const tinygltf::Primitive& p = d.model.meshes[size_t(m)].primitives[index];
   const int mode = p.mode < 0 ? 4 : p.mode;
   int position = -1, uv = -1, color = -1;
+  TextureTransform transform;
   if (mode < 4 || mode > 6) {
     const char* names[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
     what = "primitive mode " + std::to_string(mode) +
@@ -135,21 +209,33 @@ bool add_primitive(const GltfDocument& d, int m, size_t index, const glm::dmat4&
            " is not supported (triangles, strips and fans only)";
     return false;
   }
-  if (!attribute(d, p, "POSITION", {TINYGLTF_TYPE_VEC3}, position, what) ||
-      !attribute(d, p, "TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, uv, what) ||
-      !attribute(d, p, "COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, color, what)) {
+  if (!material_uv_transform(d, p.material, transform, what) ||
+      !attribute(d, p, "POSITION", {TINYGLTF_TYPE_VEC3}, position, what) ||
+      !attribute(d, p, "TEXCOORD_" + std::to_string(transform.tex_coord), {TINYGLTF_TYPE_VEC2}, uv,
+                 what) ||
+      !attribute(d, p, "COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, color, what) ||
+      !check_indices(d, p, what)) {
     return false;
   }
-  if (position < 0 || (p.indices >= 0 && d.model.accessors[size_t(p.indices)].sparse.isSparse)) {
-    what = position < 0 ? "no POSITION attribute" : "sparse indices (not supported)";
+  if (position < 0) {
+    what = "no POSITION attribute";
     return false;
   }
+  if (uv < 0 && p.material >= 0 &&
+      json_at(d.json["materials"][size_t(p.material)],
+              {"pbrMetallicRoughness", "baseColorTexture"}))
+    warnings.push_back(d.file + ": meshes[" + std::to_string(m) + "].primitives[" +
+                       std::to_string(index) +
+                       "]: its material's base colour texture reads TEXCOORD_" +
+                       std::to_string(transform.tex_coord) +
+                       ", which the primitive lacks: its texture at (0, 0) everywhere");
   const size_t vertices = d.model.accessors[size_t(position)].count;
   const auto attribute_count = [&](int a) {
     return a < 0 || d.model.accessors[size_t(a)].count >= vertices;
   };
   if (!attribute_count(uv) || !attribute_count(color)) {
-    what = "TEXCOORD_0 or COLOR_0 has fewer elements than POSITION";
+    what = "TEXCOORD_" + std::to_string(transform.tex_coord) +
+           " or COLOR_0 has fewer elements than POSITION";
     return false;
   }
   std::vector<std::int64_t> indices;
@@ -178,7 +264,7 @@ bool add_primitive(const GltfDocument& d, int m, size_t index, const glm::dmat4&
   position_bounds(xyz, lo, hi);
   check_declared_bounds(d, position, lo, hi, warnings);
   if (!add_positions(xyz, world, soup, what) || !add_colors(d, color, vertices, soup, what) ||
-      !add_corner_uvs(d, uv, triangles, first, soup, what)) {
+      !add_corner_uvs(d, uv, transform, triangles, soup, what)) {
     return false;
   }
   for (const glm::ivec3& t : triangles) {
@@ -232,33 +318,31 @@ bool placements(const GltfDocument& d, const std::string& part,
 }  // namespace
 
 std::string gltf_mesh_part(int index) {
-  return "#" + std::to_string(index);
+  return std::string("#") + std::to_string(index);
 }
 
-bool load_gltf_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* appearance,
+bool read_gltf_mesh(const GltfDocument& d, const std::string& part, TriangleMesh& mesh,
+                    MeshAppearance* appearance, bool texture_pixels,
                     std::vector<std::string>& warnings, std::string& error, MeshLoadStats* stats) {
-  GltfDocument d;
   std::vector<std::pair<int, glm::dmat4>> placed;
-  if (!load_gltf_document(source.file, source.outside_paths, d, error) ||
-      !placements(d, source.part, placed, error))
+  if (!placements(d, part, placed, error))
     return false;
   GltfSoup soup;
   for (const auto& [m, world] : placed) {
     for (size_t p = 0; p < d.model.meshes[size_t(m)].primitives.size(); ++p) {
       std::string what;
       if (!add_primitive(d, m, p, world, soup, warnings, what)) {
-        error = source.file + ": " + where(m, p) + what;
+        error = d.file + ": " + where(m, p) + what;
         return false;
       }
     }
   }
   if (soup.mesh.triangles.empty()) {
-    error = source.file + ": no triangles" + (source.part.empty() ? "" : " in mesh " + source.part);
+    error = d.file + ": no triangles" + (part.empty() ? "" : " in mesh " + part);
     return false;
   }
-  if (appearance != nullptr &&
-      !gltf_appearance(d, soup.any_uv, soup.any_color, soup.any_material, source.texture_pixels,
-                       soup.appearance, warnings, error))
+  if (appearance != nullptr && !gltf_appearance(d, soup.any_uv, soup.any_color, soup.any_material,
+                                                texture_pixels, soup.appearance, warnings, error))
     return false;
   if (appearance != nullptr)
     *appearance = std::move(soup.appearance);
@@ -266,6 +350,14 @@ bool load_gltf_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance
   if (stats)
     *stats = MeshLoadStats{soup.polygons, 0};
   return true;
+}
+
+bool load_gltf_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* appearance,
+                    std::vector<std::string>& warnings, std::string& error, MeshLoadStats* stats) {
+  GltfDocument d;
+  return load_gltf_document(source.file, source.outside_paths, d, error) &&
+         read_gltf_mesh(d, source.part, mesh, appearance, source.texture_pixels, warnings, error,
+                        stats);
 }
 
 }  // namespace gfield

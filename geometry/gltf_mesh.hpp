@@ -1,13 +1,18 @@
 #pragma once
 // Meshes of glTF 2.0 files (.gltf, .glb) as gfield meshes: a primitive's POSITION and indices
-// (modes TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN), TEXCOORD_0 (v flipped to gfield's v up),
-// COLOR_0 (linear) and its material's baseColorFactor and baseColorTexture (decoded by gfield:
-// mesh_appearance.hpp). The whole file reads as every primitive of its scene placed by its nodes;
-// one mesh (MeshSource::part: its name, or "#INDEX") as its primitives in the mesh's own
-// coordinates. Checks: those of load_gltf_document (gltf_document.hpp), then a primitive mode
-// other than the three, a missing POSITION, sparse accessors, accessor types that do not fit
-// their attribute, indices beyond POSITION, coordinates beyond kMaxCoordinate, texture
-// coordinates beyond kMaxTextureCoordinate, colours outside [0, kMaxColorComponent]: one line
+// (modes TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN), the TEXCOORD_n set its material's
+// baseColorTexture reads (texCoord, KHR_texture_transform's texCoord, offset, rotation and scale
+// applied; v flipped to gfield's v up), COLOR_0 (linear) and its material's baseColorFactor and
+// baseColorTexture (decoded by gfield: mesh_appearance.hpp). Quantised attributes
+// (KHR_mesh_quantization: normalised or integer bytes and shorts) read as the specification
+// says; compressed files (Draco, meshopt) are decoded first (gltf_decompress.hpp). The whole
+// file reads as every primitive of its scene placed by its nodes; one mesh (MeshSource::part:
+// its name, or "#INDEX") as its primitives in the mesh's own coordinates. Checks: those of
+// load_gltf_document (gltf_document.hpp), then a primitive mode other than the three, a missing
+// POSITION, sparse accessors, accessor types or component types that do not fit their attribute
+// (glTF 2.0's table, widened by KHR_mesh_quantization when the file uses it), indices beyond
+// POSITION, coordinates beyond kMaxCoordinate, texture coordinates beyond kMaxTextureCoordinate
+// (after the transform), colours outside [0, kMaxColorComponent]: one line
 // "FILE: meshes[M].primitives[P]: problem".
 
 #include <string>
@@ -19,6 +24,15 @@ namespace gfield {
 
 /// load_mesh for glTF files (mesh_io.hpp).
 bool load_gltf_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* appearance,
+                    std::vector<std::string>& warnings, std::string& error,
+                    MeshLoadStats* stats = nullptr);
+
+struct GltfDocument;
+
+/// load_gltf_mesh of a document already read (gltf_document.hpp): mesh `part` ("" the whole
+/// scene), textures decoded when `texture_pixels`, no appearance when `appearance` is null.
+bool read_gltf_mesh(const GltfDocument& d, const std::string& part, TriangleMesh& mesh,
+                    MeshAppearance* appearance, bool texture_pixels,
                     std::vector<std::string>& warnings, std::string& error,
                     MeshLoadStats* stats = nullptr);
 

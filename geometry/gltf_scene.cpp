@@ -9,6 +9,8 @@
 #include <glm/gtx/compatibility.hpp>
 
 #include "geometry/gltf_document.hpp"
+#include "geometry/gltf_extensions.hpp"
+#include "geometry/gltf_material.hpp"
 #include "geometry/gltf_mesh.hpp"
 #include "gfield/limits.hpp"
 #include "gfield/printable.hpp"
@@ -26,50 +28,12 @@ bool number_at(const json& object, std::initializer_list<const char*> keys, doub
   const json* v = json_at(object, keys);
   value = v != nullptr && v->is_number() ? v->get<double>() : fallback;
   if (!(value >= lo && value <= hi)) {
-    for (const char* key : keys)
-      what += (what.empty() ? "" : ".") + std::string(key);
+    for (const char* key : keys) {
+      what += what.empty() ? "" : ".";
+      what += key;
+    }
     what += std::string(" must be in ") + range + " (is " + double_text(value) + ")";
     return false;
-  }
-  return true;
-}
-
-/// The gfield material of glTF material `index` (-1: the default, white diffuse).
-bool object_material(const GltfDocument& d, int index, Material& m, std::string& what) {
-  m = Material{};
-  m.type = MaterialType::kDiffuse;
-  m.texture = TextureType::kMesh;
-  m.color = glm::vec3(1.0f);
-  if (index < 0)
-    return true;
-  const json& g = d.json["materials"][size_t(index)];
-  const tinygltf::PbrMetallicRoughness& pbr = d.model.materials[size_t(index)].pbrMetallicRoughness;
-  double transmission = 0.0, ior = 1.5, distance = 0.0;
-  if (!number_at(g, {"extensions", "KHR_materials_transmission", "transmissionFactor"}, 0.0, 0.0,
-                 1.0, "[0, 1]", transmission, what) ||
-      !number_at(g, {"extensions", "KHR_materials_ior", "ior"}, 1.5, kMinIor, kMaxIor,
-                 "[1e-6, 1e6]", ior, what) ||
-      !number_at(g, {"extensions", "KHR_materials_volume", "attenuationDistance"}, 1e300, 1e-15,
-                 1e300, "[1e-15, 1e300]", distance, what)) {
-    return false;
-  }
-  glm::vec3 base(1.0f);
-  for (size_t k = 0; k < 3 && k < pbr.baseColorFactor.size(); ++k)
-    base[int(k)] = float(std::clamp(pbr.baseColorFactor[k], 0.0, kMaxColorComponent));
-  if (transmission > 0.0) {
-    m.type = MaterialType::kDielectric;
-    m.texture = TextureType::kNone;
-    m.ior = float(ior);
-    const json* c = json_at(g, {"extensions", "KHR_materials_volume", "attenuationColor"});
-    for (int k = 0; k < 3 && c != nullptr && c->is_array() && size_t(k) < c->size(); ++k) {
-      const double color = (*c)[size_t(k)].is_number() ? (*c)[size_t(k)].get<double>() : 1.0;
-      m.absorption[k] =
-          float(std::clamp(-std::log(std::max(color, 1e-300)) / distance, 0.0, kMaxColorComponent));
-    }
-  } else if (pbr.metallicFactor >= 1.0 && pbr.roughnessFactor <= 0.05) {
-    m.type = MaterialType::kMirror;
-    m.texture = TextureType::kNone;
-    m.color = base;
   }
   return true;
 }
@@ -116,10 +80,95 @@ int mesh_asset(const GltfDocument& d, int m, Scene& scene, std::map<int, int>& a
   return assets[m];
 }
 
+/// "diffuse", "mirror", "dielectric".
+const char* kind_name(MaterialType type) {
+  return type == MaterialType::kMirror       ? "mirror"
+         : type == MaterialType::kDielectric ? "dielectric"
+                                             : "diffuse";
+}
+
+/// |signed volume| / area^1.5 of glTF mesh `mesh` in its own coordinates, the volume taken about
+/// the surface's area-weighted centroid: 0 for a flat surface whatever its boundary, about 0.09
+/// for a sphere. False with `error` when the mesh does not read.
+bool volume_ratio(const GltfDocument& d, int mesh, double& ratio, std::string& error) {
+  TriangleMesh m;
+  std::vector<std::string> ignored;  // its bounds were checked by mesh_bounds
+  if (!read_gltf_mesh(d, gltf_mesh_part(mesh), m, nullptr, false, ignored, error))
+    return false;
+  glm::dvec3 centroid(0.0);
+  double area = 0.0, volume = 0.0;
+  for (const glm::ivec3& t : m.triangles) {
+    const glm::dvec3 &a = m.positions[size_t(t.x)], &b = m.positions[size_t(t.y)],
+                     &c = m.positions[size_t(t.z)];
+    const double A = 0.5 * glm::length(glm::cross(b - a, c - a));
+    area += A;
+    centroid += A * (a + b + c) / 3.0;
+  }
+  centroid /= std::max(area, 1e-300);
+  for (const glm::ivec3& t : m.triangles)
+    volume += glm::dot(m.positions[size_t(t.x)] - centroid,
+                       glm::cross(m.positions[size_t(t.y)] - centroid,
+                                  m.positions[size_t(t.z)] - centroid)) /
+              6.0;
+  ratio = std::abs(volume) / std::max(std::pow(area, 1.5), 1e-300);
+  return true;
+}
+
+/// The materials of the document as gfield materials, each mapped (and warned about) once.
+struct MaterialCache {
+  std::map<int, Material> mapped;
+};
+
+/// The material of glTF material `index` (cached); false with `error`.
+bool cached_material(const GltfDocument& d, int index, MaterialCache& cache, Material& m,
+                     std::vector<std::string>& warnings, std::string& error) {
+  const auto found = cache.mapped.find(index);
+  if (found != cache.mapped.end()) {
+    m = found->second;
+    return true;
+  }
+  if (!gltf_object_material(d, index, m, warnings, error))
+    return false;
+  cache.mapped[index] = m;
+  return true;
+}
+
+/// The material of glTF mesh `mesh` (its first primitive's); a warning when its other primitives'
+/// materials map to another kind; a dielectric mesh whose surface encloses no volume refused.
+bool mesh_material(const GltfDocument& d, int mesh, MaterialCache& cache, Material& m,
+                   std::vector<std::string>& warnings, std::string& error) {
+  const std::vector<tinygltf::Primitive>& primitives = d.model.meshes[size_t(mesh)].primitives;
+  if (!cached_material(d, primitives.empty() ? -1 : primitives[0].material, cache, m, warnings,
+                       error))
+    return false;
+  const std::string place = d.file + ": meshes[" + std::to_string(mesh) + "]";
+  for (size_t p = 1; p < primitives.size(); ++p) {
+    Material other;
+    if (!cached_material(d, primitives[p].material, cache, other, warnings, error))
+      return false;
+    if (other.type != m.type) {
+      warnings.push_back(place + ": primitives[" + std::to_string(p) + "]'s material is " +
+                         kind_name(other.type) + ", the first primitive's " + kind_name(m.type) +
+                         "; gfield renders the whole mesh as the first");
+      break;
+    }
+  }
+  double ratio = 1.0;
+  if (m.type == MaterialType::kDielectric && !volume_ratio(d, mesh, ratio, error))
+    return false;
+  if (ratio >= 1e-6)
+    return true;
+  error = place +
+          ": a transmissive surface that encloses no volume (flat and open); gfield's "
+          "dielectrics are closed solids (a JSON scene refuses a dielectric quad likewise)";
+  return false;
+}
+
 bool append_objects(const GltfDocument& d, const std::vector<PlacedNode>& nodes,
                     const glm::dmat4& placement, Scene& scene, std::vector<std::string>& warnings,
                     std::string& error) {
   std::map<int, int> assets;
+  MaterialCache cache;
   for (const PlacedNode& placed : nodes) {
     const tinygltf::Node& node = d.model.nodes[size_t(placed.node)];
     if (node.mesh < 0)
@@ -133,15 +182,8 @@ bool append_objects(const GltfDocument& d, const std::vector<PlacedNode>& nodes,
     o.name = node.name.empty() ? d.model.meshes[size_t(node.mesh)].name : node.name;
     o.shape.type = ShapeType::kMesh;
     o.shape.mesh = mesh_asset(d, node.mesh, scene, assets);
-    const std::vector<tinygltf::Primitive>& primitives =
-        d.model.meshes[size_t(node.mesh)].primitives;
-    const int material = primitives.empty() ? -1 : primitives[0].material;
-    std::string what;
-    if (!object_material(d, material, o.material, what)) {
-      error = d.file + ": materials[" + std::to_string(material) + "]: " + what;
-      return false;
-    }
-    if (!place(placement * placed.world, what_node, o.transform, warnings, error))
+    if (!mesh_material(d, node.mesh, cache, o.material, warnings, error) ||
+        !place(placement * placed.world, what_node, o.transform, warnings, error))
       return false;
     scene.objects.push_back(std::move(o));
   }
@@ -357,6 +399,7 @@ bool append_gltf_objects(const std::string& filename, OutsidePaths outside,
   std::vector<PlacedNode> nodes;
   if (!load_gltf_document(filename, outside, d, error) || !scene_nodes(d, nodes, error))
     return false;
+  ignored_extension_warnings(d.file, d.json, warnings);
   mesh_bounds(d, nodes, warnings);  // for its warnings: gfield reads the bounds of the data
   return append_objects(d, nodes, placement, scene, warnings, error);
 }
@@ -367,6 +410,7 @@ bool load_gltf_scene(const std::string& filename, OutsidePaths outside, Scene& s
   std::vector<PlacedNode> nodes;
   if (!load_gltf_document(filename, outside, d, error) || !scene_nodes(d, nodes, error))
     return false;
+  ignored_extension_warnings(d.file, d.json, warnings);
   const std::map<int, Bounds> bounds = mesh_bounds(d, nodes, warnings);
   Scene result;
   bool has_image = false, has_ambient = false;

@@ -11,6 +11,7 @@
 
 #include "geometry/scene_file.hpp"
 #include "gfield/printable.hpp"
+#include "gfield/thickness.hpp"
 
 extern char** environ;
 
@@ -84,6 +85,32 @@ bool load_view_scene(const std::string& filename, const std::string& asset_dir,
   if (!asset_dir.empty() && !use_asset_folder(asset_dir, scene, error)) {
     error = "--assets " + error;
     return false;
+  }
+  return true;
+}
+
+bool build_thickness_maps(const Scene& scene, std::string& error) {
+  std::vector<char> needed(scene.meshes.size(), 0);
+  for (const SceneObject& o : scene.objects)
+    if (o.shape.type == ShapeType::kMesh && o.material.type == MaterialType::kDielectric)
+      needed[size_t(o.shape.mesh)] = 1;
+  const std::string suffix = ".gimage.exr";
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const std::string& image = scene.meshes[m].geometry_image;
+    if (!needed[m] || image.size() <= suffix.size())
+      continue;  // no geometry image: the method says which asset is missing
+    const std::string map = thickness_path(image);
+    std::error_code ec, ec_image;
+    const auto made = fs::last_write_time(map, ec), built = fs::last_write_time(image, ec_image);
+    if (!ec && !ec_image && made >= built)
+      continue;
+    const std::string name = image.substr(0, image.size() - suffix.size());
+    const int status = run_child({gfield_executable(), "thickness", name});
+    if (status != 0) {
+      error = map + ": making it failed (gfield thickness " + name + " " +
+              (status < 0 ? "could not be started" : "exited with " + std::to_string(status)) + ")";
+      return false;
+    }
   }
   return true;
 }

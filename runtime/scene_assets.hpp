@@ -24,4 +24,11 @@ std::string gfield_executable();
 bool load_view_scene(const std::string& filename, const std::string& asset_dir,
                      OutsidePaths outside, Scene& scene, std::string& error);
 
+/// Makes the thickness maps (NAME.thickness.exr, d_n of Wyman 2005) that the wyman2005 method
+/// reads for the meshes of the dielectric objects of `scene`, as the other assets are made on
+/// demand: for each such mesh with a geometry image (NAME.gimage.exr) whose map is missing or
+/// older than the image, runs `gfield thickness NAME` (its output goes to stderr). False with a
+/// one-line error naming the map when one cannot be made.
+bool build_thickness_maps(const Scene& scene, std::string& error);
+
 }  // namespace gfield

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages gfield needs, skipping those already installed. Idempotent.
+# Installs the Debian 12 packages gfield needs, skipping those already installed, then the npm
+# tools of the glTF conformance test (scripts/install-gltf-tools.sh: gltf-validator, obj2gltf,
+# gltf-pipeline from the npm registry, once, into ~/.cache/gfield/gltf-tools/). Idempotent.
 # Run as root (or with sudo available).
 set -euo pipefail
 
@@ -8,6 +10,12 @@ packages=(
   libcgal-dev libembree-dev libopenexr-dev libtbb-dev libeigen3-dev
   libglfw3-dev libglm-dev libepoxy-dev libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libimgui-dev libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev
+  # compressed glTF meshes: KHR_draco_mesh_compression, EXT_meshopt_compression
+  libdraco-dev libmeshoptimizer-dev
+  # the glTF conformance test (tests/scenes/gltf_conformance_test.sh): gltfpack, and node and npm
+  # for the npm tools (gltf-pipeline's Cesium declares node >= 20.19; Debian 12's nodejs is 18,
+  # a NodeSource nodejs 20 is kept where installed)
+  gltfpack nodejs npm
   libgtest-dev libbenchmark-dev
   # the viewer's window test (tests/window/): an X server, synthetic input, screen grabs
   xvfb xdotool imagemagick
@@ -19,6 +27,10 @@ packages=(
 
 missing=()
 for p in "${packages[@]}"; do
+  # A node.js from elsewhere (NodeSource's nodejs bundles npm and conflicts with Debian's): its npm
+  if [ "$p" = npm ] && command -v npm > /dev/null; then
+    continue
+  fi
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
     missing+=("$p")
   fi
@@ -26,14 +38,14 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages already installed"
-  exit 0
+else
+  echo "install-deps: installing ${missing[*]}"
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    sudo="sudo"
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
-
-echo "install-deps: installing ${missing[*]}"
-sudo=""
-if [ "$(id -u)" -ne 0 ]; then
-  sudo="sudo"
-fi
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+"$(dirname "$0")/install-gltf-tools.sh"

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Builds gfield with AddressSanitizer and UndefinedBehaviorSanitizer (gcc, -O1 -g1, benchmarks
 # off; cmake -DGFIELD_SANITIZE=ON) in build-asan/ and runs the test suite there but for the
-# Slurm cluster test (docs/reliability.md). Any ASan or UBSan report fails its test;
-# LeakSanitizer reports too, except for the leaks of Mesa's own drivers listed in
-# tests/lsan-mesa.supp (the GL tests); a preloaded shim (tests/sanitizer/keep_libraries.c) keeps
-# Mesa's driver loaded at eglTerminate so that its leaks carry its name.
+# Slurm cluster test and the glTF conformance test (docs/reliability.md). Any ASan or UBSan
+# report fails its test; LeakSanitizer reports too, except for the leaks of Mesa's own drivers
+# listed in tests/lsan-mesa.supp (the GL tests); a preloaded shim
+# (tests/sanitizer/keep_libraries.c) keeps Mesa's driver loaded at eglTerminate so that its leaks
+# carry its name.
 # $GFIELD_JOBS sets the build jobs (default 2).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,8 +23,9 @@ export ASAN_OPTIONS=verify_asan_link_order=0:detect_leaks=1:strict_string_checks
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan-mesa.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd build-asan
-# Every test but the one-node Slurm cluster's (label "cluster", see tests/CMakeLists.txt).
-if ! ctest --output-on-failure -j 2 --label-exclude cluster; then
+# Every test but the one-node Slurm cluster's (label "cluster") and the glTF conformance test's
+# (label "gltf-tools": the npm tools; see tests/CMakeLists.txt).
+if ! ctest --output-on-failure -j 2 --label-exclude 'cluster|gltf-tools'; then
   # LeakSanitizer's own stop-the-world tracer crashes ("Tracer caught signal 11",
   # google/sanitizers#1353) when a thread exits during its check at exit: TBB's workers did, and
   # the test programs and `gfield` now join them first (preprocess/worker_threads.hpp). Should it

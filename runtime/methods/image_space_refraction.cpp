@@ -5,6 +5,7 @@
 
 #include "gfield/gpu_contract.hpp"
 #include "gfield/stopwatch.hpp"
+#include "runtime/scene_assets.hpp"
 
 namespace gfield {
 namespace {
@@ -57,7 +58,9 @@ std::vector<MethodOption> ImageSpaceRefractionMethod::options() {
 bool ImageSpaceRefractionMethod::load(GpuScene& scene, const std::filesystem::path& shader_dir,
                                       std::string& error) {
   const char* refract = davis_wyman_ ? "davis_wyman_refract.frag" : "wyman2005_refract.frag";
-  return passes_.load(scene, shader_dir, error) &&
+  // wyman2005 reads d_n: made on demand, as the other assets (runtime/scene_assets.hpp).
+  return (davis_wyman_ || build_thickness_maps(scene.scene(), error)) &&
+         passes_.load(scene, shader_dir, error) &&
          (davis_wyman_ || passes_.check_thickness_maps(error)) &&
          surfaces_program_.build(
              shader_dir, {"image_space_object.vert", "image_space_surfaces.frag"}, "", error) &&

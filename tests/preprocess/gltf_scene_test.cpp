@@ -2,7 +2,9 @@
 // camera, KHR_lights_punctual lights and the three material mappings (transmission + ior +
 // volume -> dielectric, metallic 1 roughness 0 -> mirror, otherwise diffuse with the mesh's own
 // base colour), each expected value worked out by hand from the glTF specification; a JSON
-// scene including the file as one object; the JSON "texture" defaults of meshes.
+// scene including the file as one object; the JSON "texture" defaults of meshes. (Issue 30: the
+// glass gives thicknessFactor 1, a volume: without it KHR_materials_volume is thin-walled, and
+// roughness 0, whose default 1 would be a frosted glass that gfield renders smooth.)
 
 #include <gtest/gtest.h>
 
@@ -58,10 +60,11 @@ fs::path write_scene_gltf() {
       {"type": "point", "intensity": 2.0, "color": [1, 0.5, 0.25]},
       {"type": "directional", "intensity": 0.5}]}},
     "materials": [
-      {"pbrMetallicRoughness": {"metallicFactor": 0},
+      {"pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0},
        "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
                       "KHR_materials_ior": {"ior": 1.33},
-                      "KHR_materials_volume": {"attenuationColor": [0.5, 1, 0.25],
+                      "KHR_materials_volume": {"thicknessFactor": 1,
+                                               "attenuationColor": [0.5, 1, 0.25],
                                                "attenuationDistance": 2}}},
       {"pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.8, 0.7, 1], "metallicFactor": 1,
                                 "roughnessFactor": 0.02}},
