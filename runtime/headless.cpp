@@ -82,7 +82,7 @@ void print_bench(const Method& method, const MethodRun& run, const HeadlessOptio
 }
 
 /// Prints PSNR and SSIM against o.reference and writes the heat map; false on a bad reference.
-bool compare_with_reference(const Image& image, const HeadlessOptions& o, std::string& error) {
+bool compare_with_reference(Image image, const HeadlessOptions& o, std::string& error) {
   Image reference;
   if (!load_image(o.reference, reference, error))
     return false;
@@ -92,9 +92,16 @@ bool compare_with_reference(const Image& image, const HeadlessOptions& o, std::s
             "x" + std::to_string(image.height);
     return false;
   }
+  // The frame is radiance; a display reference (PNG) was clamped when written: the frame too.
+  const bool displayed = is_display_image_file(o.reference);
+  if (displayed) {
+    image = clamped_to_display(std::move(image));
+    reference = clamped_to_display(std::move(reference));
+  }
   const ImageComparison c = compare_images(image, reference);
-  std::printf("%s vs %s: PSNR %.2f dB, SSIM %.4f, mean |error| %.4f\n", o.method.c_str(),
-              o.reference.c_str(), c.psnr, c.ssim, c.mean_abs_error);
+  std::printf("%s vs %s (%s): PSNR %.2f dB, SSIM %.4f, mean |error| %.4f\n", o.method.c_str(),
+              o.reference.c_str(), displayed ? "as displayed" : "linear", c.psnr, c.ssim,
+              c.mean_abs_error);
   return o.difference.empty() ||
          save_image(o.difference, error_heatmap(image, reference, o.difference_scale), error);
 }

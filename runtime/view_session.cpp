@@ -88,13 +88,18 @@ void ViewSession::draw_difference(Framebuffer& frame) {
                           std::to_string(frame.height()) + " (e.g. gfield render SCENE --size WxH)";
     return;
   }
-  const Image image = frame.read_image();
-  const ImageComparison c = compare_images(image, reference_);
-  char text[96];
-  std::snprintf(text, sizeof(text), "PSNR %.2f dB, SSIM %.4f against the reference", c.psnr,
-                c.ssim);
+  Image image = frame.read_image();
+  Image reference = reference_;
+  if (reference_displayed_) {  // the frame as displayed, like the reference
+    image = clamped_to_display(std::move(image));
+    reference = clamped_to_display(std::move(reference));
+  }
+  const ImageComparison c = compare_images(image, reference);
+  char text[128];
+  std::snprintf(text, sizeof(text), "PSNR %.2f dB, SSIM %.4f against the reference (%s)", c.psnr,
+                c.ssim, reference_displayed_ ? "as displayed" : "linear");
   difference_message_ = text;
-  const Image heat = error_heatmap(image, reference_, difference_scale);
+  const Image heat = error_heatmap(image, reference, difference_scale);
   // Bottom row first (the frame's layout), over the frame.
   std::vector<glm::vec4> rows(heat.pixels.size());
   for (int y = 0; y < heat.height; ++y)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gfield/image.hpp"
+#include "gfield/image_metrics.hpp"
 #include "gfield/scene.hpp"
 #include "runtime/framebuffer.hpp"
 #include "runtime/gpu_scene.hpp"
@@ -55,9 +56,11 @@ class ViewSession {
   /// the methods (replaced by new, unloaded instances with their default settings).
   void release();
 
-  /// The reference picture for the difference (linear radiance, rows top to bottom).
-  void set_reference(Image reference) {
+  /// The reference picture for the difference (rows top to bottom), read from `file`: radiance
+  /// (EXR, HDR), or a display picture (PNG, JPEG), against which the frame is clamped too.
+  void set_reference(Image reference, const std::string& file) {
     reference_ = std::move(reference);
+    reference_displayed_ = is_display_image_file(file);
     ++revision_;
   }
   /// Counts the changes a picture depends on that its methods' options do not show: scene
@@ -79,6 +82,7 @@ class ViewSession {
   int compare_ = -1;
   Framebuffer second_;
   Image reference_;
+  bool reference_displayed_ = false;
   std::string difference_message_;
   int revision_ = 0;
 };

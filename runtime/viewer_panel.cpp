@@ -54,7 +54,7 @@ void difference_section(ViewerState& s) {
     Image reference;
     std::string error;
     if (load_image(s.reference_path, reference, error)) {
-      session.set_reference(std::move(reference));
+      session.set_reference(std::move(reference), s.reference_path);
       s.message = std::string("reference ") + s.reference_path;
     } else {
       s.message = error;

@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <limits>
+#include <utility>
 
 namespace gfield {
 namespace {
@@ -73,6 +76,22 @@ Image clamped_to_display(Image image) {
   for (glm::vec3& p : image.pixels)
     p = glm::clamp(p, glm::vec3(0.0f), glm::vec3(1.0f));
   return image;
+}
+
+bool is_display_image_file(const std::string& filename) {
+  std::string ext = std::filesystem::path(filename).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".png" || ext == ".jpg" || ext == ".jpeg";
+}
+
+bool match_display_transform(Image& a, const std::string& a_file, Image& b,
+                             const std::string& b_file) {
+  if (!is_display_image_file(a_file) && !is_display_image_file(b_file))
+    return false;
+  a = clamped_to_display(std::move(a));
+  b = clamped_to_display(std::move(b));
+  return true;
 }
 
 double psnr_from_mse(double mse, double peak) {

@@ -29,8 +29,8 @@ Image load_or_throw(const std::string& file) {
 }
 
 void run_compare(const CompareArgs& args) {
-  const Image a = load_or_throw(args.a);
-  const Image b = load_or_throw(args.b);
+  Image a = load_or_throw(args.a);
+  Image b = load_or_throw(args.b);
   if (a.width != b.width || a.height != b.height) {
     throw CommandError(args.b + ": size " + std::to_string(b.width) + "x" +
                        std::to_string(b.height) + " differs from " + args.a + " (" +
@@ -44,6 +44,7 @@ void run_compare(const CompareArgs& args) {
     }
     mask = mask_from_image(m);
   }
+  const bool displayed = match_display_transform(a, args.a, b, args.b);
   const ImageComparison c = compare_images(a, b, mask);
   if (c.pixels == 0)
     throw CommandError(args.mask + ": the mask selects no pixel");
@@ -67,8 +68,11 @@ void run_compare(const CompareArgs& args) {
     j["mean_abs_error"] = c.mean_abs_error;
     if (!args.mask.empty())
       j["mask"] = args.mask;
+    j["compared"] = displayed ? "as displayed (both clamped to [0, 1])" : "linear radiance";
     std::printf("%s\n", j.dump(2).c_str());
   } else {
+    std::printf("compared        %s\n",
+                displayed ? "as displayed (both clamped to [0, 1])" : "linear radiance");
     std::printf("pixels          %zu\n", c.pixels);
     std::printf("PSNR            %.3f dB\n", c.psnr);
     std::printf("SSIM            %.5f\n", c.ssim);

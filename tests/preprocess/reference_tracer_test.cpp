@@ -4,7 +4,9 @@
 // R + T = 1, Beer–Lambert absorption; plus determinism, instancing and the CLI.
 
 #include <gtest/gtest.h>
+
 #include <tbb/global_control.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -420,6 +422,35 @@ TEST(RenderCli, RendersComparesAndRefusesBadInput) {
   EXPECT_EQ(run.exit_code, 2);
   run = test::run_cli("compare " + out + " " + dir + "/tracer_cli_render.png");
   EXPECT_EQ(run.exit_code, 2);  // sizes differ
+}
+
+TEST(RenderCli, ComparesARadiancePictureWithADisplayPictureAsDisplayed) {
+  // The studio environment's softboxes reach 6: against its clamped PNG, the EXR of the same
+  // render differed by them alone (17.5 dB where the pictures agree to 8 bits).
+  const std::string dir = GFIELD_TEST_TMP;
+  const std::string scene = std::string(GFIELD_DATA_DIR) + "/scenes/two-mirror-spheres.json";
+  const std::string exr = dir + "/display_transform.exr", png = dir + "/display_transform.png";
+  for (const std::string& out : {exr, png}) {
+    const test::CliRun r =
+        test::run_cli("render " + scene + " --size 48x48 --spp 1 --strata-centres -q -o " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  Image radiance;
+  std::string error;
+  ASSERT_TRUE(load_image(exr, radiance, error)) << error;
+  float brightest = 0.0f;
+  for (const glm::vec3& p : radiance.pixels)
+    brightest = std::max({brightest, p.x, p.y, p.z});
+  ASSERT_GT(brightest, 1.5f) << "the test needs highlights above 1";
+  for (const std::string& args : {exr + " " + png, png + " " + exr}) {
+    const test::CliRun r = test::run_cli("compare " + args + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["compared"], "as displayed (both clamped to [0, 1])");
+    EXPECT_GT(j["psnr_db"].get<double>(), 45.0) << args;  // 8-bit rounding alone
+  }
+  const test::CliRun same = test::run_cli("compare " + exr + " " + exr + " --json");
+  EXPECT_EQ(nlohmann::json::parse(same.out)["compared"], "linear radiance");
 }
 
 }  // namespace

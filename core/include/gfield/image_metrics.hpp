@@ -2,6 +2,7 @@
 // Image comparison: PSNR and SSIM of two linear RGB images, optionally restricted to a mask
 // (e.g. the pixels an object covers).
 
+#include <string>
 #include <vector>
 
 #include "gfield/image.hpp"
@@ -18,6 +19,17 @@ PixelMask mask_from_image(const Image& image, float threshold = 0.5f);
 /// (the studio environment's softboxes reach 6; unclamped, a few reflections of them would
 /// dominate every PSNR).
 Image clamped_to_display(Image image);
+
+/// Whether `filename` holds a display picture (PNG, JPEG: 8-bit, clamped to [0, 1] when written)
+/// rather than radiance (EXR, HDR).
+bool is_display_image_file(const std::string& filename);
+
+/// Gives two pictures read from `a_file` and `b_file` the same display transform before they are
+/// compared: where either is a display picture, both are clamped to [0, 1] (a radiance picture
+/// against a clamped one would count every highlight above 1 as error); two radiance pictures
+/// stay linear. Returns whether they were clamped.
+bool match_display_transform(Image& a, const std::string& a_file, Image& b,
+                             const std::string& b_file);
 
 struct ImageComparison {
   double mse = 0.0;             ///< mean over counted pixels and the 3 channels of (a - b)^2
