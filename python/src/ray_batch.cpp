@@ -1,8 +1,5 @@
 #include "python/src/ray_batch.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 namespace gfield::python {
 
 RayBatch ray_batch(const py::object& origins, const py::object& directions,
@@ -28,16 +25,6 @@ RayBatch ray_batch(const py::object& origins, const py::object& directions,
   batch.t_min_values = batch.t_min.data();
   batch.one_t_min = one;
   return batch;
-}
-
-void for_each_ray(size_t count, const std::function<void(size_t)>& answer) {
-  py::gil_scoped_release release;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, count),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t i = range.begin(); i != range.end(); ++i) {
-                        answer(i);
-                      }
-                    });
 }
 
 }  // namespace gfield::python

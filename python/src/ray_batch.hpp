@@ -2,8 +2,10 @@
 // Batches of rays from numpy arrays, answered on every core with the GIL released: the inputs of
 // GeometryField.lookup and Mesh.intersect and the arrays of their answers.
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <cstddef>
-#include <functional>
 
 #include <glm/glm.hpp>
 
@@ -38,8 +40,19 @@ struct RayBatch {
 RayBatch ray_batch(const py::object& origins, const py::object& directions,
                    const py::object& t_min);
 
-/// Calls `answer(i)` for i in [0, count) on TBB's threads with the GIL released.
-void for_each_ray(size_t count, const std::function<void(size_t)>& answer);
+/// Calls `answer(i)` for i in [0, count) on TBB's threads with the GIL released. A template, so
+/// that `answer` is inlined into the loop over each range: no call per ray that a C++ program
+/// looping over its rays would not make.
+template <class Answer>
+void for_each_ray(size_t count, const Answer& answer) {
+  py::gil_scoped_release release;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, count),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t i = range.begin(); i != range.end(); ++i) {
+                        answer(i);
+                      }
+                    });
+}
 
 /// A new array of `count` rows of `columns` values (columns 0: shape (count,)).
 template <class T>
