@@ -9,6 +9,8 @@ packages=(
   libglfw3-dev libglm-dev libepoxy-dev libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   libimgui-dev libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev
   libgtest-dev libbenchmark-dev
+  # the Python module (python/, docs/python.md), its tests and its worked example
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
   # the viewer's window test (tests/window/): an X server, synthetic input, screen grabs
   xvfb xdotool imagemagick
   # the Slurm test (tests/slurm/): a one-node cluster; Debian's packages start no daemon
