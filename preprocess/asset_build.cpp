@@ -72,7 +72,7 @@ std::string field_layers_summary(const FieldFileReport& r) {
 
 bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, int samples_per_side,
                       int layers, ExrPrecision precision, const std::string& output,
-                      FieldFileReport& report, std::string& error) {
+                      FieldFileReport& report, std::string& error, const JobControl* control) {
   report.samples_per_side = samples_per_side;
   report.image_size = image.size;
   report.memory_estimate =
@@ -90,17 +90,19 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
   report.bvh_seconds = watch.seconds();
   GeometryField field;
   if (!build_geometry_field(pm, embree, image, samples_per_side, layers, field, error,
-                            &report.build)) {
+                            &report.build, control)) {
     error = output + ": " + error;
     return false;
   }
   field.source = image.source;
   field.build_id = image.build_id;
   watch.restart();
+  report_progress(control, "write", 0.0);
   if (!save_geometry_field(output, field, precision, error)) {
     return false;
   }
   report.write_seconds = watch.seconds();
+  report_progress(control, "write", 1.0);
   std::error_code ec;
   report.file_bytes = size_t(std::filesystem::file_size(output, ec));
   return true;
@@ -172,6 +174,15 @@ bool write_image_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
   return true;
 }
 
+/// True, with the error "MESH: interrupted", when `control` asks the build to stop.
+bool interrupted(const JobControl* control, const std::string& mesh_path, std::string& error) {
+  if (!stop_requested(control)) {
+    return false;
+  }
+  error = mesh_path + ": " + kInterrupted;
+  return true;
+}
+
 /// `error` with the build folder's file names replaced by the asset's (a full disk names the
 /// file the user asked for, not where it was being written).
 std::string with_asset_names(std::string error, const AssetFiles& staged, const AssetFiles& files) {
@@ -213,13 +224,18 @@ bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
 
   GeometryImage image;
   ParameterizedMesh pm;
+  report_progress(options.control, "image", 0.0);
   if (!write_image_files(mesh, appearance, mesh_path, options, inputs.build_id, staged, image, pm,
-                         report, error)) {
+                         report, error) ||
+      interrupted(options.control, mesh_path, error)) {
     return false;
   }
+  report_progress(options.control, "image", 1.0);
   FieldFileReport field_report;
   if (!write_field_file(image, pm, options.samples_per_side, options.field_layers,
-                        options.field_precision, staged.field, field_report, error)) {
+                        options.field_precision, staged.field, field_report, error,
+                        options.control) ||
+      interrupted(options.control, mesh_path, error)) {
     return false;
   }
   report["geometry_field"] = field_file_report_to_json(field_report);
@@ -233,9 +249,12 @@ bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
     verify.original_part = options.part;
     verify.original_outside_paths = options.outside_paths;
     nlohmann::json accuracy;
-    if (!verify_asset_files(staged, name, verify, accuracy, error)) {
+    report_progress(options.control, "verify", 0.0);
+    if (!verify_asset_files(staged, name, verify, accuracy, error) ||
+        interrupted(options.control, mesh_path, error)) {
       return false;
     }
+    report_progress(options.control, "verify", 1.0);
     report["accuracy"] = std::move(accuracy);
   }
   std::error_code ec;
@@ -261,10 +280,13 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
   TriangleMesh mesh;
   MeshAppearance appearance;
   std::vector<std::string> warnings;
+  report_progress(options.control, "mesh", 0.0);
   if (!load_mesh(MeshSource{mesh_path, options.part, options.outside_paths}, mesh, &appearance,
-                 warnings, error)) {
+                 warnings, error) ||
+      interrupted(options.control, mesh_path, error)) {
     return false;
   }
+  report_progress(options.control, "mesh", 1.0);
   AssetStaging staging;
   if (!staging.open(name, error)) {
     return false;
@@ -276,6 +298,22 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
     return false;
   }
   return true;
+}
+
+bool build_asset_at(const std::string& mesh_path, const std::string& name,
+                    const AssetOptions& options, nlohmann::json& report, size_t& stale_removed,
+                    std::string& error) {
+  BuildInputs inputs;
+  if (!asset_build_inputs(mesh_path, options, inputs, error)) {
+    return false;
+  }
+  const std::filesystem::path dir = std::filesystem::path(name).parent_path();
+  std::error_code ec;
+  if (!dir.empty()) {
+    std::filesystem::create_directories(dir, ec);
+  }
+  stale_removed = remove_stale_staging(dir.empty() ? "." : dir.string());
+  return build_asset(mesh_path, name, options, inputs, report, error);
 }
 
 }  // namespace gfield

@@ -11,6 +11,7 @@
 #include "preprocess/build_inputs.hpp"
 #include "preprocess/field_build.hpp"
 #include "preprocess/geometry_image_build.hpp"
+#include "preprocess/job_control.hpp"
 
 namespace gfield {
 
@@ -30,10 +31,12 @@ nlohmann::json field_file_report_to_json(const FieldFileReport& report);
 /// Casts the field of `pm` (the parameterised mesh of `image`) with N samples per side and
 /// `layers` layers (kAutoLayers: chosen) in the image's box and writes it to `output`
 /// (atomically). The field's source and build id are the image's. False with an error "FILE:
-/// problem" (N or K out of range or too large for memory included).
+/// problem" (N or K out of range or too large for memory included; "FILE: interrupted" when
+/// `control` asked to stop; it hears the stages "field" and "write").
 bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, int samples_per_side,
                       int layers, ExrPrecision precision, const std::string& output,
-                      FieldFileReport& report, std::string& error);
+                      FieldFileReport& report, std::string& error,
+                      const JobControl* control = nullptr);
 
 /// "K = 2 (chosen: 99.95% of the lines hold all their hits), GPU 47.8 MB at 8 bits": the
 /// layers and GPU bytes of a field report, one line.
@@ -50,6 +53,9 @@ struct AssetOptions {
   /// Files the mesh names outside its folder (MeshSource::outside_paths). Not hashed: it decides
   /// what is read, not what is made of it.
   OutsidePaths outside_paths = OutsidePaths::kRefused;
+  /// Progress and stop (job_control.hpp; stages "mesh", "image", "field", "write", "verify").
+  /// Not hashed.
+  const JobControl* control = nullptr;
 };
 
 /// Every geometry-image option, as hashed into build ids (`gfield image`, `gfield build`).
@@ -66,8 +72,15 @@ bool asset_build_inputs(const std::string& mesh_path, const AssetOptions& option
 /// written into a staging folder, then published together (asset_staging.hpp); the report
 /// records the build id, the hashed inputs, the glTF mesh ("mesh_part") and the mesh's warnings
 /// ("warnings": a missing texture, ...). False with an error "FILE: problem", and the old asset
-/// untouched.
+/// untouched (also when options.control stopped it: the error then ends in kInterrupted).
 bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
                  const BuildInputs& inputs, nlohmann::json& report, std::string& error);
+
+/// `gfield build MESH -o NAME`: the inputs and their build id (asset_build_inputs), NAME's folder
+/// (created), what killed builds left there (remove_stale_staging; how many folders into
+/// `stale_removed`), then build_asset. The report's "build_id" is the asset's.
+bool build_asset_at(const std::string& mesh_path, const std::string& name,
+                    const AssetOptions& options, nlohmann::json& report, size_t& stale_removed,
+                    std::string& error);
 
 }  // namespace gfield

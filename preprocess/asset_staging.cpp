@@ -254,7 +254,13 @@ bool AssetStaging::open(const std::string& name, std::string& error) {
   // it waits until the end of open(), then removes what is registered.
   const SignalsDeferred deferred;
   for (int n = 0;; ++n) {
-    const fs::path folder = builds / ("b-" + std::to_string(::getpid()) + "-" + std::to_string(n));
+    const std::string id = std::to_string(::getpid()) + "-" + std::to_string(n);
+    // p-PID-N published already (by this process, which builds the asset again, or by an earlier
+    // one with the same pid): this build could not publish under that name.
+    if (fs::exists(builds / ("p-" + id), ec)) {
+      continue;
+    }
+    const fs::path folder = builds / ("b-" + id);
     const int result = make_locked_folder(folder, lock_fd_);
     if (result == 0) {
       folder_ = folder;

@@ -303,7 +303,8 @@ glm::vec2 snap_to_covered(const GeometryImage& image, const std::vector<uint8_t>
 
 bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
                           const GeometryImage& image, int samples_per_side, int layers,
-                          GeometryField& field, std::string& error, FieldBuildStats* stats) {
+                          GeometryField& field, std::string& error, FieldBuildStats* stats,
+                          const JobControl* control) {
   Stopwatch watch;
   if (image.size < 2 || image.coverage.size() != size_t(image.size) * size_t(image.size) ||
       image.position.size() != image.coverage.size()) {
@@ -346,16 +347,25 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
                            .table = field.uv.data()};
   PerThread<Histogram> histograms(Histogram{});
   if (capacity == 1) {
-    cast_first_hits(embree, writer.points, n,
-                    [&](int entry, int first, const std::array<HitList, 8>& lanes, bool cast) {
-                      writer.store_first(entry, first, lanes, cast, histograms.local());
-                    });
+    cast_first_hits(
+        embree, writer.points, n,
+        [&](int entry, int first, const std::array<HitList, 8>& lanes, bool cast) {
+          writer.store_first(entry, first, lanes, cast, histograms.local());
+        },
+        control);
   } else {
-    cast_lines(embree, writer.points, n, line_capacity(capacity), stored,
-               [&](int entry, int first, int count, const std::array<LineHits, 8>& lines) {
-                 writer.store_lines(entry, first, count, lines, histograms.local());
-               });
+    cast_lines(
+        embree, writer.points, n, line_capacity(capacity), stored,
+        [&](int entry, int first, int count, const std::array<LineHits, 8>& lines) {
+          writer.store_lines(entry, first, count, lines, histograms.local());
+        },
+        control);
   }
+  if (stop_requested(control)) {
+    error = kInterrupted;
+    return false;
+  }
+  report_progress(control, "field", 1.0);
 
   FieldBuildStats s;
   s.rays = count - 6 * size_t(n * n) * size_t(n * n);

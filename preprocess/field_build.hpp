@@ -21,6 +21,7 @@
 #include "gfield/geometry_field.hpp"
 #include "gfield/geometry_image.hpp"
 #include "preprocess/embree_mesh.hpp"
+#include "preprocess/job_control.hpp"
 
 namespace gfield {
 
@@ -67,11 +68,12 @@ double layer_coverage(const FieldBuildStats& stats, int layers);
 /// A hit whose uv falls where the image's bilinear patch reaches into uncovered (padding) texels
 /// is moved to the nearby covered patch point closest to the hit (snap_to_covered).
 /// `field.source` is left to the caller. False with an error for N or K out of range or a mesh
-/// whose corner uvs do not match its triangles.
+/// whose corner uvs do not match its triangles, and with kInterrupted when `control` asked to
+/// stop (it hears the casts' progress, stage "field").
 bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
                           const GeometryImage& image, int samples_per_side, int layers,
                           GeometryField& field, std::string& error,
-                          FieldBuildStats* stats = nullptr);
+                          FieldBuildStats* stats = nullptr, const JobControl* control = nullptr);
 
 /// Which bilinear patches of `image` have all 4 texels covered: (n-1)^2 flags, patch (i, j)
 /// (texels i..i+1, j..j+1) at j * (n-1) + i.

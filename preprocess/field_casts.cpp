@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace gfield {
@@ -167,6 +168,30 @@ void cast_line_packet(const EmbreeMesh& embree, const std::vector<glm::vec3>& po
 /// Side of the square tiles in which cast_lines visits the table.
 constexpr int kTile = 64;
 
+/// The casts' units of work (entry rows, tiles) for a JobControl: next() before each unit reports
+/// the share started so far and says whether to go on.
+class Countdown {
+ public:
+  Countdown(const JobControl* control, int units) : control_(control), units_(units) {}
+
+  bool next() {
+    if (control_ == nullptr) {
+      return true;
+    }
+    if (stop_requested(control_)) {
+      return false;
+    }
+    const int started = started_.fetch_add(1, std::memory_order_relaxed);
+    report_progress(control_, "field", double(started) / double(units_));
+    return true;
+  }
+
+ private:
+  const JobControl* control_;
+  int units_;
+  std::atomic<int> started_{0};
+};
+
 }  // namespace
 
 std::vector<glm::vec3> sample_points(const Box& box, int n) {
@@ -178,15 +203,19 @@ std::vector<glm::vec3> sample_points(const Box& box, int n) {
 }
 
 void cast_first_hits(const EmbreeMesh& embree, const std::vector<glm::vec3>& points, int n,
-                     const FirstHitConsumer& consume) {
+                     const FirstHitConsumer& consume, const JobControl* control) {
   const int side = int(points.size());
   const int per_face = n * n;
+  Countdown rows_done(control, side);
   tbb::parallel_for(tbb::blocked_range<int>(0, side), [&](const tbb::blocked_range<int>& rows) {
     CollectContext context = make_context(1, true);
     alignas(32) RTCRayHit8 packet;
     alignas(32) int valid[8];
     std::array<HitList, 8> lanes;
     for (int entry = rows.begin(); entry != rows.end(); ++entry) {
+      if (!rows_done.next()) {
+        return;
+      }
       const glm::vec3 origin = points[size_t(entry)];
       const int face_begin = (entry / per_face) * per_face;
       const int face_end = face_begin + per_face;
@@ -217,9 +246,10 @@ void cast_first_hits(const EmbreeMesh& embree, const std::vector<glm::vec3>& poi
 }
 
 void cast_lines(const EmbreeMesh& embree, const std::vector<glm::vec3>& points, int n, int capacity,
-                int reverse_capacity, const LineConsumer& consume) {
+                int reverse_capacity, const LineConsumer& consume, const JobControl* control) {
   const int side = int(points.size());
   const int tiles = (side + kTile - 1) / kTile;
+  Countdown tiles_done(control, tiles * (tiles + 1) / 2);
   // Tile pairs (row tile r <= column tile c), numbered r * tiles + c.
   tbb::parallel_for(
       tbb::blocked_range<int>(0, tiles * tiles), [&](const tbb::blocked_range<int>& range) {
@@ -231,6 +261,9 @@ void cast_lines(const EmbreeMesh& embree, const std::vector<glm::vec3>& points, 
           const int column_tile = tile % tiles;
           if (row_tile > column_tile) {
             continue;
+          }
+          if (!tiles_done.next()) {
+            return;
           }
           const int end = std::min(side, (column_tile + 1) * kTile);
           for (int entry = row_tile * kTile; entry < std::min(side, (row_tile + 1) * kTile);

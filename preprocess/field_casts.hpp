@@ -19,6 +19,7 @@
 
 #include "gfield/box.hpp"
 #include "preprocess/embree_mesh.hpp"
+#include "preprocess/job_control.hpp"
 
 namespace gfield {
 
@@ -46,9 +47,11 @@ std::vector<glm::vec3> sample_points(const Box& box, int n);
 using FirstHitConsumer =
     std::function<void(int entry, int first_exit, const std::array<HitList, 8>& lanes, bool cast)>;
 
-/// First hits of every ray; `points` = sample_points(box, N).
+/// First hits of every ray; `points` = sample_points(box, N). `control` (optional) hears the
+/// share of the entry rows done (stage "field") and, once it asks to stop, the remaining rows
+/// are skipped (the caller checks stop_requested).
 void cast_first_hits(const EmbreeMesh& embree, const std::vector<glm::vec3>& points, int n,
-                     const FirstHitConsumer& consume);
+                     const FirstHitConsumer& consume, const JobControl* control = nullptr);
 
 /// One line entry -> exit (entry <= exit) of cast_lines.
 struct LineHits {
@@ -68,8 +71,9 @@ using LineConsumer =
 
 /// Visits every line (entry, exit) with entry <= exit once (tile by tile): collects up to
 /// `capacity` hits nearest the entry (1..kMaxHitList) and, for lines whose list is full, up to
-/// `reverse_capacity` hits nearest the exit.
+/// `reverse_capacity` hits nearest the exit. `control` as for cast_first_hits, per tile.
 void cast_lines(const EmbreeMesh& embree, const std::vector<glm::vec3>& points, int n, int capacity,
-                int reverse_capacity, const LineConsumer& consume);
+                int reverse_capacity, const LineConsumer& consume,
+                const JobControl* control = nullptr);
 
 }  // namespace gfield

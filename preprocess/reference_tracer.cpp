@@ -202,6 +202,39 @@ RenderBudget estimate_render(int width, int height, int samples_per_pixel) {
   return b;
 }
 
+namespace {
+
+std::string human_seconds(double s) {
+  char buffer[64];
+  if (s < 120.0) {
+    std::snprintf(buffer, sizeof(buffer), "%.0f s", s);
+  } else if (s < 7200.0) {
+    std::snprintf(buffer, sizeof(buffer), "%.0f min", s / 60.0);
+  } else {
+    std::snprintf(buffer, sizeof(buffer), "%.1f h", s / 3600.0);
+  }
+  return buffer;
+}
+
+}  // namespace
+
+bool check_render_budget(int width, int height, int samples_per_pixel, std::string& error) {
+  const RenderBudget budget = estimate_render(width, height, samples_per_pixel);
+  if (budget.image_bytes <= kMaxImageBytes && budget.camera_samples <= kMaxCameraSamples &&
+      width <= 65536 && height <= 65536) {
+    return true;
+  }
+  char message[512];
+  std::snprintf(message, sizeof(message),
+                "refusing %dx%d at %d spp: %.3g camera samples (limit %.3g), image %.2f GB "
+                "(limit %.1f GB), estimated %s on this machine",
+                width, height, samples_per_pixel, budget.camera_samples, kMaxCameraSamples,
+                budget.image_bytes / 1e9, kMaxImageBytes / 1e9,
+                human_seconds(budget.estimated_seconds).c_str());
+  error = message;
+  return false;
+}
+
 struct ReferenceTracer::Impl {
   Scene scene;
   Environment environment;
@@ -617,14 +650,15 @@ glm::dvec2 sample_position(int x, int y, int s, int width, glm::ivec2 grid,
 class Progress {
  public:
   Progress(bool enabled, int total) : enabled_(enabled), total_(total) {}
-  void step() {
+  /// One more row done; returns the rows done.
+  int step() {
     const int done = ++done_;
     if (!enabled_)
-      return;
+      return done;
     const int percent = done * 100 / total_;
     std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
     if (!lock.owns_lock() || percent == shown_)
-      return;
+      return done;
     shown_ = percent;
     const int bar = percent * 40 / 100;
     std::fprintf(stderr, "\rrender [%.*s%*s] %3d%%", bar,
@@ -632,6 +666,7 @@ class Progress {
     if (done == total_)
       std::fprintf(stderr, "\n");
     std::fflush(stderr);
+    return done;
   }
 
  private:
@@ -657,7 +692,7 @@ Image ReferenceTracer::render(const RenderOptions& options, RenderStats* stats) 
   tbb::parallel_for(
       tbb::blocked_range<int>(0, height, 1), [&](const tbb::blocked_range<int>& rows) {
         Counters counters;
-        for (int y = rows.begin(); y < rows.end(); ++y) {
+        for (int y = rows.begin(); y < rows.end() && !stop_requested(options.control); ++y) {
           for (int x = 0; x < width; ++x) {
             glm::dvec3 sum(0.0);
             for (int s = 0; s < spp; ++s) {
@@ -667,7 +702,7 @@ Image ReferenceTracer::render(const RenderOptions& options, RenderStats* stats) 
             }
             image.at(x, y) = glm::vec3(sum / double(spp));
           }
-          progress.step();
+          report_progress(options.control, "render", double(progress.step()) / double(height));
         }
         secondary += counters.secondary;
         shadow += counters.shadow;

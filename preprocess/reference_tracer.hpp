@@ -16,6 +16,7 @@
 
 #include "gfield/image.hpp"
 #include "gfield/scene.hpp"
+#include "preprocess/job_control.hpp"
 
 namespace gfield {
 
@@ -47,6 +48,9 @@ struct RenderOptions {
   double min_weight = 1e-4;
   /// A progress bar on stderr (the CLI enables it when stderr is a terminal).
   bool progress = false;
+  /// Progress (stage "render": the share of rows done) and stop: once it asks to stop, the
+  /// remaining rows are left black (the caller checks stop_requested). Optional.
+  const JobControl* control = nullptr;
 };
 
 struct RenderStats {
@@ -130,5 +134,9 @@ inline constexpr double kEstimatedRaysPerSecond = 4.0e6;
 inline constexpr double kMaxCameraSamples = 4.0e9;
 inline constexpr double kMaxImageBytes = 2.0e9;
 RenderBudget estimate_render(int width, int height, int samples_per_pixel);
+/// False with "refusing WxH at S spp: ... camera samples (limit ...), image ... GB (limit ...),
+/// estimated ... on this machine" when a render of that size is beyond kMaxCameraSamples,
+/// kMaxImageBytes or 65,536 pixels per side (`gfield render` and gfield.render refuse it).
+bool check_render_budget(int width, int height, int samples_per_pixel, std::string& error);
 
 }  // namespace gfield

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # Builds the Debian package (cpack -G DEB in the build folder) and checks it with dpkg-deb: name,
 # version and architecture, the Depends on the runtime Debian packages, the files it installs
-# (exactly the expected ones: below).
-# Then unpacks it into a temporary root and runs the packaged gfield and gfield-view from there.
-# With --install (as root) it also installs the package with apt, runs the installed commands
-# from /tmp (build spot's assets, render an installed example scene headless) and removes it.
+# (exactly the expected ones: below). A build with the Python module makes a second package,
+# python3-gfield, checked the same way.
+# Then unpacks them into a temporary root and runs the packaged gfield and gfield-view from there,
+# and imports the packaged module with PYTHONPATH. With --install (as root) it also installs the
+# packages with apt, runs the installed commands from /tmp (build spot's assets, render an
+# installed example scene headless; import gfield without PYTHONPATH, build and look up) and
+# removes them.
 # Usage: scripts/check-deb.sh [--install] [BUILD_DIR]   (default build/, already built)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,10 +21,23 @@ fail() { echo "check-deb: $*" >&2; exit 1; }
 
 version=$(sed -n 's/^CMAKE_PROJECT_VERSION:STATIC=//p' "$build/CMakeCache.txt")
 deb="$build/gfield_${version}_amd64.deb"
-rm -f "$deb"
+# The Python module's files under the prefix (python/CMakeLists.txt); absent without the module.
+shipped_python="$build/gfield-shipped-python.txt"
+python_deb=""
+if [ -s "$shipped_python" ]; then
+  python_deb="$build/python3-gfield_${version}_amd64.deb"
+fi
+# The interpreter the module was built for: -DPython3_EXECUTABLE as given, or as FindPython3 found
+# it (cmake/python.cmake: Debian's /usr/bin/python3 by default).
+python=$(sed -n 's/^_\{0,1\}Python3_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt" | head -n 1)
+[ -z "$python_deb" ] || [ -x "$python" ] ||
+  fail "$build/CMakeCache.txt: no Python3_EXECUTABLE for the module (got '$python')"
+rm -f "$build"/*.deb
 (cd "$build" && cpack -G DEB > cpack.log) || { cat "$build/cpack.log"; fail "cpack failed"; }
-[ -f "$deb" ] || fail "$deb: not made (cpack made: $(ls "$build"/*.deb 2>/dev/null))"
-echo "== $deb ($(du -h "$deb" | cut -f1))"
+for d in "$deb" $python_deb; do
+  [ -f "$d" ] || fail "$d: not made (cpack made: $(ls "$build"/*.deb 2>/dev/null))"
+  echo "== $d ($(du -h "$d" | cut -f1))"
+done
 
 [ "$(dpkg-deb -f "$deb" Package)" = gfield ] || fail "package name"
 [ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || fail "version"
@@ -66,9 +82,27 @@ if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
 fi
 echo "contents: $(grep -c . <<< "$contents") files, exactly the expected ones"
 
+if [ -n "$python_deb" ]; then
+  [ "$(dpkg-deb -f "$python_deb" Package)" = python3-gfield ] || fail "python package name"
+  [ "$(dpkg-deb -f "$python_deb" Version)" = "$version" ] || fail "python package version"
+  depends=$(dpkg-deb -f "$python_deb" Depends)
+  echo "python3-gfield Depends: $depends"
+  for p in python3 python3-numpy libc6 libstdc++6 libembree3-3 libopenexr-3-1-30 libtbb12 libgmp10; do
+    [[ ", $depends," == *", $p "* || ", $depends," == *", $p,"* ]] ||
+      fail "python3-gfield's Depends lacks $p"
+  done
+  expected=$(sed 's|^|./usr/|' "$shipped_python" | sort)
+  contents=$(dpkg-deb -c "$python_deb" | awk '$6 !~ /\/$/ {print $6}' | sort)
+  [ "$contents" = "$expected" ] ||
+    fail "python3-gfield holds (<) other files than the module's (>):"$'\n'"$(diff <(echo "$contents") <(echo "$expected") | grep '^[<>]')"
+  echo "python3-gfield contents: $(grep -c . <<< "$contents") files, exactly the module's"
+fi
+
 root=$(mktemp -d "${TMPDIR:-/tmp}/gfield-deb.XXXXXX")
 trap 'rm -rf "$root"' EXIT
-dpkg-deb -x "$deb" "$root"
+for d in "$deb" $python_deb; do
+  dpkg-deb -x "$d" "$root"
+done
 (
   cd "$root"
   unset GFIELD_SHADER_DIR
@@ -80,12 +114,24 @@ dpkg-deb -x "$deb" "$root"
   [ -s spheres.png ] || fail "the packaged gfield-view wrote no picture"
 )
 echo "unpacked: gfield and gfield-view run from the package's own tree"
+if [ -n "$python_deb" ]; then
+  (
+    cd "$root"
+    PYTHONPATH="$root/usr/lib/python3/dist-packages" PYTHONDONTWRITEBYTECODE=1 "$python" -c '
+import gfield, sys
+assert gfield.__file__.startswith(sys.argv[1]), gfield.__file__
+assert gfield.info(sys.argv[1] + "/usr/share/gfield/meshes/suzanne.obj")["faces"] == 968' "$root"
+  ) || fail "the packaged module does not import or run"
+  echo "unpacked: import gfield from the package's own tree"
+fi
 
 if [ "$install" = 1 ]; then
-  echo "== apt-get install $deb"
+  echo "== apt-get install $deb $python_deb"
   export DEBIAN_FRONTEND=noninteractive
-  apt-get install -y -qq "$deb" > "$root/apt.log" || { cat "$root/apt.log"; fail "apt install"; }
-  trap 'apt-get remove -y -qq gfield > /dev/null; rm -rf "$root"' EXIT
+  # shellcheck disable=SC2086
+  apt-get install -y -qq "$deb" $python_deb > "$root/apt.log" ||
+    { cat "$root/apt.log"; fail "apt install"; }
+  trap 'apt-get remove -y -qq gfield ${python_deb:+python3-gfield} > /dev/null; rm -rf "$root"' EXIT
   (
     cd /tmp
     unset GFIELD_SHADER_DIR
@@ -97,6 +143,22 @@ if [ "$install" = 1 ]; then
     [ -s "$out/mirror.png" ] || fail "the installed gfield-view wrote no picture"
     rm -rf "$out"
   )
-  echo "installed: gfield build and gfield-view ran from /tmp; package removed again"
+  if [ -n "$python_deb" ]; then
+    (
+      cd /tmp
+      out=$(mktemp -d /tmp/gfield-installed.XXXXXX)
+      env -u PYTHONPATH PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 -c '
+import gfield, numpy, sys
+assert gfield.__file__.startswith("/usr/lib/python3/dist-packages/gfield/"), gfield.__file__
+gfield.build("/usr/share/gfield/meshes/spot.obj", sys.argv[1] + "/spot", size=64, samples=4,
+             verify_rays=0)
+field = gfield.GeometryField.load(sys.argv[1] + "/spot.gfield.exr")
+hits = field.lookup(numpy.array([[0.0, 0.1, 5.0]]), numpy.array([[0.0, 0.0, -1.0]]))
+assert hits["hit"][0], hits' "$out"
+      rm -rf "$out"
+    ) || fail "the installed module does not import or run"
+  fi
+  echo "installed: gfield build and gfield-view ran from /tmp${python_deb:+, and import gfield};" \
+    "packages removed again"
 fi
 echo "check-deb: ok"

@@ -17,6 +17,8 @@ packages=(
   # a NodeSource nodejs 20 is kept where installed)
   gltfpack nodejs npm
   libgtest-dev libbenchmark-dev
+  # the Python module (python/, docs/python.md), its tests and its worked example
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
   # the viewer's window test (tests/window/): an X server, synthetic input, screen grabs
   xvfb xdotool imagemagick
   # the Slurm test (tests/slurm/): a one-node cluster; Debian's packages start no daemon

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds gfield with AddressSanitizer and UndefinedBehaviorSanitizer (gcc, -O1 -g1, benchmarks
-# off; cmake -DGFIELD_SANITIZE=ON) in build-asan/ and runs the test suite there but for the
-# Slurm cluster test and the glTF conformance test (docs/reliability.md). Any ASan or UBSan
-# report fails its test; LeakSanitizer reports too, except for the leaks of Mesa's own drivers
-# listed in tests/lsan-mesa.supp (the GL tests); a preloaded shim
+# and the Python module off; cmake -DGFIELD_SANITIZE=ON) in build-asan/ and runs the test suite
+# there but for the Slurm cluster test and the glTF conformance test (docs/reliability.md; an
+# instrumented Python module would need libasan preloaded into Debian's python3: docs/python.md).
+# Any ASan or UBSan report fails its test; LeakSanitizer reports too, except for the leaks of
+# Mesa's own drivers listed in tests/lsan-mesa.supp (the GL tests); a preloaded shim
 # (tests/sanitizer/keep_libraries.c) keeps Mesa's driver loaded at eglTerminate so that its leaks
 # carry its name.
 # $GFIELD_JOBS sets the build jobs (default 2).
@@ -15,7 +16,7 @@ source scripts/ccache-launcher.sh
 # 52 s against 126 s here).
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGFIELD_SANITIZE=ON \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  -DGFIELD_BUILD_BENCH=OFF "${launcher[@]}" > /dev/null
+  -DGFIELD_BUILD_BENCH=OFF -DGFIELD_BUILD_PYTHON=OFF "${launcher[@]}" > /dev/null
 cmake --build build-asan -j "${GFIELD_JOBS:-2}"
 cc -shared -fPIC -O2 -o build-asan/keep_libraries.so tests/sanitizer/keep_libraries.c
 export LD_PRELOAD=$PWD/build-asan/keep_libraries.so

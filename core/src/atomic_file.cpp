@@ -26,8 +26,9 @@ struct Slot {
 std::array<Slot, kSlots> g_slots;
 std::atomic<unsigned> g_counter{0};
 std::once_flag g_handlers_installed;
-std::atomic<bool> g_deferring{false};  ///< SignalsDeferred alive
-std::atomic<int> g_deferred{0};        ///< the signal that arrived meanwhile
+std::atomic<bool> g_host_signals{false};  ///< leave_signals_to_host: no handlers
+std::atomic<bool> g_deferring{false};     ///< SignalsDeferred alive
+std::atomic<int> g_deferred{0};           ///< the signal that arrived meanwhile
 
 extern "C" void remove_temporaries_and_reraise(int signal_number) {
   if (g_deferring.load()) {
@@ -50,6 +51,9 @@ extern "C" void remove_temporaries_and_reraise(int signal_number) {
 }
 
 void install_handlers() {
+  if (g_host_signals.load()) {
+    return;
+  }
   for (const int s : {SIGINT, SIGTERM, SIGHUP}) {
     if (std::signal(s, remove_temporaries_and_reraise) == SIG_IGN) {
       std::signal(s, SIG_IGN);  // keep an inherited "ignore" (e.g. nohup)
@@ -81,6 +85,10 @@ std::filesystem::path temporary_name(const std::filesystem::path& target) {
 }
 
 }  // namespace
+
+void leave_signals_to_host() {
+  g_host_signals.store(true);
+}
 
 RemovedOnSignal::RemovedOnSignal(const std::filesystem::path& path) {
   std::call_once(g_handlers_installed, install_handlers);

@@ -1,5 +1,6 @@
 #pragma once
-// Options shared by `gfield build` and `gfield batch` (the asset pipeline's knobs).
+// The command-line options of the asset pipeline, shared by `gfield build`, `batch` and `assets`
+// (what they mean and their checks: asset_arguments.hpp).
 
 #include <CLI/CLI.hpp>
 
@@ -8,38 +9,10 @@
 #include <memory>
 #include <string>
 
-#include "preprocess/asset_build.hpp"
+#include "preprocess/asset_arguments.hpp"
 #include "preprocess/cli/path_options.hpp"
 
 namespace gfield {
-
-struct AssetArguments {
-  std::string size = "auto";
-  double max_image_error = kDefaultMaxMeanError;
-  int samples = 24;
-  int layers = kAutoLayers;
-  bool half = false;  ///< the default; the flag exists for symmetry with --float
-  bool full = false;
-  size_t verify_rays = 100000;
-  std::string method = "auto";
-  std::string components = "all";
-  bool allow_outside_paths = false;
-};
-
-/// The image size of --size: "auto" (kAutoImageSize) or texels per side. False for other words.
-inline bool image_size_from_text(const std::string& text, int& size) {
-  if (text == "auto") {
-    size = kAutoImageSize;
-    return true;
-  }
-  size_t end = 0;
-  try {
-    size = std::stoi(text, &end);
-  } catch (const std::exception&) {
-    return false;
-  }
-  return end == text.size() && size >= kMinImageSize && size <= kMaxImageSize;
-}
 
 /// --size and --max-image-error of `gfield image`, `build` and `batch`.
 inline void add_image_size_options(CLI::App* cmd, std::string& size, double& max_image_error) {
@@ -50,15 +23,7 @@ inline void add_image_size_options(CLI::App* cmd, std::string& size, double& max
                       std::to_string(kMaxImageSize) + "), or auto: " + sizes +
                       " where the smaller one's\nmean mesh -> image distance exceeds "
                       "--max-image-error")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            int n = 0;
-            return image_size_from_text(text, n)
-                       ? std::string()
-                       : "expected auto or texels per side in [" + std::to_string(kMinImageSize) +
-                             ", " + std::to_string(kMaxImageSize) + "], got " + text;
-          },
-          "auto|N"))
+      ->check(CLI::Validator([](std::string& text) { return image_size_problem(text); }, "auto|N"))
       ->capture_default_str();
   cmd->add_option("--max-image-error", max_image_error,
                   "--size auto: the mean mesh -> image distance to reach, percent of the mesh's "
@@ -71,9 +36,7 @@ inline void add_image_size_options(CLI::App* cmd, std::string& size, double& max
               value = std::stod(text, &end);
             } catch (const std::exception&) {
             }
-            return end == text.size() && std::isfinite(value) && value > 0.0
-                       ? std::string()
-                       : "expected a positive percentage, got " + text;
+            return max_image_error_problem(end == text.size() ? value : std::nan(""), text);
           },
           "PERCENT"))
       ->capture_default_str();
@@ -109,23 +72,6 @@ inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArgument
       ->check(CLI::IsMember({"all", "largest"}))
       ->capture_default_str();
   add_outside_paths_option(cmd, args->allow_outside_paths);
-}
-
-inline AssetOptions asset_options(const AssetArguments& args) {
-  AssetOptions options;
-  image_size_from_text(args.size, options.image.size);  // checked by --size's validator
-  options.image.max_mean_error = args.max_image_error;
-  options.image.method = args.method == "orbifold" ? ParameterizationMethod::kOrbifold
-                         : args.method == "square" ? ParameterizationMethod::kSquare
-                                                   : ParameterizationMethod::kAuto;
-  options.image.components =
-      args.components == "largest" ? ComponentSelection::kLargest : ComponentSelection::kAll;
-  options.samples_per_side = args.samples;
-  options.field_layers = args.layers;
-  options.field_precision = args.full ? ExrPrecision::kFloat : ExrPrecision::kHalf;
-  options.verify_rays = args.verify_rays;
-  options.outside_paths = outside_paths(args.allow_outside_paths);
-  return options;
 }
 
 /// One line: what an asset build produced and how accurate it is.

@@ -6,7 +6,6 @@
 #include <filesystem>
 
 #include "gfield/printable.hpp"
-#include "preprocess/asset_staging.hpp"
 #include "preprocess/cli/asset_options.hpp"
 #include "preprocess/cli/commands.hpp"
 #include "preprocess/thread_limit.hpp"
@@ -39,22 +38,16 @@ void add_build_command(CLI::App& app) {
     const ThreadLimit limit(*threads);
     AssetOptions options = asset_options(*args);
     options.part = *part;
-    BuildInputs inputs;
+    nlohmann::json report;
+    size_t stale = 0;
     std::string error;
-    if (!asset_build_inputs(*mesh, options, inputs, error)) {
-      throw CommandError(error);
-    }
-    const std::filesystem::path dir = std::filesystem::path(*name).parent_path();
-    std::error_code ec;
-    if (!dir.empty()) {
-      std::filesystem::create_directories(dir, ec);
-    }
-    if (const size_t stale = remove_stale_staging(dir.empty() ? "." : dir.string()); stale > 0) {
+    const bool built = build_asset_at(*mesh, *name, options, report, stale, error);
+    if (stale > 0) {
+      const std::filesystem::path dir = std::filesystem::path(*name).parent_path();
       std::printf("removed %zu build folders of killed builds in %s\n", stale,
                   dir.empty() ? "." : dir.c_str());
     }
-    nlohmann::json report;
-    if (!build_asset(*mesh, *name, options, inputs, report, error)) {
+    if (!built) {
       throw CommandError(error);
     }
     print_warnings(report["warnings"].get<std::vector<std::string>>());
@@ -62,7 +55,7 @@ void add_build_command(CLI::App& app) {
         "%s: %s\nwrote %s.{gimage.exr,gimage.obj,gfield.exr,report.json} in %.2f s "
         "(build %s)\n",
         printable(*mesh).c_str(), asset_summary(report).c_str(), printable(*name).c_str(),
-        report["seconds"].get<double>(), inputs.build_id.c_str());
+        report["seconds"].get<double>(), report["build_id"].get<std::string>().c_str());
   });
 }
 

@@ -5,29 +5,13 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "geometry/mesh_appearance.hpp"
-#include "geometry/mesh_io.hpp"
 #include "gfield/printable.hpp"
 #include "preprocess/cli/commands.hpp"
 #include "preprocess/cli/path_options.hpp"
-#include "preprocess/topology.hpp"
+#include "preprocess/mesh_info.hpp"
 
 namespace gfield {
 namespace {
-
-/// What the mesh carries besides its shape.
-nlohmann::json appearance_to_json(const MeshAppearance& a) {
-  nlohmann::json textures = nlohmann::json::array();
-  for (const MeshTexture& t : a.textures) {
-    textures.push_back(
-        {{"name", printable(t.name)}, {"width", t.image.width}, {"height", t.image.height}});
-  }
-  return {{"texture_coordinates", !a.corner_uv.empty()},
-          {"vertex_colors", !a.vertex_color.empty()},
-          {"materials", a.materials.size()},
-          {"textures", textures},
-          {"base_color", carries_base_color(a)}};
-}
 
 std::string appearance_text(const nlohmann::json& j) {
   if (!j["base_color"].get<bool>() && !j["texture_coordinates"].get<bool>()) {
@@ -61,34 +45,24 @@ void add_info_command(CLI::App& app) {
   cmd->add_flag("--json", *as_json, "print the report as JSON on stdout");
   add_outside_paths_option(cmd, *allow_outside);
   cmd->callback([mesh_path, part, as_json, allow_outside] {
-    TriangleMesh mesh;
-    MeshAppearance appearance;
-    MeshLoadStats stats;
+    MeshInfo info;
     std::vector<std::string> warnings;
     std::string error;
-    // The textures' sizes are reported, not their pixels: their headers are read, not decoded.
-    const MeshSource source{*mesh_path, *part, outside_paths(*allow_outside), false};
-    if (!load_mesh(source, mesh, &appearance, warnings, error, &stats)) {
+    if (!read_mesh_info(MeshSource{*mesh_path, *part, outside_paths(*allow_outside)}, info,
+                        warnings, error)) {
       throw CommandError(error);
     }
     print_warnings(warnings);
-    const TopologyReport report = analyze_topology(mesh);
-    const nlohmann::json surface = appearance_to_json(appearance);
     if (*as_json) {
-      nlohmann::json j = topology_to_json(report);
-      j["file"] = printable(*mesh_path);
-      j["polygons"] = stats.polygons;
-      j["triangulated_polygons"] = stats.triangulated;
-      j["appearance"] = surface;
-      std::printf("%s\n", j.dump(2).c_str());
+      std::printf("%s\n", mesh_info_to_json(info, *mesh_path).dump(2).c_str());
     } else {
       std::printf("mesh               %s\n", printable(*mesh_path).c_str());
-      if (stats.triangulated > 0) {
+      if (info.stats.triangulated > 0) {
         std::printf("polygons           %zu (%zu with more than 3 corners, triangulated)\n",
-                    stats.polygons, stats.triangulated);
+                    info.stats.polygons, info.stats.triangulated);
       }
-      std::printf("%s", topology_to_text(report).c_str());
-      std::printf("appearance         %s\n", appearance_text(surface).c_str());
+      std::printf("%s", topology_to_text(info.topology).c_str());
+      std::printf("appearance         %s\n", appearance_text(info.appearance).c_str());
     }
   });
 }

@@ -35,18 +35,6 @@ struct RenderArgs {
   bool allow_outside_paths = false;
 };
 
-std::string human_seconds(double s) {
-  char buffer[64];
-  if (s < 120.0) {
-    std::snprintf(buffer, sizeof(buffer), "%.0f s", s);
-  } else if (s < 7200.0) {
-    std::snprintf(buffer, sizeof(buffer), "%.0f min", s / 60.0);
-  } else {
-    std::snprintf(buffer, sizeof(buffer), "%.1f h", s / 3600.0);
-  }
-  return buffer;
-}
-
 void run_render(const RenderArgs& args) {
   const std::string ext = args.output.size() >= 4 ? args.output.substr(args.output.size() - 4) : "";
   if (ext != ".exr" && ext != ".png" && ext != ".EXR" && ext != ".PNG") {
@@ -80,17 +68,8 @@ void run_render(const RenderArgs& args) {
     throw CommandError("--camera " + args.camera + ": " + error);
   const int width = options.width > 0 ? options.width : scene.width;
   const int height = options.height > 0 ? options.height : scene.height;
-  const RenderBudget budget = estimate_render(width, height, options.samples_per_pixel);
-  if (budget.image_bytes > kMaxImageBytes || budget.camera_samples > kMaxCameraSamples ||
-      width > 65536 || height > 65536) {
-    char message[512];
-    std::snprintf(message, sizeof(message),
-                  ": refusing %dx%d at %d spp: %.3g camera samples (limit %.3g), image %.2f GB "
-                  "(limit %.1f GB), estimated %s on this machine",
-                  width, height, options.samples_per_pixel, budget.camera_samples,
-                  kMaxCameraSamples, budget.image_bytes / 1e9, kMaxImageBytes / 1e9,
-                  human_seconds(budget.estimated_seconds).c_str());
-    throw CommandError(args.scene + message);
+  if (!check_render_budget(width, height, options.samples_per_pixel, error)) {
+    throw CommandError(args.scene + ": " + error);
   }
   ReferenceTracer tracer;
   if (!tracer.build(scene, error))

@@ -3,11 +3,14 @@
 # directory and without the source tree's help: the installed gfield builds assets of an
 # installed mesh, the installed gfield-view finds its shaders beside itself and renders installed
 # example scenes headless with those assets, and an outside CMake project (tests/consumer) finds
-# the package, links gfield::core, loads the field and looks it up.
-# Usage: install_test.sh BUILD_DIR SOURCE_DIR
+# the package, links gfield::core, loads the field and looks it up; with PYTHON, the installed
+# Python module imports from PREFIX/PYTHON_DIR (PYTHONPATH) and looks the field up too.
+# Usage: install_test.sh BUILD_DIR SOURCE_DIR [PYTHON PYTHON_DIR]
 set -euo pipefail
 build=$(cd "$1" && pwd)
 source_dir=$(cd "$2" && pwd)
+python=${3:-}
+python_dir=${4:-}
 work=$(mktemp -d "${TMPDIR:-/tmp}/gfield-install-test.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 prefix="$work/prefix"
@@ -72,4 +75,20 @@ cmake -S "$source_dir/tests/consumer" -B consumer -G Ninja -DCMAKE_PREFIX_PATH="
   -DCMAKE_BUILD_TYPE=Release > consumer-configure.log
 cmake --build consumer > consumer-build.log || { cat consumer-build.log; fail "consumer build"; }
 consumer/consumer assets/spot
+
+if [ -n "$python" ]; then
+  step "import gfield from $prefix/$python_dir"
+  [ -f "$prefix/$python_dir/gfield/__init__.pyi" ] || fail "the module's stubs were not installed"
+  PYTHONPATH="$prefix/$python_dir" PYTHONDONTWRITEBYTECODE=1 "$python" -c '
+import sys
+import numpy as np
+import gfield
+assert gfield.__file__.startswith(sys.argv[1]), gfield.__file__
+field = gfield.GeometryField.load("assets/spot.gfield.exr")
+centre = field.box.mean(axis=0)
+hits = field.lookup([centre + [0, 0, 10]], [[0, 0, -1]])
+assert hits["hit"][0] and np.all(np.abs(hits["normal"][0]) <= 1), hits
+print("the installed module looked up", field)' "$prefix/$python_dir" ||
+    fail "the installed Python module"
+fi
 echo "install_test: ok"

@@ -8,8 +8,15 @@
 
 namespace gfield {
 
+/// Leaves SIGINT, SIGTERM and SIGHUP to the process that loaded the library: RemovedOnSignal and
+/// SignalsDeferred then install no handlers. For a host with signal handling of its own, before
+/// anything is written: the Python module, where Ctrl-C is Python's KeyboardInterrupt and stops a
+/// build through its JobControl, whose files are then removed on the way out.
+void leave_signals_to_host();
+
 /// Registers `path` for removal if SIGINT, SIGTERM or SIGHUP ends the process while this object
-/// lives: files are unlinked first, then folders (removed when empty by then).
+/// lives: files are unlinked first, then folders (removed when empty by then). The handlers are
+/// installed on first use (unless leave_signals_to_host was called), process-wide.
 class RemovedOnSignal {
  public:
   explicit RemovedOnSignal(const std::filesystem::path& path);
