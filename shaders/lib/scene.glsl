@@ -231,19 +231,17 @@ vec3 hit_albedo(int k, vec2 uv) {
   return objects[k].color.rgb * gs_image_albedo(uv);
 }
 
-// The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects, or only over
-// object `only` (>= 0: a ray inside that dielectric meets its surface); `opaque_only` skips
+// The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects (as the reference
+// tracer: a ray inside a dielectric meets what reaches into it too); `opaque_only` skips
 // dielectrics (shadow rays). A mesh object that the ray leaves (self.object) looks itself up only
-// with u_self_reflection (or when it is `only`).
-SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup self, int only) {
+// with u_self_reflection, or when it is the dielectric the ray travels in (`inside`, -1: air).
+SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup self, int inside) {
   SceneHit best = scene_miss();
   best.t = t_max;
-  int first = only >= 0 ? only : 0;
-  int end = only >= 0 ? only + 1 : u_object_count;
-  for (int k = first; k < end; k++) {
+  for (int k = 0; k < u_object_count; k++) {
     if (opaque_only && objects[k].kind.y == MATERIAL_DIELECTRIC) continue;
     bool own = k == self.object && objects[k].kind.x == SHAPE_MESH;
-    if (own && !u_self_reflection && only < 0) continue;
+    if (own && !u_self_reflection && k != inside) continue;
     SceneHit h = intersect_object(k, o, d, 0.0f, best.t, own ? self : no_self_lookup());
     if (h.hit && h.t < best.t) best = h;
   }
