@@ -120,9 +120,10 @@ TEST_F(ExtremeView, AFieldOfViewNarrowerThanFloatResolvesIsRefusedNamingTheFile)
             std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(out));
-  EXPECT_EQ(test::run_cli("render " + file + " --spp 1 -q -o " + out + ".reference.png").exit_code,
-            0)
-      << "the reference tracer renders any field of view";
+  const test::CliRun reference =
+      test::run_cli("render " + file + " --spp 1 -q -o " + out + ".reference.png");
+  EXPECT_EQ(reference.exit_code, 0)
+      << "the reference tracer renders any field of view: " << reference.err;
 }
 
 }  // namespace

@@ -74,10 +74,9 @@ bool load_without_assets(const std::string& name, Scene& scene) {
 }
 
 TEST_F(MeshIntersection, BvhRendersEveryMeshSceneWithinTheReferenceTracersPrecision) {
-  for (const char* name :
-       {"mirror-torus-instances", "textured-mirror", "davis-wyman-color-chart",
-        "hurley-water-glass", "mukai-plate-tilt05-w02", "mukai-plate-tilt05-w10",
-        "mukai-plate-tilt30-w02", "mukai-plate-tilt30-w10"}) {
+  for (const char* name : {"mirror-torus-instances", "textured-mirror", "davis-wyman-color-chart",
+                           "hurley-water-glass", "mukai-plate-tilt05-w02", "mukai-plate-tilt05-w10",
+                           "mukai-plate-tilt30-w02", "mukai-plate-tilt30-w10"}) {
     SCOPED_TRACE(name);
     Scene scene;
     if (!load_without_assets(name, scene))
