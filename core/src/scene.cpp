@@ -797,9 +797,11 @@ glm::vec3 texture_albedo(const Material& material, glm::vec2 uv) {
     case TextureType::kMesh:  // the mesh's own base colour multiplies it (mesh_appearance.hpp)
       return material.color;
     case TextureType::kChecker: {
-      const int cu = int(std::floor(uv.x * material.checker_scale.x));
-      const int cv = int(std::floor(uv.y * material.checker_scale.y));
-      return material.checker_colors[size_t((cu + cv) & 1)];
+      // The squares' parity in double: a scale of 1e10 (a telephoto view of a checker) takes the
+      // square indices beyond int. The products stay float, as the shader's.
+      const double cu = std::floor(uv.x * material.checker_scale.x);
+      const double cv = std::floor(uv.y * material.checker_scale.y);
+      return material.checker_colors[std::fmod(std::fabs(cu + cv), 2.0) == 1.0 ? 1 : 0];
     }
     case TextureType::kColorChart: {
       // ColorChecker Classic, sRGB 8-bit values, rows from the top.
