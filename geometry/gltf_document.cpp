@@ -404,4 +404,20 @@ const nlohmann::json* json_at(const nlohmann::json& object,
   return value;
 }
 
+bool number_at(const nlohmann::json& object, std::initializer_list<const char*> keys,
+               double fallback, double lo, double hi, const char* range, double& value,
+               std::string& what) {
+  const nlohmann::json* v = json_at(object, keys);
+  value = v != nullptr && v->is_number() ? v->get<double>() : fallback;
+  if (!(value >= lo && value <= hi)) {
+    for (const char* key : keys) {
+      what += what.empty() ? "" : ".";
+      what += key;
+    }
+    what += std::string(" must be in ") + range + " (is " + double_text(value) + ")";
+    return false;
+  }
+  return true;
+}
+
 }  // namespace gfield

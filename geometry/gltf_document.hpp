@@ -91,4 +91,11 @@ bool uses_extension(const GltfDocument& document, const char* name);
 const nlohmann::json* json_at(const nlohmann::json& object,
                               std::initializer_list<const char*> keys);
 
+/// The number of `object` at path `keys` (`fallback` when absent) in `value`; false, with `what`
+/// ("KEY.KEY must be in RANGE (is VALUE)") appended, when it lies outside [lo, hi] (`range`: the
+/// interval as the docs write it, e.g. "[0, 1e6]").
+bool number_at(const nlohmann::json& object, std::initializer_list<const char*> keys,
+               double fallback, double lo, double hi, const char* range, double& value,
+               std::string& what);
+
 }  // namespace gfield

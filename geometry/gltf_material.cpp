@@ -12,23 +12,6 @@ namespace {
 
 using nlohmann::json;
 
-/// A number of the material at `keys` (`fallback` when absent), within [lo, hi] (`range` as the
-/// docs write it); the message names the keys.
-bool number_at(const json& object, std::initializer_list<const char*> keys, double fallback,
-               double lo, double hi, const char* range, double& value, std::string& what) {
-  const json* v = json_at(object, keys);
-  value = v != nullptr && v->is_number() ? v->get<double>() : fallback;
-  if (!(value >= lo && value <= hi)) {
-    for (const char* key : keys) {
-      what += what.empty() ? "" : ".";
-      what += key;
-    }
-    what += std::string(" must be in ") + range + " (is " + double_text(value) + ")";
-    return false;
-  }
-  return true;
-}
-
 /// The factors of a glTF material that decide gfield's mapping.
 struct GltfFactors {
   double transmission = 0.0, ior = 1.5, distance = 1e300, thickness = 0.0;

@@ -21,23 +21,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-/// A number of the document at `keys` below `object` (`fallback` when absent), within [lo, hi]
-/// (`range`: the interval as the docs write it, e.g. "[0, 1e6]"); the message names the keys.
-bool number_at(const json& object, std::initializer_list<const char*> keys, double fallback,
-               double lo, double hi, const char* range, double& value, std::string& what) {
-  const json* v = json_at(object, keys);
-  value = v != nullptr && v->is_number() ? v->get<double>() : fallback;
-  if (!(value >= lo && value <= hi)) {
-    for (const char* key : keys) {
-      what += what.empty() ? "" : ".";
-      what += key;
-    }
-    what += std::string(" must be in ") + range + " (is " + double_text(value) + ")";
-    return false;
-  }
-  return true;
-}
-
 /// A node's world matrix (after `placement`) as a Transform; a shear is dropped with a warning.
 bool place(const glm::dmat4& world, const std::string& what_node, Transform& t,
            std::vector<std::string>& warnings, std::string& error) {
