@@ -76,7 +76,8 @@ void add_common_options(CLI::App& app, Arguments& a) {
                  "Headless: draw this second method to the right of the first")
       ->check(CLI::IsMember(method_names()));
   app.add_option("--reference", h.reference,
-                 "Headless: compare with this picture (.exr/.png), print PSNR and SSIM")
+                 "Headless: compare with this picture (.exr/.png), print PSNR and SSIM (against a "
+                 "PNG/JPEG both clamped to [0, 1], as displayed)")
       ->check(CLI::ExistingFile);
   app.add_option("--diff", h.difference,
                  "Headless: write the error heat map against --reference here (.png/.exr)");

@@ -88,7 +88,8 @@ void add_compare_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "compare",
       "Compare two images (EXR, HDR, PNG; linear values, peak 1): PSNR, SSIM, errors.\n"
-      "PSNR = 10 log10(1 / MSE) over the 3 channels; SSIM with an 11x11 Gaussian window.");
+      "PSNR = 10 log10(1 / MSE) over the 3 channels; SSIM with an 11x11 Gaussian window.\n"
+      "Where either is a display picture (PNG, JPEG), both are clamped to [0, 1] first.");
   auto args = std::make_shared<CompareArgs>();
   cmd->add_option("A", args->a, "first image")->required();
   cmd->add_option("B", args->b, "second image (e.g. the reference)")->required();
