@@ -9,7 +9,9 @@
 #   - bench_image_space_refraction: the Davis-Wyman paper's Table 1 (image-space refraction with
 #     1-4 bounces, Wyman 2005, cube map, the geometry field);
 #   - bench_glass --quick: the Mukai paper's Tables 1-3 (vertex-displacement refraction).
-# Each part's wall time is printed as it ends. On a GPU machine run it as
+# Each part's wall time is printed as it ends, and each part's table is in OUT.md.partial as soon
+# as it ends (a run cut short keeps what it finished); the whole run renames it to OUT.md. On a
+# GPU machine run it as
 #   scripts/gpu-bench.sh out/gpu-bench.md 1024
 # Usage: scripts/gpu-bench.sh [OUT.md] [SIZE...]
 set -euo pipefail
@@ -26,8 +28,7 @@ for b in "${benches[@]}"; do
   fi
 done
 mkdir -p "$(dirname "$out")"
-tmp="$out.tmp.$$"
-trap 'rm -f "$tmp"' EXIT
+tmp="$out.partial"
 {
   echo "# gfield runtime benchmarks"
   echo
@@ -50,5 +51,4 @@ part build/bench/bench_runtime_field --frames 3 --depths 1,2,4 "${sizes[@]}"
 part build/bench/bench_image_space_refraction "${sizes[@]}"
 part build/bench/bench_glass --quick
 mv "$tmp" "$out"
-trap - EXIT
 echo "gpu-bench: wrote $out"
