@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds gfield with AddressSanitizer and UndefinedBehaviorSanitizer (gcc, -O1 -g1, benchmarks
 # and the Python module off; cmake -DGFIELD_SANITIZE=ON) in build-asan/ and runs the test suite
-# there but for the Slurm cluster test and the glTF conformance test (docs/reliability.md; an
+# there but for the Slurm cluster test, the glTF conformance test and five heavy end-to-end
+# tests (below; docs/reliability.md; an
 # instrumented Python module would need libasan preloaded into Debian's python3: docs/python.md).
 # Any ASan or UBSan report fails its test; LeakSanitizer reports too, except for the leaks of
 # Mesa's own drivers listed in tests/lsan-mesa.supp (the GL tests); a preloaded shim
@@ -24,9 +25,16 @@ export ASAN_OPTIONS=verify_asan_link_order=0:detect_leaks=1:strict_string_checks
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan-mesa.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd build-asan
-# Every test but the one-node Slurm cluster's (label "cluster") and the glTF conformance test's
-# (label "gltf-tools": the npm tools; see tests/CMakeLists.txt).
-if ! ctest --output-on-failure -j 2 --label-exclude 'cluster|gltf-tools'; then
+# Every test but the one-node Slurm cluster's (label "cluster"), the glTF conformance test's
+# (label "gltf-tools": the npm tools; see tests/CMakeLists.txt) and five end-to-end tests that
+# run, on larger inputs, code the faster tests run under the sanitizers too (every example
+# scene's render, the glTF example's three asset builds, 512^2 and 1024^2 images, a batch of
+# every rebuild, the viewer's refusals of outside paths; docs/reliability.md says what they
+# cost). The release suite runs them all.
+heavy='RenderTest\.ExampleScenesMatchReferenceTracer|ExampleScenes\.GltfExampleBuildsItsAssetsAndRenders'
+heavy+='|GeometryImage\.AutomaticSizeDoublesUntilTheMeanErrorIsReached'
+heavy+='|Batch\.UpToDateByContentNotByFileTimes|ExampleScenes\.ViewerConfinesTheFilesASceneNames'
+if ! ctest --output-on-failure -j 2 --label-exclude 'cluster|gltf-tools' -E "$heavy"; then
   # LeakSanitizer's own stop-the-world tracer crashes ("Tracer caught signal 11",
   # google/sanitizers#1353) when a thread exits during its check at exit: TBB's workers did, and
   # the test programs and `gfield` now join them first (preprocess/worker_threads.hpp). Should it
