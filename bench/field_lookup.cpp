@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
     EmbreeMesh embree;
     GeometryField field;
     if (!embree.build(asset.pm.mesh, error) ||
-        !build_geometry_field(asset.pm, embree, asset.image, n, kAutoLayers, field, error)) {
+        !build_geometry_field(asset.pm, embree, asset.image, n, field, error)) {
       std::fprintf(stderr, "%s: %s\n", file, error.c_str());
       return 1;
     }

@@ -15,6 +15,7 @@ struct AssetArguments {
   std::string size = "auto";
   double max_image_error = kDefaultMaxMeanError;
   int samples = 24;
+  int format = kFieldFormatVersion;  ///< 3, or 2 (layered, with `layers`)
   int layers = kAutoLayers;
   bool half = false;  ///< the default; the flag exists for symmetry with --float
   bool full = false;
@@ -65,8 +66,9 @@ inline AssetOptions asset_options(const AssetArguments& args) {
   options.image.components =
       args.components == "largest" ? ComponentSelection::kLargest : ComponentSelection::kAll;
   options.samples_per_side = args.samples;
-  options.field_layers = args.layers;
-  options.field_precision = args.full ? ExrPrecision::kFloat : ExrPrecision::kHalf;
+  options.field.version = args.format;
+  options.field.layers = args.layers;
+  options.field.precision = args.full ? ExrPrecision::kFloat : ExrPrecision::kHalf;
   options.verify_rays = args.verify_rays;
   options.outside_paths =
       args.allow_outside_paths ? OutsidePaths::kAllowed : OutsidePaths::kRefused;

@@ -24,24 +24,22 @@ nlohmann::json box_to_json(const Box& box) {
 
 nlohmann::json field_file_report_to_json(const FieldFileReport& r) {
   nlohmann::json coverage = nlohmann::json::object();
-  for (int k = 1; k <= kMaxFieldLayers; ++k) {
-    if (layer_coverage(r.build, k) >= 0.0) {
-      coverage[std::to_string(k)] = layer_coverage(r.build, k);
-    }
+  for (int k = 1; k <= kMaxLineHits; ++k) {
+    coverage[std::to_string(k)] = layer_coverage(r.build, k);
   }
-  const int n = r.samples_per_side;
-  const int k = r.build.layers;
-  return {{"samples_per_side", n},
-          {"table_side", sample_count(n)},
-          {"layers", k},
-          {"layers_chosen", r.build.collected > kMaxFieldLayers},
+  return {{"format_version", r.format},
+          {"samples_per_side", r.samples_per_side},
+          {"table_side", sample_count(r.samples_per_side)},
+          {"layers", r.layers},
           {"lines_by_hits", r.build.lines_by_hits},
           {"lines_holding_all_hits_by_layers", coverage},
+          {"line_table",
+           {{"lines", r.table_lines}, {"words", r.line_words}, {"interior_hits", r.interior_hits}}},
           {"gpu_bytes",
            {{"geometry_image", geometry_image_gpu_bytes(r.image_size)},
-            {"geometry_field_8bit", field_gpu_bytes(n, k, 8)},
-            {"geometry_field_16bit", field_gpu_bytes(n, k, 16)},
-            {"geometry_field_float", field_gpu_bytes(n, k, 32)}}},
+            {"geometry_field_8bit", r.gpu_bytes[0]},
+            {"geometry_field_16bit", r.gpu_bytes[1]},
+            {"geometry_field_float", r.gpu_bytes[2]}}},
           {"memory_estimate_bytes", r.memory_estimate},
           {"rays", r.build.rays},
           {"hits", r.build.hits},
@@ -52,32 +50,61 @@ nlohmann::json field_file_report_to_json(const FieldFileReport& r) {
 }
 
 std::string field_layers_summary(const FieldFileReport& r) {
-  const int k = r.build.layers;
-  char line[200];
-  const double coverage = layer_coverage(r.build, k);
-  std::snprintf(line, sizeof(line), "K = %d%s", k,
-                r.build.collected > kMaxFieldLayers ? " (chosen)" : "");
-  std::string text = line;
-  if (coverage >= 0.0) {
-    std::snprintf(line, sizeof(line), ", %.3f%% of the lines hold all their hits",
-                  100.0 * coverage);
-    text += line;
+  char line[240];
+  if (r.format == kFieldFormatVersion) {
+    std::snprintf(line, sizeof(line),
+                  "format 3: up to %d hits per line (%.3f%% of the lines hold all theirs)",
+                  r.layers, 100.0 * layer_coverage(r.build, kMaxLineHits));
+  } else {
+    std::snprintf(line, sizeof(line), "format 2: K = %d (%.3f%% of the lines hold all their hits)",
+                  r.layers, 100.0 * layer_coverage(r.build, r.layers));
   }
+  std::string text = line;
   std::snprintf(line, sizeof(line), ", GPU %.1f MB at 8 bits, %.1f MB at 16 bits (image %.1f MB)",
-                double(field_gpu_bytes(r.samples_per_side, k, 8)) / 1e6,
-                double(field_gpu_bytes(r.samples_per_side, k, 16)) / 1e6,
+                double(r.gpu_bytes[0]) / 1e6, double(r.gpu_bytes[1]) / 1e6,
                 double(geometry_image_gpu_bytes(r.image_size)) / 1e6);
   return text + line;
 }
 
+namespace {
+
+/// The report's figures of the field built (its layout at `format`).
+void describe_field(const GeometryField& field, const FieldFileFormat& format,
+                    FieldFileReport& report) {
+  report.format = format.version;
+  report.table_lines = 0;  // the line table's lines: 1 hit, or 3 and more (two rays each)
+  for (size_t k = 0; k < report.build.lines_by_hits.size(); ++k) {
+    if (k == 1 || k >= 3) {
+      report.table_lines += report.build.lines_by_hits[k] / 2;
+    }
+  }
+  report.line_words = field.lines.size();
+  report.interior_hits = field.interior.size();
+  const int bits[3] = {8, 16, 32};
+  if (format.version == kFieldFormatVersion) {
+    report.layers = field.layers;
+    for (int b = 0; b < 3; ++b) {
+      report.gpu_bytes[size_t(b)] = field_gpu_bytes(field, bits[b]);
+    }
+  } else {
+    report.layers = layered_field_layers(report.build, format.layers);
+    for (int b = 0; b < 3; ++b) {
+      report.gpu_bytes[size_t(b)] =
+          layered_field_gpu_bytes(field.samples_per_side, report.layers, bits[b]);
+    }
+  }
+}
+
+}  // namespace
+
 bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, int samples_per_side,
-                      int layers, ExrPrecision precision, const std::string& output,
+                      const FieldFileFormat& format, const std::string& output,
                       FieldFileReport& report, std::string& error, const JobControl* control) {
   report.samples_per_side = samples_per_side;
   report.image_size = image.size;
-  report.memory_estimate =
-      field_memory_estimate(samples_per_side, layers, precision == ExrPrecision::kHalf);
-  if (!check_field_size(samples_per_side, layers, precision == ExrPrecision::kHalf, error)) {
+  const bool half = format.precision == ExrPrecision::kHalf;
+  report.memory_estimate = field_memory_estimate(samples_per_side, half);
+  if (!check_field_size(samples_per_side, half, error)) {
     error = output + ": " + error;
     return false;
   }
@@ -89,16 +116,21 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
   }
   report.bvh_seconds = watch.seconds();
   GeometryField field;
-  if (!build_geometry_field(pm, embree, image, samples_per_side, layers, field, error,
-                            &report.build, control)) {
+  if (!build_geometry_field(pm, embree, image, samples_per_side, field, error, &report.build,
+                            control)) {
     error = output + ": " + error;
     return false;
   }
   field.source = image.source;
   field.build_id = image.build_id;
+  describe_field(field, format, report);
   watch.restart();
   report_progress(control, "write", 0.0);
-  if (!save_geometry_field(output, field, precision, error)) {
+  const bool written =
+      format.version == kFieldFormatVersion
+          ? save_geometry_field(output, field, format.precision, error)
+          : save_layered_geometry_field(output, field, report.layers, format.precision, error);
+  if (!written) {
     return false;
   }
   report.write_seconds = watch.seconds();
@@ -130,10 +162,13 @@ nlohmann::json asset_options_to_json(const AssetOptions& o) {
   nlohmann::json options = {
       {"image", image_options_to_json(o.image)},
       {"samples_per_side", o.samples_per_side},
-      {"field_layers",
-       o.field_layers == kAutoLayers ? nlohmann::json("auto") : nlohmann::json(o.field_layers)},
-      {"field_precision", o.field_precision == ExrPrecision::kHalf ? "half" : "float"},
+      {"field_format", o.field.version},
+      {"field_precision", o.field.precision == ExrPrecision::kHalf ? "half" : "float"},
       {"verify_rays", o.verify_rays}};
+  if (o.field.version != kFieldFormatVersion) {
+    options["field_layers"] =
+        o.field.layers == kAutoLayers ? nlohmann::json("auto") : nlohmann::json(o.field.layers);
+  }
   if (!o.part.empty()) {
     options["mesh"] = printable(o.part);
   }
@@ -232,15 +267,14 @@ bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
   }
   report_progress(options.control, "image", 1.0);
   FieldFileReport field_report;
-  if (!write_field_file(image, pm, options.samples_per_side, options.field_layers,
-                        options.field_precision, staged.field, field_report, error,
-                        options.control) ||
+  if (!write_field_file(image, pm, options.samples_per_side, options.field, staged.field,
+                        field_report, error, options.control) ||
       interrupted(options.control, mesh_path, error)) {
     return false;
   }
   report["geometry_field"] = field_file_report_to_json(field_report);
   report["geometry_field"]["precision"] =
-      options.field_precision == ExrPrecision::kHalf ? "half" : "float";
+      options.field.precision == ExrPrecision::kHalf ? "half" : "float";
 
   if (options.verify_rays > 0) {
     VerifyOptions verify;
@@ -272,10 +306,16 @@ bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
 bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
                  const BuildInputs& inputs, nlohmann::json& report, std::string& error) {
   Stopwatch watch;
-  if (options.samples_per_side < kMinSamplesPerSide ||
-      options.samples_per_side > kMaxSamplesPerSide || options.field_layers < kAutoLayers ||
-      options.field_layers > kMaxFieldLayers) {
-    return check_field_size(options.samples_per_side, options.field_layers, true, error);
+  if (options.field.version != kFieldFormatVersion &&
+      (options.field.version != kLayeredFieldVersion || options.field.layers < kAutoLayers ||
+       options.field.layers > kMaxFieldLayers)) {
+    error = "field format " + std::to_string(options.field.version) + " with " +
+            std::to_string(options.field.layers) + " layers: expected format 3, or 2 with 1 to " +
+            std::to_string(kMaxFieldLayers) + " layers";
+    return false;
+  }
+  if (!check_field_size(options.samples_per_side, true, error)) {
+    return false;
   }
   TriangleMesh mesh;
   MeshAppearance appearance;

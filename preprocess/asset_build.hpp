@@ -3,6 +3,7 @@
 // NAME.report.json (the `gfield field`, `gfield build` and `gfield batch` commands). The files of
 // one asset: asset_files.hpp.
 
+#include <array>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -18,9 +19,16 @@ namespace gfield {
 /// What writing one field file took.
 struct FieldFileReport {
   int samples_per_side = 0;
-  int image_size = 0;          ///< n of the geometry image (for the GPU bytes)
+  int image_size = 0;                ///< n of the geometry image (for the GPU bytes)
+  int format = kFieldFormatVersion;  ///< 3 (compact) or 2 (layered)
+  /// K: the most hits a line holds (format 3), the layers written (format 2)
+  int layers = 0;
   size_t memory_estimate = 0;  ///< bytes (field_memory_estimate)
   FieldBuildStats build;       ///< the casts (seconds exclude the BVH and the write)
+  size_t table_lines = 0;      ///< lines in the line table (1 hit, or 3 and more)
+  size_t line_words = 0;       ///< words of the line table
+  size_t interior_hits = 0;
+  std::array<size_t, 3> gpu_bytes{};  ///< the field on the GPU at 8, 16 and 32 bits
   double bvh_seconds = 0.0;
   double write_seconds = 0.0;
   size_t file_bytes = 0;
@@ -28,18 +36,26 @@ struct FieldFileReport {
 
 nlohmann::json field_file_report_to_json(const FieldFileReport& report);
 
-/// Casts the field of `pm` (the parameterised mesh of `image`) with N samples per side and
-/// `layers` layers (kAutoLayers: chosen) in the image's box and writes it to `output`
-/// (atomically). The field's source and build id are the image's. False with an error "FILE:
-/// problem" (N or K out of range or too large for memory included; "FILE: interrupted" when
-/// `control` asked to stop; it hears the stages "field" and "write").
+/// How a field file is written: the format (kFieldFormatVersion, or kLayeredFieldVersion with
+/// `layers` K, kAutoLayers: chosen) and the precision of its uvs.
+struct FieldFileFormat {
+  int version = kFieldFormatVersion;
+  int layers = kAutoLayers;
+  ExrPrecision precision = ExrPrecision::kHalf;
+};
+
+/// Casts the field of `pm` (the parameterised mesh of `image`) with N samples per side in the
+/// image's box and writes it to `output` (atomically) in `format`. The field's source and build
+/// id are the image's. False with an error "FILE: problem" (N or K out of range or too large
+/// for memory included; "FILE: interrupted" when `control` asked to stop; it hears the stages
+/// "field" and "write").
 bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, int samples_per_side,
-                      int layers, ExrPrecision precision, const std::string& output,
+                      const FieldFileFormat& format, const std::string& output,
                       FieldFileReport& report, std::string& error,
                       const JobControl* control = nullptr);
 
-/// "K = 2 (chosen: 99.95% of the lines hold all their hits), GPU 47.8 MB at 8 bits": the
-/// layers and GPU bytes of a field report, one line.
+/// "format 3: at most 8 hits per line (99.98% of the lines hold all theirs), GPU 21.3 MB at 8
+/// bits, 41.1 MB at 16 bits (image 10.5 MB)": the layout and GPU bytes of a field, one line.
 std::string field_layers_summary(const FieldFileReport& report);
 
 struct AssetOptions {
@@ -47,8 +63,7 @@ struct AssetOptions {
   std::string part;
   GeometryImageOptions image;  ///< size 512 by default
   int samples_per_side = 24;
-  int field_layers = kAutoLayers;
-  ExrPrecision field_precision = ExrPrecision::kHalf;
+  FieldFileFormat field;        ///< format 3 (compact) by default
   size_t verify_rays = 100000;  ///< rays per family of the report's accuracy (0: skip)
   /// Files the mesh names outside its folder (MeshSource::outside_paths). Not hashed: it decides
   /// what is read, not what is made of it.

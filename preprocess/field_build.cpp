@@ -9,29 +9,23 @@
 #include <fstream>
 #include <vector>
 
+#include "gfield/field_lines.hpp"
 #include "gfield/stopwatch.hpp"
 #include "preprocess/field_casts.hpp"
 
 namespace gfield {
 namespace {
 
-/// Hits looked for per line at most (kAutoLayers: one more than can be stored, to count the
-/// lines with more hits than layers).
-constexpr int kMaxCollected = kMaxFieldLayers + 1;
-
-/// Hits collected per line from its entry when each ray needs `capacity`: 2 capacity + 1, so that
-/// a line holding up to 2 capacity hits is complete (its entry ray's first `capacity` hits and
-/// its exit ray's are all among them) and needs no traversal from its exit. Measured for K = 2
-/// (`bench_field_build`, spot / homer / bunny, build over the bare first-hit cast): 3 hits per
-/// line 1.49 / 1.46 / 1.43, 4 hits 1.56 / 1.56 / 1.52, 5 hits 1.39 / 1.42 / 1.42, 7 hits 1.41 /
-/// 1.43 / 1.50: lines of two parts (4 hits) are common, and a second traversal costs more than
-/// a longer first one.
-int line_capacity(int capacity) {
-  return std::min(kMaxHitList, 2 * capacity + 1);
-}
+/// Hits collected per line from its lower sample: a line of fewer is complete in one traversal
+/// (lines of two solid parts, 4 hits, are common; a second traversal costs more than a longer
+/// first one). A line that fills the list is traversed again from its higher sample for the
+/// kEndHits nearest there: with the list's first kEndHits they are all its hits when it holds
+/// kMaxLineHits, and its 4 nearest each end when it holds more.
+constexpr int kLineCapacity = kMaxLineHits;
+constexpr int kEndHits = kMaxLineHits / 2;
 
 /// Rays by number of hits found (FieldBuildStats::lines_by_hits).
-using Histogram = std::array<size_t, kMaxFieldLayers + 2>;
+using Histogram = std::array<size_t, kMaxLineHits + 2>;
 
 /// A value per thread, found through a thread-local key (local() is called once per packet).
 template <class T>
@@ -85,22 +79,26 @@ std::vector<uint8_t> triangles_in_covered_patches(const GeometryImage& image,
   return inside;
 }
 
-/// Writes the hits of the casts into the layers of the table.
-struct TableWriter {
+/// The hits of a line: all of a complete one; kMaxLineHits when the traversal from its higher
+/// sample meets the list's last kEndHits (its kEndHits-th hit there is the list's next), more
+/// (kMaxLineHits + 1) when they part.
+int hit_count(const LineCast& line) {
+  if (line.complete) {
+    return line.hits.count;
+  }
+  const float t_from_low = 1.0f - line.reverse.t[size_t(kEndHits - 1)];
+  return std::abs(t_from_low - line.hits.t[size_t(kEndHits)]) <= kSameCrossing ? kMaxLineHits
+                                                                               : kMaxLineHits + 1;
+}
+
+/// Writes the hits of the casts into the compact field.
+struct LineWriter {
   const GeometryImage& image;
   std::vector<uint8_t> patches;   ///< covered_patches(image)
   const glm::vec2* corner_uv;     ///< 3 per triangle of the parameterised mesh
   std::vector<uint8_t> inside;    ///< triangles_in_covered_patches(image, patches, corner uvs)
   std::vector<glm::vec3> points;  ///< sample_points(box, n)
-  int n;
-  int stored;    ///< layers written
-  int capacity;  ///< hits looked for per ray
-  glm::vec2* table;
-
-  glm::vec2& at(int layer, int entry, int exit) const {
-    const size_t side = points.size();
-    return table[(size_t(layer) * side + size_t(entry)) * side + size_t(exit)];
-  }
+  GeometryField& field;
 
   /// The uv of hit `k` of `list` on the ray from `from` to `to`: the hit triangle's corner uvs
   /// interpolated with the barycentrics, clamped to [0,1]^2 (corner uvs of faces across the
@@ -120,97 +118,70 @@ struct TableWriter {
     return snap_to_covered(image, patches, value, hit);
   }
 
-  /// K = 1: stores the first hits of the rays from `entry` to exits first..first+7 (past the
-  /// row's end: none) and counts them into `histogram` by hits found.
-  void store_first(int entry, int first, const std::array<HitList, 8>& lanes, bool cast,
-                   Histogram& histogram) const {
-    const int per_face = n * n;
-    const int valid_lanes = std::min(8, int(points.size()) - first);
-    for (int lane = 0; lane < valid_lanes; ++lane) {
-      const int exit = first + lane;
-      const bool ray = cast && exit / per_face != entry / per_face;
-      const bool hit = ray && lanes[size_t(lane)].count > 0;
-      histogram[size_t(hit)] += size_t(ray);
-      at(0, entry, exit) = hit ? hit_uv(lanes[size_t(lane)], 0, entry, exit)
-                               : glm::vec2(ray ? kFieldMiss : kFieldNoRay);
-    }
-  }
+  /// The hits of the line low -> high that the field stores, from `low`: all of a complete line;
+  /// of a longer one the kEndHits nearest each end.
+  LineHits stored_hits(int low, int high, const LineCast& line) const;
 
-  /// K > 1: stores the `count` lines entry -> first.., both their rays, and counts the rays into
-  /// `histogram` by hits found.
-  void store_lines(int entry, int first, int count, const std::array<LineHits, 8>& lines,
-                   Histogram& histogram) const {
+  /// Stores the `count` lines entry -> first.. and counts their rays into `histogram` by hits.
+  void store_lines(int entry, int first, int count, const std::array<LineCast, 8>& lines,
+                   Histogram& histogram, std::vector<TableLine>& table_lines) const {
     for (int lane = 0; lane < count; ++lane) {
-      const LineHits& line = lines[size_t(lane)];
-      const int exit = first + lane;
+      const LineCast& line = lines[size_t(lane)];
       if (!line.ray) {
-        for (int layer = 0; layer < stored; ++layer) {
-          at(layer, entry, exit) = at(layer, exit, entry) = glm::vec2(kFieldNoRay);
-        }
-      } else if (line.complete) {
-        store_line(entry, exit, line.hits, histogram);
-      } else {
-        store_ray(entry, exit, line.hits);
-        store_ray(exit, entry, line.reverse);
-        histogram[size_t(capacity)] += 2;  // a full list: at least `capacity` hits each way
+        continue;
       }
-    }
-  }
-
-  /// The line entry <-> exit whose hits are all in `list` (t along entry -> exit): each hit's uv
-  /// once, into the layers of both rays.
-  void store_line(int entry, int exit, const HitList& list, Histogram& histogram) const {
-    const int count = list.count;
-    std::array<glm::vec2, kMaxHitList> uv;
-    for (int k = 0; k < count; ++k) {
-      if (k < stored || k >= count - stored) {
-        uv[size_t(k)] = hit_uv(list, k, entry, exit);
-      }
-    }
-    for (int layer = 0; layer < stored; ++layer) {
-      const bool hit = layer < count;
-      at(layer, entry, exit) = hit ? uv[size_t(layer)] : glm::vec2(kFieldMiss);
-      at(layer, exit, entry) = hit ? uv[size_t(count - 1 - layer)] : glm::vec2(kFieldMiss);
-    }
-    histogram[size_t(std::min(count, capacity))] += 2;
-  }
-
-  /// The ray from -> to whose nearest hits are `list` (t along from -> to; more may follow).
-  void store_ray(int from, int to, const HitList& list) const {
-    for (int layer = 0; layer < stored; ++layer) {
-      at(layer, from, to) =
-          layer < list.count ? hit_uv(list, layer, from, to) : glm::vec2(kFieldMiss);
+      const int exit = first + lane;
+      store_line(field, entry, exit, stored_hits(entry, exit, line), table_lines);
+      histogram[size_t(hit_count(line))] += 2;
     }
   }
 };
 
-/// K for kAutoLayers: the smallest whose layers hold every hit of kLayerCoverage of the lines.
-int choose_layers(const FieldBuildStats& stats) {
+LineHits LineWriter::stored_hits(int low, int high, const LineCast& line) const {
+  LineHits hits;
+  if (line.complete) {
+    for (int k = 0; k < line.hits.count; ++k) {
+      hits.uv[size_t(k)] = hit_uv(line.hits, k, low, high);
+    }
+    hits.count = line.hits.count;
+    return hits;
+  }
+  for (int k = 0; k < kEndHits; ++k) {
+    hits.uv[size_t(k)] = hit_uv(line.hits, k, low, high);
+    hits.uv[size_t(kMaxLineHits - 1 - k)] = hit_uv(line.reverse, k, high, low);
+  }
+  hits.count = kMaxLineHits;
+  return hits;
+}
+
+}  // namespace
+
+size_t field_memory_estimate(int samples_per_side, bool half_precision) {
+  const size_t n2 = size_t(samples_per_side) * size_t(samples_per_side);
+  return 6 * n2 * 5 * n2 * (sizeof(glm::vec2) + (half_precision ? 4 : 8));
+}
+
+double layer_coverage(const FieldBuildStats& stats, int layers) {
+  if (stats.rays == 0) {
+    return -1.0;
+  }
+  size_t held = 0;
+  for (int h = 0; h <= std::min(layers, kMaxLineHits); ++h) {
+    held += stats.lines_by_hits[size_t(h)];
+  }
+  return double(held) / double(stats.rays);
+}
+
+int layered_field_layers(const FieldBuildStats& stats, int requested) {
+  if (requested != kAutoLayers) {
+    return requested;
+  }
   for (int k = 1; k < kMaxFieldLayers; ++k) {
     if (layer_coverage(stats, k) >= kLayerCoverage) {
       return k;
     }
   }
   return kMaxFieldLayers;
-}
-
-}  // namespace
-
-size_t field_memory_estimate(int samples_per_side, int layers, bool half_precision) {
-  const size_t side = size_t(sample_count(samples_per_side));
-  const size_t stored = size_t(layers == kAutoLayers ? kMaxFieldLayers : layers);
-  return side * side * stored * (sizeof(glm::vec2) + (half_precision ? 4 : 8));
-}
-
-double layer_coverage(const FieldBuildStats& stats, int layers) {
-  if (stats.collected <= layers || stats.rays == 0) {
-    return -1.0;
-  }
-  size_t held = 0;
-  for (int h = 0; h <= layers; ++h) {
-    held += stats.lines_by_hits[size_t(h)];
-  }
-  return double(held) / double(stats.rays);
 }
 
 size_t available_memory() {
@@ -226,26 +197,19 @@ size_t available_memory() {
   return 0;
 }
 
-bool check_field_size(int samples_per_side, int layers, bool half_precision, std::string& error) {
+bool check_field_size(int samples_per_side, bool half_precision, std::string& error) {
   if (samples_per_side < kMinSamplesPerSide || samples_per_side > kMaxSamplesPerSide) {
     error = "samples per side " + std::to_string(samples_per_side) + " out of range [" +
             std::to_string(kMinSamplesPerSide) + ", " + std::to_string(kMaxSamplesPerSide) + "]";
     return false;
   }
-  if (layers < kAutoLayers || layers > kMaxFieldLayers) {
-    error = "layers " + std::to_string(layers) + " out of range [1, " +
-            std::to_string(kMaxFieldLayers) + "]";
-    return false;
-  }
-  const size_t needed = field_memory_estimate(samples_per_side, layers, half_precision);
+  const size_t needed = field_memory_estimate(samples_per_side, half_precision);
   const size_t available = available_memory();
   if (available != 0 && needed > available) {
     char text[160];
     std::snprintf(text, sizeof(text),
-                  "a field with N = %d and %d layers needs about %.0f MB but only %.0f MB of "
-                  "memory is available",
-                  samples_per_side, layers == kAutoLayers ? kMaxFieldLayers : layers,
-                  double(needed) / 1e6, double(available) / 1e6);
+                  "a field with N = %d needs about %.0f MB but only %.0f MB of memory is available",
+                  samples_per_side, double(needed) / 1e6, double(available) / 1e6);
     error = text;
     return false;
   }
@@ -302,9 +266,8 @@ glm::vec2 snap_to_covered(const GeometryImage& image, const std::vector<uint8_t>
 }
 
 bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
-                          const GeometryImage& image, int samples_per_side, int layers,
-                          GeometryField& field, std::string& error, FieldBuildStats* stats,
-                          const JobControl* control) {
+                          const GeometryImage& image, int samples_per_side, GeometryField& field,
+                          std::string& error, FieldBuildStats* stats, const JobControl* control) {
   Stopwatch watch;
   if (image.size < 2 || image.coverage.size() != size_t(image.size) * size_t(image.size) ||
       image.position.size() != image.coverage.size()) {
@@ -312,11 +275,9 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
     return false;
   }
   const int n = samples_per_side;
-  if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide || layers < kAutoLayers ||
-      layers > kMaxFieldLayers) {
-    error = "samples per side " + std::to_string(n) + " or layers " + std::to_string(layers) +
-            " out of range [" + std::to_string(kMinSamplesPerSide) + ", " +
-            std::to_string(kMaxSamplesPerSide) + "], [1, " + std::to_string(kMaxFieldLayers) + "]";
+  if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide) {
+    error = "samples per side " + std::to_string(n) + " out of range [" +
+            std::to_string(kMinSamplesPerSide) + ", " + std::to_string(kMaxSamplesPerSide) + "]";
     return false;
   }
   if (pm.corner_uv.size() != 3 * pm.mesh.triangles.size()) {
@@ -324,52 +285,40 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
             " corner uvs for " + std::to_string(pm.mesh.triangles.size()) + " triangles";
     return false;
   }
-  const size_t side = size_t(sample_count(n));
-  const size_t count = side * side;
-  const int stored = layers == kAutoLayers ? kMaxFieldLayers : layers;
-  const int capacity = layers == kAutoLayers ? kMaxCollected : layers;
   field.samples_per_side = n;
-  field.layers = stored;
   field.box = image.box;
-  field.uv.clear();  // a field built before keeps its memory, but its values are not copied
-  field.uv.resize(count * size_t(stored));  // every entry is written below, row by row
-
+  reset_field_tables(field);  // every entry is written below, line by line
   std::vector<uint8_t> patches = covered_patches(image);
   std::vector<uint8_t> inside = triangles_in_covered_patches(image, patches, pm.corner_uv);
-  const TableWriter writer{.image = image,
-                           .patches = std::move(patches),
-                           .corner_uv = pm.corner_uv.data(),
-                           .inside = std::move(inside),
-                           .points = sample_points(image.box, n),
-                           .n = n,
-                           .stored = stored,
-                           .capacity = capacity,
-                           .table = field.uv.data()};
+  const LineWriter writer{.image = image,
+                          .patches = std::move(patches),
+                          .corner_uv = pm.corner_uv.data(),
+                          .inside = std::move(inside),
+                          .points = sample_points(image.box, n),
+                          .field = field};
   PerThread<Histogram> histograms(Histogram{});
-  if (capacity == 1) {
-    cast_first_hits(
-        embree, writer.points, n,
-        [&](int entry, int first, const std::array<HitList, 8>& lanes, bool cast) {
-          writer.store_first(entry, first, lanes, cast, histograms.local());
-        },
-        control);
-  } else {
-    cast_lines(
-        embree, writer.points, n, line_capacity(capacity), stored,
-        [&](int entry, int first, int count, const std::array<LineHits, 8>& lines) {
-          writer.store_lines(entry, first, count, lines, histograms.local());
-        },
-        control);
-  }
+  PerThread<std::vector<TableLine>> table_lines;
+  cast_lines(
+      embree, writer.points, n, kLineCapacity, kEndHits,
+      [&](int entry, int first, int count, const std::array<LineCast, 8>& lines) {
+        writer.store_lines(entry, first, count, lines, histograms.local(), table_lines.local());
+      },
+      control);
   if (stop_requested(control)) {
     error = kInterrupted;
     return false;
   }
+  std::vector<TableLine> all_table_lines;
+  for (std::vector<TableLine>& part : table_lines) {
+    all_table_lines.insert(all_table_lines.end(), part.begin(), part.end());
+    std::vector<TableLine>().swap(part);
+  }
+  pack_line_table(all_table_lines, field);
   report_progress(control, "field", 1.0);
 
   FieldBuildStats s;
-  s.rays = count - 6 * size_t(n * n) * size_t(n * n);
-  s.collected = capacity;
+  const size_t side = size_t(sample_count(n));
+  s.rays = side * side - 6 * size_t(n * n) * size_t(n * n);
   s.lines_by_hits = histograms.combine([](const Histogram& a, const Histogram& b) {
     Histogram sum;
     for (size_t h = 0; h < sum.size(); ++h) {
@@ -378,10 +327,6 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
     return sum;
   });
   s.hits = s.rays - s.lines_by_hits[0];
-  s.layers = layers == kAutoLayers ? choose_layers(s) : layers;
-  field.layers = s.layers;
-  field.uv.resize(count * size_t(s.layers));
-  field.uv.shrink_to_fit();  // the layers beyond the chosen K
   s.seconds = watch.seconds();
   if (stats != nullptr) {
     *stats = s;
@@ -389,10 +334,10 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
   return true;
 }
 
-size_t cast_field_rays(const EmbreeMesh& embree, const Box& box, int samples_per_side, int layers) {
+size_t cast_field_rays(const EmbreeMesh& embree, const Box& box, int samples_per_side, bool lines) {
   const std::vector<glm::vec3> points = sample_points(box, samples_per_side);
   PerThread<size_t> hits(size_t(0));
-  if (layers <= 1) {
+  if (!lines) {
     cast_first_hits(embree, points, samples_per_side,
                     [&](int, int, const std::array<HitList, 8>& lanes, bool) {
                       for (const HitList& list : lanes) {
@@ -400,12 +345,10 @@ size_t cast_field_rays(const EmbreeMesh& embree, const Box& box, int samples_per
                       }
                     });
   } else {
-    const int capacity = std::min(layers, kMaxCollected);
-    cast_lines(embree, points, samples_per_side, line_capacity(capacity),
-               std::min(capacity, kMaxFieldLayers),
-               [&](int, int, int count, const std::array<LineHits, 8>& lines) {
+    cast_lines(embree, points, samples_per_side, kLineCapacity, kEndHits,
+               [&](int, int, int count, const std::array<LineCast, 8>& cast) {
                  for (int lane = 0; lane < count; ++lane) {
-                   const LineHits& line = lines[size_t(lane)];
+                   const LineCast& line = cast[size_t(lane)];
                    const HitList& back = line.complete ? line.hits : line.reverse;
                    hits.local() += size_t(line.hits.count > 0) + size_t(back.count > 0);
                  }

@@ -121,7 +121,7 @@ CollectContext make_context(int capacity, bool coherent) {
 /// their reversed rays.
 void cast_line_packet(const EmbreeMesh& embree, const std::vector<glm::vec3>& points, int n,
                       int entry, int first, int end, CollectContext& forward,
-                      CollectContext& reverse, std::array<LineHits, 8>& lines) {
+                      CollectContext& reverse, std::array<LineCast, 8>& lines) {
   const int per_face = n * n;
   alignas(32) RTCRayHit8 packet;
   alignas(32) int valid[8];
@@ -130,7 +130,7 @@ void cast_line_packet(const EmbreeMesh& embree, const std::vector<glm::vec3>& po
   const glm::vec3 a = points[size_t(entry)];
   for (int lane = 0; lane < 8; ++lane) {
     const int exit = first + lane;
-    LineHits& line = lines[size_t(lane)];
+    LineCast& line = lines[size_t(lane)];
     line.ray = exit < end && exit / per_face != entry / per_face;
     line.hits.count = 0;
     line.complete = true;
@@ -144,7 +144,7 @@ void cast_line_packet(const EmbreeMesh& embree, const std::vector<glm::vec3>& po
   cast_packet(embree, forward, valid, packet, hits);
   any = false;
   for (int lane = 0; lane < 8; ++lane) {
-    LineHits& line = lines[size_t(lane)];
+    LineCast& line = lines[size_t(lane)];
     line.hits = hits[size_t(lane)];
     line.complete = line.hits.count < forward.capacity;
     valid[lane] = line.ray && !line.complete ? -1 : 0;
@@ -255,7 +255,7 @@ void cast_lines(const EmbreeMesh& embree, const std::vector<glm::vec3>& points, 
       tbb::blocked_range<int>(0, tiles * tiles), [&](const tbb::blocked_range<int>& range) {
         CollectContext forward = make_context(std::clamp(capacity, 1, kMaxHitList), true);
         CollectContext reverse = make_context(std::clamp(reverse_capacity, 1, kMaxHitList), false);
-        std::array<LineHits, 8> lines;
+        std::array<LineCast, 8> lines;
         for (int tile = range.begin(); tile != range.end(); ++tile) {
           const int row_tile = tile / tiles;
           const int column_tile = tile % tiles;

@@ -54,7 +54,7 @@ void cast_first_hits(const EmbreeMesh& embree, const std::vector<glm::vec3>& poi
                      const FirstHitConsumer& consume, const JobControl* control = nullptr);
 
 /// One line entry -> exit (entry <= exit) of cast_lines.
-struct LineHits {
+struct LineCast {
   bool ray = false;  ///< false: entry and exit on one face, or exit past the row's end
   HitList hits;      ///< the hits nearest the entry, t along entry -> exit
   /// hits.count < the capacity: `hits` are all the line's hits, and reversed they are the exit
@@ -67,7 +67,7 @@ struct LineHits {
 /// lines: exits first..first+count-1 (count <= 8; the lanes past them belong to another tile).
 /// Called from several threads at once, never for one line twice.
 using LineConsumer =
-    std::function<void(int entry, int first_exit, int count, const std::array<LineHits, 8>& lines)>;
+    std::function<void(int entry, int first_exit, int count, const std::array<LineCast, 8>& lines)>;
 
 /// Visits every line (entry, exit) with entry <= exit once (tile by tile): collects up to
 /// `capacity` hits nearest the entry (1..kMaxHitList) and, for lines whose list is full, up to

@@ -45,11 +45,13 @@ bool probe_field_gpu(const GpuAssets& assets, int asset, const std::vector<Ray>&
   glBindTextureUnit(gpu::UNIT_GI_POSITIONS, assets.positions());
   glBindTextureUnit(gpu::UNIT_GI_NORMALS, assets.normals());
   glBindTextureUnit(gpu::UNIT_FIELDS, assets.fields());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BUFFER_FIELD_LINES, assets.field_lines());
   glBindTextureUnit(gpu::UNIT_PROBE_ORIGINS, textures[0].id());
   glBindTextureUnit(gpu::UNIT_PROBE_DIRECTIONS, textures[1].id());
   glUniform3i(program.uniform("u_asset"), a.layer, a.samples_per_side, a.image_size);
   glUniform2i(program.uniform("u_image_origin"), a.image_origin.x, a.image_origin.y);
-  glUniform3i(program.uniform("u_field"), a.field_layer, a.field_layers, assets.field_bits());
+  glUniform4i(program.uniform("u_field"), a.field_layer, a.field_lines, a.field_interior,
+              assets.field_bits() + 256 * a.field_layers);
   glUniform3fv(program.uniform("u_box_min"), 1, &a.box.min.x);
   glUniform3fv(program.uniform("u_box_max"), 1, &a.box.max.x);
   glUniform1i(program.uniform("u_mode"), int(mode));

@@ -17,10 +17,11 @@
 namespace gfield {
 namespace {
 
-/// A 2D-array texture of `layers` layers of side x side texels of `format`, nearest filtering.
-void make_array(GlTexture& texture, GLenum format, int side, int layers) {
+/// A 2D-array texture of `layers` layers of width x height texels of `format`, nearest
+/// filtering.
+void make_array(GlTexture& texture, GLenum format, int width, int height, int layers) {
   texture.make(GL_TEXTURE_2D_ARRAY);
-  glTextureStorage3D(texture.id(), 1, format, side, side, layers);
+  glTextureStorage3D(texture.id(), 1, format, width, height, layers);
   glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -212,17 +213,17 @@ bool GpuAssets::upload(const std::vector<const GeometryImage*>& images,
   loaded_ = AssetNeeds{};
   if (!upload_images("in-memory assets", error))
     return false;
-  std::vector<int> sides(images.size(), 0), layers(images.size(), 0);
+  std::vector<int> samples(images.size(), 0);
   for (size_t m = 0; m < std::min(fields.size(), images.size()); ++m) {
-    sides[m] = fields[m] != nullptr ? field_side(*fields[m]) : 0;
-    layers[m] = fields[m] != nullptr ? fields[m]->layers : 0;
+    samples[m] = fields[m] != nullptr ? fields[m]->samples_per_side : 0;
   }
-  if (!make_field_array(sides, layers, field_bits, "in-memory assets", error))
+  if (!make_field_array(samples, field_bits, "in-memory assets", error))
     return false;
   for (size_t m = 0; m < std::min(fields.size(), images.size()); ++m) {
     if (fields[m] != nullptr)
       upload_field(m, *fields[m]);
   }
+  upload_field_lines();
   loaded_.fields = true;
   return true;
 }
@@ -255,9 +256,9 @@ bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
   const int count = std::max(1, layers);
   if (!fits_gl_limits(side, count, owner, error))
     return false;
-  make_array(positions_, GL_RGBA32F, side, count);
-  make_array(normals_, GL_RGBA32F, side, count);
-  make_array(albedo_, GL_RGBA16F, side, count);
+  make_array(positions_, GL_RGBA32F, side, side, count);
+  make_array(normals_, GL_RGBA32F, side, side, count);
+  make_array(albedo_, GL_RGBA16F, side, side, count);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   for (size_t m = 0; m < images_.size(); ++m) {
     const GeometryImage& image = images_[m];
@@ -295,10 +296,10 @@ bool GpuAssets::upload_images(const std::string& owner, std::string& error) {
 }
 
 bool GpuAssets::load_fields(const Scene& scene, int bits, bool optional, std::string& error) {
-  // Headers first (the array's size), then one field at a time: K float tables of 95 MB each at
-  // N = 24 need not all be in memory at once. With `optional`, a mesh without a field or image
+  // Headers first (the array's size), then one field at a time: their float tables (80 MB each at
+  // N = 24) need not all be in memory at once. With `optional`, a mesh without a field or image
   // gets none.
-  std::vector<int> sides(scene.meshes.size(), 0), layers(scene.meshes.size(), 0);
+  std::vector<int> samples(scene.meshes.size(), 0);
   const auto skipped = [&](size_t m) {
     return optional && (scene.meshes[m].geometry_field.empty() || assets_[m].layer < 0);
   };
@@ -313,10 +314,9 @@ bool GpuAssets::load_fields(const Scene& scene, int bits, bool optional, std::st
     }
     if (!load_asset_header(mesh.geometry_field, header, error))
       return false;
-    sides[m] = header.width;
-    layers[m] = header.layers;
+    samples[m] = header.samples_per_side;
   }
-  if (!make_field_array(sides, layers, bits, scene.filename, error))
+  if (!make_field_array(samples, bits, scene.filename, error))
     return false;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const MeshAsset& mesh = scene.meshes[m];
@@ -330,31 +330,36 @@ bool GpuAssets::load_fields(const Scene& scene, int bits, bool optional, std::st
       error = mesh.geometry_field + ": does not match " + mesh.geometry_image + " (" + error + ")";
       return false;
     }
+    if (field.samples_per_side != samples[m]) {
+      error = mesh.geometry_field + ": changed while it was read";
+      return false;
+    }
     upload_field(m, field);
   }
-  loaded_.fields = true;
+  upload_field_lines();
   return true;
 }
 
-bool GpuAssets::make_field_array(const std::vector<int>& sides, const std::vector<int>& layers,
-                                 int bits, const std::string& owner, std::string& error) {
-  int side = 1, total = 0;
-  for (size_t m = 0; m < sides.size(); ++m) {
-    side = std::max(side, sides[m]);
-    assets_[m].field_layer = total;
+bool GpuAssets::make_field_array(const std::vector<int>& samples, int bits,
+                                 const std::string& owner, std::string& error) {
+  int width = 1, height = 1, count = 0;
+  for (size_t m = 0; m < samples.size(); ++m) {
+    const int n = samples[m];
+    width = std::max(width, 5 * n * n);
+    height = std::max(height, 6 * n * n);
+    assets_[m].field_layer = n > 0 ? count++ : 0;
     assets_[m].field_layers = 0;
     assets_[m].samples_per_side = 0;
-    total += layers[m];
+    assets_[m].field_bytes = 0;
   }
-  total = std::max(1, total);
-  if (!fits_gl_limits(side, total, owner, error))
+  count = std::max(1, count);
+  if (!fits_gl_limits(std::max(width, height), count, owner, error))
     return false;
   const GLenum format = bits == 8 ? GL_RG8 : bits == 16 ? GL_RG16 : GL_RG32F;
-  make_array(fields_, format, side, total);
-  const size_t texel_bytes = 2 * size_t(bits / 8);
-  for (size_t m = 0; m < sides.size(); ++m)
-    assets_[m].field_bytes = size_t(side) * size_t(side) * size_t(layers[m]) * texel_bytes;
-  field_texture_bytes_ = size_t(side) * size_t(side) * size_t(total) * texel_bytes;
+  make_array(fields_, format, width, height, count);
+  field_layer_bytes_ = size_t(width) * size_t(height) * 2 * size_t(bits / 8);
+  field_texture_bytes_ = field_layer_bytes_ * size_t(count);
+  field_words_.clear();
   field_bits_ = bits;
   ++texture_uploads_;
   loaded_.fields = false;  // until every field is uploaded
@@ -362,19 +367,33 @@ bool GpuAssets::make_field_array(const std::vector<int>& sides, const std::vecto
 }
 
 void GpuAssets::upload_field(size_t m, const GeometryField& field) {
-  const int n = field_side(field);
   const GLenum type = field_bits_ == 8    ? GL_UNSIGNED_BYTE
                       : field_bits_ == 16 ? GL_UNSIGNED_SHORT
                                           : GL_FLOAT;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  for (int layer = 0; layer < field.layers; ++layer) {
-    const std::vector<uint8_t> texels = field_layer_texels(field, layer, field_bits_);
-    glTextureSubImage3D(fields_.id(), 0, 0, 0, assets_[m].field_layer + layer, n, n, 1, GL_RG, type,
-                        texels.data());
-  }
+  const std::vector<uint8_t> texels = field_nearest_texels(field, field_bits_);
+  glTextureSubImage3D(fields_.id(), 0, 0, 0, assets_[m].field_layer, field_columns(field),
+                      field_side(field), 1, GL_RG, type, texels.data());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  assets_[m].samples_per_side = field.samples_per_side;
-  assets_[m].field_layers = field.layers;
+  GpuAsset& a = assets_[m];
+  a.samples_per_side = field.samples_per_side;
+  a.field_layers = field.layers;
+  a.field_lines = int(field_words_.size());
+  field_words_.insert(field_words_.end(), field.lines.begin(), field.lines.end());
+  a.field_interior = int(field_words_.size());
+  const std::vector<uint32_t> interior = field_interior_words(field, field_bits_);
+  field_words_.insert(field_words_.end(), interior.begin(), interior.end());
+  a.field_bytes = field_layer_bytes_ + (field_words_.size() - size_t(a.field_lines)) * 4;
+}
+
+void GpuAssets::upload_field_lines() {
+  field_lines_.make();
+  const size_t bytes = std::max<size_t>(1, field_words_.size()) * sizeof(uint32_t);
+  glNamedBufferStorage(field_lines_.id(), GLsizeiptr(bytes),
+                       field_words_.empty() ? nullptr : field_words_.data(), 0);
+  field_texture_bytes_ += field_words_.size() * sizeof(uint32_t);
+  std::vector<uint32_t>().swap(field_words_);
+  loaded_.fields = true;
 }
 
 bool GpuAssets::load_source_meshes(const Scene& scene, std::string& error) {
@@ -467,8 +486,8 @@ std::string asset_memory_lines(const Scene& scene, const GpuAssets& assets) {
       parts += part;
     }
     if (a.samples_per_side > 0) {
-      std::snprintf(part, sizeof(part), ", field K = %d x %s %.1f MB", a.field_layers, format,
-                    double(a.field_bytes) / 1e6);
+      std::snprintf(part, sizeof(part), ", field %s + line table %.1f MB (up to %d hits a line)",
+                    format, double(a.field_bytes) / 1e6, a.field_layers);
       parts += part;
     }
     if (a.bvh_root >= 0) {

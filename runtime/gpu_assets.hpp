@@ -4,11 +4,13 @@
 //     image, texel (i, j) of an image at GpuAsset::image_origin + (i, j) of GpuAsset::layer = P
 //     (mesh coordinates) with coverage A in w, and the unit normal; smaller images share layers
 //     (image_atlas.hpp);
-//   - geometry fields: one GL_TEXTURE_2D_ARRAY, a field's K layers in K consecutive array layers,
-//     texel (exit, entry) = the code of the stored uv of the pair's hit (RG8 or RG16 normalised
-//     integers, or RG32F: the contract's gf_decode_field_texel, gfield/gpu_storage.hpp); a
-//     (6N^2)^2 table fills the corner of its layer (3D textures stop at 2048 on Mesa, a 2D array
-//     layer reaches 16384);
+//   - geometry fields (compact, gfield/geometry_field.hpp): one GL_TEXTURE_2D_ARRAY of their
+//     nearest-hit tables, a layer each, texel (column, entry) = the code of the uv of the hit
+//     nearest the entry (RG8 or RG16 normalised integers, or RG32F: the contract's
+//     gf_decode_field_texel, gfield/gpu_storage.hpp); a 5N^2 x 6N^2 table fills the corner of
+//     its layer (3D textures stop at 2048 on Mesa, a 2D array layer reaches 16384); and one
+//     storage buffer of their line tables and interior hits (BUFFER_FIELD_LINES), each field's
+//     at GpuAsset::field_lines and field_interior;
 //   - geometry-image albedo: GL_TEXTURE_2D_ARRAY RGBA16F, laid out as the images (white for an
 //     image without albedo: GpuAsset::albedo);
 //   - rasterisation meshes, two per asset: the mesh file as the reference tracer sees it (its
@@ -24,6 +26,7 @@
 // the contract's (shaders/lib/contract.glsl: UNIT_GI_POSITIONS, UNIT_GI_NORMALS, UNIT_FIELDS,
 // UNIT_GI_ALBEDO, UNIT_MESH_TEXTURES).
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -83,10 +86,12 @@ struct GpuAsset {
   int image_size = 0;          ///< n of the geometry image
   glm::ivec2 image_origin{0};  ///< texel of its corner in the layer (image_atlas.hpp)
   int samples_per_side = 0;    ///< N of the field (0: no field loaded)
-  int field_layer = 0;         ///< first layer of the field in the field array
-  int field_layers = 0;        ///< K, the field's layers
+  int field_layer = 0;         ///< its nearest-hit table's layer in the field array
+  int field_lines = 0;         ///< first word of its line table in the field lines buffer
+  int field_interior = 0;      ///< first word of its interior hits there
+  int field_layers = 0;        ///< K, the hits a lookup reads per line
   size_t image_bytes = 0;      ///< GPU bytes of its geometry image (its n x n texels of the arrays)
-  size_t field_bytes = 0;      ///< GPU bytes of its field (its K layers of the field array)
+  size_t field_bytes = 0;      ///< GPU bytes of its field (its layer of the array and its words)
   Box box;  ///< the geometry image's box (mesh coordinates), else the mesh file's bounds
   bool albedo = false;               ///< the geometry image holds albedo (in GpuAssets::albedo)
   float ray_offset = kMinRayOffset;  ///< the geometry image's (box diagonals)
@@ -113,6 +118,8 @@ class GpuAssets {
   GLuint positions() const { return positions_.id(); }
   GLuint normals() const { return normals_.id(); }
   GLuint fields() const { return fields_.id(); }
+  /// The fields' line tables and interior hits (BUFFER_FIELD_LINES).
+  GLuint field_lines() const { return field_lines_.id(); }
   GLuint albedo() const { return albedo_.id(); }
   GLuint mesh_textures() const { return mesh_textures_.id(); }
   const GpuBvhs& bvhs() const { return bvhs_; }
@@ -131,11 +138,14 @@ class GpuAssets {
   /// False with the missing-asset message of the first mesh without a geometry image or field.
   bool check_complete(const Scene& scene, const AssetNeeds& needs, std::string& error) const;
   bool upload_images(const std::string& owner, std::string& error);
-  /// Allocates the field array for fields of `sides` (table side, 0: none) and `layers`.
-  bool make_field_array(const std::vector<int>& sides, const std::vector<int>& layers, int bits,
-                        const std::string& owner, std::string& error);
-  /// Uploads `field` as the field of asset m (after make_field_array).
+  /// Allocates the field array for fields of N = `samples` (0: none), one layer each.
+  bool make_field_array(const std::vector<int>& samples, int bits, const std::string& owner,
+                        std::string& error);
+  /// Uploads `field`'s nearest-hit table as the field of asset m (after make_field_array) and
+  /// keeps its line table and interior hits for upload_field_lines.
   void upload_field(size_t m, const GeometryField& field);
+  /// Uploads the kept line tables and interior hits of every field (BUFFER_FIELD_LINES).
+  void upload_field_lines();
   bool load_source_meshes(const Scene& scene, std::string& error);
   bool upload_mesh_textures(const std::vector<const Image*>& textures, const std::string& owner,
                             std::string& error);
@@ -147,6 +157,9 @@ class GpuAssets {
   GlTexture positions_;
   GlTexture normals_;
   GlTexture fields_;
+  GlBuffer field_lines_;
+  std::vector<uint32_t> field_words_;  ///< the line tables until upload_field_lines
+  size_t field_layer_bytes_ = 0;       ///< bytes of one layer of the field array
   GlTexture albedo_;
   GlTexture mesh_textures_;
   GpuBvhs bvhs_;
@@ -157,7 +170,8 @@ class GpuAssets {
   int field_bits_ = 0;
 };
 
-/// One line per asset: "NAME: image 10.5 MB, field K = 4 x RG8 95.6 MB" (the scene's mesh files),
+/// One line per asset: "NAME: image 10.5 MB, field RG8 + line table 23.0 MB (up to 8 hits a
+/// line)" (the scene's mesh files),
 /// with ", BVH 1.2 MB" where BVHs are loaded and "no field" for a mesh without one.
 std::string asset_memory_lines(const Scene& scene, const GpuAssets& assets);
 

@@ -62,7 +62,8 @@ gpu::GpuObject gpu_object(const GpuScene& gpu_scene, int k) {
     g.box_min.w = asset.ray_offset;
     g.asset =
         glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, asset.albedo ? 1 : 0);
-    g.field = glm::ivec4(asset.field_layer, asset.field_layers, gpu_scene.assets().field_bits(), 0);
+    g.field = glm::ivec4(asset.field_layer, asset.field_lines, asset.field_interior,
+                         gpu_scene.assets().field_bits() + 256 * asset.field_layers);
     g.image = glm::ivec4(asset.image_origin, asset.bvh_root, 0);
   }
   return g;
@@ -123,6 +124,7 @@ void GpuScene::bind() const {
   glBindTextureUnit(gpu::UNIT_GI_POSITIONS, assets_.positions());
   glBindTextureUnit(gpu::UNIT_GI_NORMALS, assets_.normals());
   glBindTextureUnit(gpu::UNIT_FIELDS, assets_.fields());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BUFFER_FIELD_LINES, assets_.field_lines());
   glBindTextureUnit(gpu::UNIT_GI_ALBEDO, assets_.albedo());
   glBindTextureUnit(gpu::UNIT_MESH_TEXTURES, assets_.mesh_textures());
   glBindTextureUnit(gpu::UNIT_ENVIRONMENT, environment_.id());

@@ -7,7 +7,7 @@ layout(binding = UNIT_PROBE_ORIGINS) uniform sampler2D u_ray_origins;
 layout(binding = UNIT_PROBE_DIRECTIONS) uniform sampler2D u_ray_directions;
 uniform ivec3 u_asset;  // image layer, N, image size n (GpuObject.asset)
 uniform ivec2 u_image_origin;  // the image's corner in its layer (GpuObject.image)
-uniform ivec3 u_field;  // first field layer, layers K, bits (GpuObject.field)
+uniform ivec4 u_field;  // the field on the GPU (GpuObject.field)
 uniform vec3 u_box_min;
 uniform vec3 u_box_max;
 uniform int u_mode;

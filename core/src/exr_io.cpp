@@ -24,6 +24,7 @@
 #include "exr_input.hpp"
 #include "gfield/atomic_file.hpp"
 #include "gfield/build_id.hpp"
+#include "gfield/field_lines.hpp"
 #include "gfield/limits.hpp"
 #include "gfield/printable.hpp"
 
@@ -36,6 +37,12 @@ constexpr const char* kFieldTag = "geometry-field";
 constexpr int kMinSamplesPerSide = 1;
 constexpr int kMaxSamplesPerSide = 64;
 constexpr int kMaxFieldSide = 6 * kMaxSamplesPerSide * kMaxSamplesPerSide;
+// A compact field's channels and attributes (docs/formats.md).
+constexpr const char* kHitU = "hit.U";
+constexpr const char* kHitV = "hit.V";
+constexpr const char* kLineChannel = "line";
+constexpr const char* kLineWordsAttribute = "gfield.lineWords";
+constexpr const char* kInteriorHitsAttribute = "gfield.interiorHits";
 
 void use_all_cores() {
   static std::once_flag once;
@@ -102,19 +109,34 @@ struct OutputChannels {
   }
 };
 
+/// Scanlines written from one frame buffer: `rows` of them, after those of the parts before.
+struct RowsFrom {
+  const Imf::FrameBuffer* frame_buffer;
+  int rows;
+};
+
 bool write_exr(const std::string& filename, const Imf::Header& header,
-               const Imf::FrameBuffer& frame_buffer, int height, std::string& error) {
+               std::initializer_list<RowsFrom> parts, std::string& error) {
   use_all_cores();
   TemporaryFile tmp(filename);
   try {
     Imf::OutputFile file(tmp.path().c_str(), header);
-    file.setFrameBuffer(frame_buffer);
-    file.writePixels(height);
+    for (const RowsFrom& part : parts) {
+      if (part.rows > 0) {
+        file.setFrameBuffer(*part.frame_buffer);
+        file.writePixels(part.rows);
+      }
+    }
   } catch (const std::exception& e) {
     error = filename + ": cannot write OpenEXR file (" + tmp.as_target(e.what()) + ")";
     return false;
   }
   return tmp.commit(error);
+}
+
+bool write_exr(const std::string& filename, const Imf::Header& header,
+               const Imf::FrameBuffer& frame_buffer, int height, std::string& error) {
+  return write_exr(filename, header, {RowsFrom{&frame_buffer, height}}, error);
 }
 
 /// "(x, y, z)" for messages.
@@ -271,17 +293,23 @@ bool open_input(const std::string& filename, int max_side,
   return open_exr_input(filename, max_side, max_side, channels, file, error);
 }
 
-bool read_pixels(const std::string& filename, Imf::InputFile& file,
-                 const Imf::FrameBuffer& frame_buffer, std::string& error) {
+/// Reads scanlines first..last (data-window coordinates) into `frame_buffer`.
+bool read_rows(const std::string& filename, Imf::InputFile& file,
+               const Imf::FrameBuffer& frame_buffer, int first, int last, std::string& error) {
   try {
-    const Imath::Box2i dw = file.header().dataWindow();
     file.setFrameBuffer(frame_buffer);
-    file.readPixels(dw.min.y, dw.max.y);
+    file.readPixels(first, last);
   } catch (const std::exception& e) {
     error = filename + ": truncated or corrupt pixel data (" + exr_exception_text(e) + ")";
     return false;
   }
   return true;
+}
+
+bool read_pixels(const std::string& filename, Imf::InputFile& file,
+                 const Imf::FrameBuffer& frame_buffer, std::string& error) {
+  const Imath::Box2i dw = file.header().dataWindow();
+  return read_rows(filename, file, frame_buffer, dw.min.y, dw.max.y, error);
 }
 
 // Channel of layer `layer` in a version-2 field: hit0.U, hit0.V, hit1.U, ...
@@ -366,18 +394,19 @@ bool check_field_size(const std::string& filename, const ExrAssetHeader& header,
   return true;
 }
 
-// Every stored value is a uv in [0,1]^2, a miss or "no ray"; along a line, a miss is followed by
-// misses only, and "no ray" holds in every layer or none.
-bool check_field_values(const std::string& filename, const GeometryField& field,
-                        std::string& error) {
-  const size_t side = size_t(field_side(field));
-  const size_t count = field_layer_size(field);
+// Every stored value of a layered table (`layers` tables of side^2) is a uv in [0,1]^2, a miss
+// or "no ray"; along a line, a miss is followed by misses only, and "no ray" holds in every
+// layer or none.
+bool check_layered_values(const std::string& filename, const std::vector<glm::vec2>& table,
+                          int side, int layers, std::string& error) {
+  const size_t count = size_t(side) * size_t(side);
   const auto where = [&](size_t k) {
-    return " at entry " + std::to_string(k / side) + ", exit " + std::to_string(k % side);
+    return " at entry " + std::to_string(k / size_t(side)) + ", exit " +
+           std::to_string(k % size_t(side));
   };
   for (size_t k = 0; k < count; ++k) {
-    for (int layer = 0; layer < field.layers; ++layer) {
-      const glm::vec2 v = field.uv[size_t(layer) * count + k];
+    for (int layer = 0; layer < layers; ++layer) {
+      const glm::vec2 v = table[size_t(layer) * count + k];
       const bool hit = v.x >= 0.0f && v.x <= 1.0f && v.y >= 0.0f && v.y <= 1.0f;
       const bool miss = v.x == kFieldMiss && v.y == kFieldMiss;
       const bool no_ray = v.x == kFieldNoRay && v.y == kFieldNoRay;
@@ -389,7 +418,7 @@ bool check_field_values(const std::string& filename, const GeometryField& field,
       if (layer == 0) {
         continue;
       }
-      const glm::vec2 before = field.uv[size_t(layer - 1) * count + k];
+      const glm::vec2 before = table[size_t(layer - 1) * count + k];
       if (no_ray != (before.x == kFieldNoRay) || (hit && before.x < 0.0f)) {
         error = filename + ": layer " + std::to_string(layer) + " disagrees with layer " +
                 std::to_string(layer - 1) + where(k) +
@@ -397,6 +426,128 @@ bool check_field_values(const std::string& filename, const GeometryField& field,
         return false;
       }
     }
+  }
+  return true;
+}
+
+// The channels of a compact field: hit.U and hit.V, both HALF or both FLOAT, and line, UINT.
+bool check_compact_channels(const std::string& filename, const Imf::Header& h, std::string& error) {
+  const Imf::Channel* u = h.channels().findChannel(kHitU);
+  const Imf::Channel* v = h.channels().findChannel(kHitV);
+  const Imf::Channel* line = h.channels().findChannel(kLineChannel);
+  size_t count = 0;
+  for (auto c = h.channels().begin(); c != h.channels().end(); ++c) {
+    ++count;
+  }
+  if (u == nullptr || v == nullptr || line == nullptr || count != 3) {
+    error = filename +
+            ": a version-3 geometry field holds the channels hit.U, hit.V and line, "
+            "and no others";
+    return false;
+  }
+  if (u->type != v->type || (u->type != Imf::HALF && u->type != Imf::FLOAT) ||
+      line->type != Imf::UINT) {
+    error = filename + ": hit.U and hit.V must be both HALF or both FLOAT, line UINT";
+    return false;
+  }
+  return true;
+}
+
+// The size of a compact field: N in range, 5N^2 columns, and 6N^2 rows of nearest hits followed
+// by as many rows as its line words and interior hits (attributes) need.
+bool check_compact_size(const std::string& filename, const Imf::Header& h,
+                        const ExrAssetHeader& header, size_t& words, size_t& hits,
+                        std::string& error) {
+  const int n = header.samples_per_side;
+  const auto* word_count = h.findTypedAttribute<Imf::IntAttribute>(kLineWordsAttribute);
+  const auto* hit_count = h.findTypedAttribute<Imf::IntAttribute>(kInteriorHitsAttribute);
+  if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide || header.layers < 1 ||
+      header.layers > kMaxLineHits || word_count == nullptr || hit_count == nullptr ||
+      word_count->value() < 0 || hit_count->value() < 0) {
+    error = filename + ": gfield.samplesPerSide, gfield.layers (1 to " +
+            std::to_string(kMaxLineHits) + "), " + kLineWordsAttribute + " or " +
+            kInteriorHitsAttribute + " missing or out of range";
+    return false;
+  }
+  words = size_t(word_count->value());
+  hits = size_t(hit_count->value());
+  const size_t width = size_t(5 * n * n);
+  const size_t rows = size_t(sample_count(n)) + (std::max(words, hits) + width - 1) / width;
+  if (size_t(header.width) != width || size_t(header.height) != rows) {
+    error = filename + ": geometry field is " + std::to_string(header.width) + "x" +
+            std::to_string(header.height) + ", expected " + std::to_string(width) + "x" +
+            std::to_string(rows) + " for N = " + std::to_string(n) + ", " + std::to_string(words) +
+            " line words and " + std::to_string(hits) + " interior hits";
+    return false;
+  }
+  return true;
+}
+
+/// A layered field's table (version 1 or 2) from an open file whose header was checked.
+bool read_layered_table(const std::string& filename, Imf::InputFile& file,
+                        const ExrAssetHeader& header, std::vector<glm::vec2>& table,
+                        std::string& error) {
+  std::vector<std::string> channels;
+  if (!check_field_channels(filename, file.header(), header, channels, error) ||
+      !check_field_size(filename, header, error)) {
+    return false;
+  }
+  const int side = sample_count(header.samples_per_side);
+  const size_t count = size_t(side) * size_t(side);
+  table.resize(count * size_t(header.layers));
+  const Imath::Box2i dw = file.header().dataWindow();
+  const ptrdiff_t origin = ptrdiff_t(dw.min.y) * side + dw.min.x;
+  Imf::FrameBuffer fb;
+  for (int layer = 0; layer < header.layers; ++layer) {
+    float* uv = &table[size_t(layer) * count].x - origin * 2;
+    fb.insert(channels[size_t(2 * layer)], float_slice(uv + 0, 2, side));
+    fb.insert(channels[size_t(2 * layer + 1)], float_slice(uv + 1, 2, side));
+  }
+  return read_pixels(filename, file, fb, error) &&
+         check_layered_values(filename, table, side, header.layers, error);
+}
+
+/// A compact field's tables (version 3) from an open file whose header was checked.
+bool read_compact_tables(const std::string& filename, Imf::InputFile& file,
+                         const ExrAssetHeader& header, GeometryField& out, std::string& error) {
+  size_t words = 0, hits = 0;
+  if (!check_compact_channels(filename, file.header(), error) ||
+      !check_compact_size(filename, file.header(), header, words, hits, error)) {
+    return false;
+  }
+  const int width = field_columns(out);
+  const int rows = field_side(out);
+  const int extra_rows = header.height - rows;
+  out.nearest.resize(field_nearest_size(out));
+  const Imath::Box2i dw = file.header().dataWindow();
+  Imf::FrameBuffer nearest;
+  float* uv = &out.nearest[0].x - (ptrdiff_t(dw.min.y) * width + dw.min.x) * 2;
+  nearest.insert(kHitU, float_slice(uv + 0, 2, width));
+  nearest.insert(kHitV, float_slice(uv + 1, 2, width));
+  if (!read_rows(filename, file, nearest, dw.min.y, dw.min.y + rows - 1, error)) {
+    return false;
+  }
+  if (extra_rows > 0) {
+    const size_t padded = size_t(extra_rows) * size_t(width);
+    std::vector<glm::vec2> interior(padded);
+    std::vector<uint32_t> lines(padded);
+    const ptrdiff_t origin = ptrdiff_t(dw.min.y + rows) * width + dw.min.x;
+    Imf::FrameBuffer tables;
+    tables.insert(kHitU, float_slice(&interior[0].x - origin * 2, 2, width));
+    tables.insert(kHitV, float_slice(&interior[0].x - origin * 2 + 1, 2, width));
+    tables.insert(kLineChannel,
+                  Imf::Slice(Imf::UINT, reinterpret_cast<char*>(lines.data() - origin),
+                             sizeof(uint32_t), sizeof(uint32_t) * size_t(width)));
+    if (!read_rows(filename, file, tables, dw.min.y + rows, dw.max.y, error)) {
+      return false;
+    }
+    out.interior.assign(interior.begin(), interior.begin() + ptrdiff_t(hits));
+    out.lines.assign(lines.begin(), lines.begin() + ptrdiff_t(words));
+  }
+  std::string why;
+  if (!check_field_tables(out, why)) {
+    error = filename + ": " + why;
+    return false;
   }
   return true;
 }
@@ -514,32 +665,88 @@ bool load_geometry_image(const std::string& filename, GeometryImage& image, std:
 bool save_geometry_field(const std::string& filename, const GeometryField& field,
                          ExrPrecision precision, std::string& error) {
   const int n = field.samples_per_side;
-  if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide) {
-    error = filename + ": samples per side " + std::to_string(n) + " out of range";
+  if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide || field.layers < 1 ||
+      field.layers > kMaxLineHits || field.nearest.size() != field_nearest_size(field)) {
+    error = filename + ": geometry field tables do not match N = " + std::to_string(n) +
+            " or layers " + std::to_string(field.layers) + " out of range";
     return false;
   }
-  if (field.layers < 1 || field.layers > kMaxFieldLayers) {
-    error = filename + ": " + std::to_string(field.layers) + " layers out of range [1, " +
-            std::to_string(kMaxFieldLayers) + "]";
+  const int width = field_columns(field);
+  const int rows = field_side(field);
+  const size_t extra = std::max(field.lines.size(), field.interior.size());
+  const int extra_rows = int((extra + size_t(width) - 1) / size_t(width));
+  Imf::Header header = make_header(width, rows + extra_rows, kFieldTag, kFieldFormatVersion,
+                                   field.box, field.source, field.build_id);
+  header.insert("gfield.samplesPerSide", Imf::IntAttribute(n));
+  header.insert("gfield.layers", Imf::IntAttribute(field.layers));
+  header.insert(kLineWordsAttribute, Imf::IntAttribute(int(field.lines.size())));
+  header.insert(kInteriorHitsAttribute, Imf::IntAttribute(int(field.interior.size())));
+  header.zipCompressionLevel() = 1;  // docs/geometry-field.md: fast, a few % larger
+  // Rows 0..6N^2-1: the nearest hits (line: 0); then the interior hits and the line words.
+  OutputChannels nearest;
+  const float* uv = &field.nearest[0].x;
+  nearest.add(header, kHitU, pixel_type(precision), uv, 2, field.nearest.size(), width);
+  nearest.add(header, kHitV, pixel_type(precision), uv + 1, 2, field.nearest.size(), width);
+  header.channels().insert(kLineChannel, Imf::Channel(Imf::UINT));
+  const std::vector<uint32_t> zero_row(size_t(width), 0u);
+  nearest.frame_buffer.insert(
+      kLineChannel,
+      Imf::Slice(Imf::UINT, reinterpret_cast<char*>(const_cast<uint32_t*>(zero_row.data())),
+                 sizeof(uint32_t), 0));
+  const size_t padded = size_t(extra_rows) * size_t(width);
+  std::vector<glm::vec2> interior(padded, glm::vec2(0.0f));
+  std::copy(field.interior.begin(), field.interior.end(), interior.begin());
+  std::vector<uint32_t> lines(padded, 0u);
+  std::copy(field.lines.begin(), field.lines.end(), lines.begin());
+  Imf::Header scratch = header;  // OutputChannels::add inserts the channels again: already there
+  OutputChannels tables;
+  const ptrdiff_t origin = ptrdiff_t(rows) * width;
+  if (padded > 0) {
+    const float* hits = &interior[0].x;
+    tables.add(scratch, kHitU, pixel_type(precision), hits, 2, padded, width);
+    tables.add(scratch, kHitV, pixel_type(precision), hits + 1, 2, padded, width);
+    for (const char* name : {kHitU, kHitV}) {
+      const Imf::Slice slice = tables.frame_buffer[name];
+      tables.frame_buffer[name] = Imf::Slice(
+          slice.type, slice.base - origin * ptrdiff_t(slice.xStride), slice.xStride, slice.yStride);
+    }
+    tables.frame_buffer.insert(kLineChannel,
+                               Imf::Slice(Imf::UINT, reinterpret_cast<char*>(lines.data() - origin),
+                                          sizeof(uint32_t), sizeof(uint32_t) * size_t(width)));
+  }
+  return write_exr(
+      filename, header,
+      {RowsFrom{&nearest.frame_buffer, rows}, RowsFrom{&tables.frame_buffer, extra_rows}}, error);
+}
+
+bool save_layered_geometry_field(const std::string& filename, const GeometryField& field,
+                                 int layers, ExrPrecision precision, std::string& error) {
+  const int n = field.samples_per_side;
+  if (n < kMinSamplesPerSide || n > kMaxSamplesPerSide || layers < 1 || layers > kMaxFieldLayers ||
+      field.nearest.size() != field_nearest_size(field)) {
+    error = filename + ": samples per side " + std::to_string(n) + " or layers " +
+            std::to_string(layers) + " out of range [1, " + std::to_string(kMaxFieldLayers) + "]";
     return false;
   }
   const int side = field_side(field);
-  if (field.uv.size() != field_layer_size(field) * size_t(field.layers)) {
-    error = filename + ": geometry field table does not match N = " + std::to_string(n) + ", " +
-            std::to_string(field.layers) + " layers";
-    return false;
+  const size_t count = size_t(side) * size_t(side);
+  std::vector<glm::vec2> table(count * size_t(layers));
+  for (int entry = 0; entry < side; ++entry) {
+    for (int exit = 0; exit < side; ++exit) {
+      for (int layer = 0; layer < layers; ++layer) {
+        table[size_t(layer) * count + size_t(entry) * size_t(side) + size_t(exit)] =
+            field_uv(field, entry, exit, layer);
+      }
+    }
   }
-  Imf::Header header = make_header(side, side, kFieldTag, kFieldFormatVersion, field.box,
+  Imf::Header header = make_header(side, side, kFieldTag, kLayeredFieldVersion, field.box,
                                    field.source, field.build_id);
   header.insert("gfield.samplesPerSide", Imf::IntAttribute(n));
-  header.insert("gfield.layers", Imf::IntAttribute(field.layers));
-  // zlib level 1 (docs/geometry-field.md): a 3456^2 half table writes ~30% faster than at the
-  // default level 4 for ~7% more bytes; RLE is faster still but ~55% larger.
+  header.insert("gfield.layers", Imf::IntAttribute(layers));
   header.zipCompressionLevel() = 1;
   OutputChannels out;
-  const size_t count = field_layer_size(field);
-  for (int layer = 0; layer < field.layers; ++layer) {
-    const float* uv = &field.uv[size_t(layer) * count].x;
+  for (int layer = 0; layer < layers; ++layer) {
+    const float* uv = &table[size_t(layer) * count].x;
     out.add(header, field_channel(layer, 'U').c_str(), pixel_type(precision), uv, 2, count, side);
     out.add(header, field_channel(layer, 'V').c_str(), pixel_type(precision), uv + 1, 2, count,
             side);
@@ -549,15 +756,14 @@ bool save_geometry_field(const std::string& filename, const GeometryField& field
 
 bool load_geometry_field(const std::string& filename, GeometryField& field, std::string& error) {
   std::unique_ptr<Imf::InputFile> file;
-  if (!open_input(filename, kMaxFieldSide, {}, file, error)) {  // channels: check_field_channels
-    return false;
+  use_all_cores();
+  // The rows of a compact field's line table below its 6N^2 rows: at most as many again.
+  if (!open_exr_input(filename, kMaxFieldSide, 2 * kMaxFieldSide, {}, file, error)) {
+    return false;  // channels: check_field_channels, check_compact_channels
   }
   ExrAssetHeader header;
-  std::vector<std::string> channels;
   if (!read_header(filename, file->header(), header, error) ||
-      !check_format(filename, header, kFieldTag, 1, kFieldFormatVersion, error) ||
-      !check_field_channels(filename, file->header(), header, channels, error) ||
-      !check_field_size(filename, header, error)) {
+      !check_format(filename, header, kFieldTag, 1, kFieldFormatVersion, error)) {
     return false;
   }
   GeometryField out;
@@ -566,19 +772,16 @@ bool load_geometry_field(const std::string& filename, GeometryField& field, std:
   out.box = header.box;
   out.source = header.source;
   out.build_id = header.build_id;
-  const int side = sample_count(out.samples_per_side);
-  const size_t count = field_layer_size(out);
-  out.uv.resize(count * size_t(out.layers));
-  const Imath::Box2i dw = file->header().dataWindow();
-  const ptrdiff_t origin = ptrdiff_t(dw.min.y) * side + dw.min.x;
-  Imf::FrameBuffer fb;
-  for (int layer = 0; layer < out.layers; ++layer) {
-    float* uv = &out.uv[size_t(layer) * count].x - origin * 2;
-    fb.insert(channels[size_t(2 * layer)], float_slice(uv + 0, 2, side));
-    fb.insert(channels[size_t(2 * layer + 1)], float_slice(uv + 1, 2, side));
-  }
-  if (!read_pixels(filename, *file, fb, error) || !check_field_values(filename, out, error)) {
-    return false;
+  if (header.version == kFieldFormatVersion) {
+    if (!read_compact_tables(filename, *file, header, out, error)) {
+      return false;
+    }
+  } else {
+    std::vector<glm::vec2> table;
+    if (!read_layered_table(filename, *file, header, table, error)) {
+      return false;
+    }
+    compact_layered_table(table, header.layers, out);
   }
   field = std::move(out);
   return true;
@@ -586,7 +789,9 @@ bool load_geometry_field(const std::string& filename, GeometryField& field, std:
 
 bool load_asset_header(const std::string& filename, ExrAssetHeader& header, std::string& error) {
   std::unique_ptr<Imf::InputFile> file;
-  if (!open_input(filename, std::max(kMaxFieldSide, kMaxGeometryImageSide), {}, file, error)) {
+  use_all_cores();
+  const int side = std::max(kMaxFieldSide, kMaxGeometryImageSide);
+  if (!open_exr_input(filename, side, 2 * side, {}, file, error)) {
     return false;
   }
   return read_header(filename, file->header(), header, error);

@@ -4,12 +4,14 @@
 #include <cmath>
 
 #include "gfield/build_id.hpp"
+#include "gfield/gpu_contract.hpp"
 #include "gfield/printable.hpp"
 
 namespace gfield {
 namespace {
 
-using namespace glm;  // the GLSL vocabulary of field_lookup.glsl
+using namespace glm;          // the GLSL vocabulary of field_lookup.glsl
+using namespace gfield::gpu;  // and the contract's field addressing (field_lines.glsl)
 
 /// shaders/lib/field_lookup.glsl compiled as C++: its functions become members of this struct,
 /// whose fetch functions read the CPU copies of the textures.
@@ -20,9 +22,11 @@ struct GlslFieldLookup {
 
   int gf_samples_per_side() const { return field.samples_per_side; }
   int gf_field_layers() const { return layers; }
-  vec2 gf_field_texel(int layer, int entry, int exit) const {
-    return field_uv(field, entry, exit, layer);
+  vec2 gf_field_nearest_texel(int entry, int column) const {
+    return field.nearest[size_t(entry) * size_t(field_columns(field)) + size_t(column)];
   }
+  uint gf_field_word(int i) const { return field.lines[size_t(i)]; }
+  vec2 gf_field_interior_texel(int i) const { return field.interior[size_t(i)]; }
   int gf_image_size() const { return image.size; }
   vec3 gf_image_position_texel(int i, int j) const {
     return image.position[texel_index(image, i, j)];
@@ -34,6 +38,7 @@ struct GlslFieldLookup {
   vec3 gf_box_min() const { return field.box.min; }
   vec3 gf_box_max() const { return field.box.max; }
 
+#include "../../shaders/lib/field_lines.glsl"
 #include "../../shaders/lib/field_lookup.glsl"
 };
 
@@ -105,11 +110,13 @@ bool parse_lookup_mode(const std::string& name, LookupMode& mode) {
 
 bool make_field_lookup(const GeometryField& field, const GeometryImage& image, FieldLookup& lookup,
                        std::string& error) {
-  const size_t side = size_t(sample_count(field.samples_per_side));
-  if (field.samples_per_side <= 0 || field.layers < 1 || field.layers > kMaxFieldLayers ||
-      field.uv.size() != side * side * size_t(field.layers)) {
-    error = "geometry field: the table does not hold K (6N^2)^2 entries (K in [1, " +
-            std::to_string(kMaxFieldLayers) + "])";
+  if (field.samples_per_side <= 0 || field.layers < 1 || field.layers > kMaxLineHits ||
+      field.nearest.size() != field_nearest_size(field) ||
+      field.lines.size() < size_t(gpu::gf_field_tiles(field.samples_per_side))) {
+    error =
+        "geometry field: no nearest-hit table of 6N^2 x 5N^2 entries or no line table, or "
+        "layers K outside [1, " +
+        std::to_string(kMaxLineHits) + "]";
     return false;
   }
   const size_t texels = size_t(image.size) * size_t(image.size);

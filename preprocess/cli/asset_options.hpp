@@ -42,15 +42,22 @@ inline void add_image_size_options(CLI::App* cmd, std::string& size, double& max
       ->capture_default_str();
 }
 
-/// --layers of `gfield field`, `build` and `batch`.
-inline void add_layers_option(CLI::App* cmd, int& layers) {
+/// --format and --layers of `gfield field`, `build` and `batch`.
+inline void add_field_format_options(CLI::App* cmd, int& format, int& layers) {
+  cmd->add_option("--format", format,
+                  "field format: 3, compact (every hit of each line up to " +
+                      std::to_string(kMaxLineHits) +
+                      "), or 2, layered (K hits per ray, --layers; for comparison)")
+      ->check(CLI::IsMember({kFieldFormatVersion, kLayeredFieldVersion}))
+      ->capture_default_str();
   cmd->add_option("--layers", layers,
-                  "K, hits stored per line (1 to " + std::to_string(kMaxFieldLayers) +
+                  "--format 2: K, hits stored per ray (1 to " + std::to_string(kMaxFieldLayers) +
                       "; default: the smallest K that stores every hit of 99.9% of the lines)")
       ->check(CLI::Range(1, kMaxFieldLayers));
 }
 
-/// Adds --size, --max-image-error, --samples, --layers, --half/--float, --verify-rays, --method,
+/// Adds --size, --max-image-error, --samples, --format, --layers, --half/--float, --verify-rays,
+/// --method,
 /// --components, --allow-outside-paths to `cmd`.
 inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArguments>& args) {
   add_image_size_options(cmd, args->size, args->max_image_error);
@@ -59,7 +66,7 @@ inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArgument
                       std::to_string(kMinSamplesPerSide) + " to " +
                       std::to_string(kMaxSamplesPerSide) + ")")
       ->capture_default_str();
-  add_layers_option(cmd, args->layers);
+  add_field_format_options(cmd, args->format, args->layers);
   auto* half = cmd->add_flag("--half", args->half, "field U, V as half floats (default)");
   cmd->add_flag("--float", args->full, "field U, V as 32-bit floats")->excludes(half);
   cmd->add_option("--verify-rays", args->verify_rays,
@@ -79,12 +86,13 @@ inline std::string asset_summary(const nlohmann::json& report) {
   char line[512];
   const nlohmann::json& f = report["geometry_field"];
   std::snprintf(line, sizeof(line),
-                "image %d^2 (%s), field N = %d, K = %d (casts %.2f s, write %.2f s), GPU %.1f MB "
-                "(image) + %.1f MB (field at 8 bits)",
+                "image %d^2 (%s), field N = %d, format %d, K = %d (casts %.2f s, write %.2f s), "
+                "GPU %.1f MB (image) + %.1f MB (field at 8 bits)",
                 report["geometry_image"]["size"].get<int>(),
                 report["geometry_image"].value("route", std::string("?")).c_str(),
-                f["samples_per_side"].get<int>(), f["layers"].get<int>(),
-                f["cast_seconds"].get<double>(), f["write_seconds"].get<double>(),
+                f["samples_per_side"].get<int>(), f.value("format_version", 2),
+                f["layers"].get<int>(), f["cast_seconds"].get<double>(),
+                f["write_seconds"].get<double>(),
                 f["gpu_bytes"]["geometry_image"].get<double>() / 1e6,
                 f["gpu_bytes"]["geometry_field_8bit"].get<double>() / 1e6);
   std::string text = line;

@@ -17,13 +17,15 @@ namespace gfield {
 void add_field_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "field",
-      "Build the geometry field of a geometry image: for every pair of the 6N^2 box-face\n"
-      "samples, the image uv of the first hit of the ray between them, cast with Embree against\n"
-      "the parameterised mesh beside the image (X.gimage.obj), and the next hits along it up to\n"
-      "K layers. Writes a (6N^2)^2 EXR (hitL.U, hitL.V per layer L).");
+      "Build the geometry field of a geometry image: for every line through two of the 6N^2\n"
+      "box-face samples on different faces, the image uvs of its hits, cast with Embree against\n"
+      "the parameterised mesh beside the image (X.gimage.obj). Writes the compact field\n"
+      "(format 3: the hit nearest each end of every line, the hits between for the few lines\n"
+      "with more than two; docs/formats.md), or with --format 2 the layered one.");
   struct Arguments {
     std::string mesh, image, output;
     int samples = 24;
+    int format = kFieldFormatVersion;
     int layers = kAutoLayers;
     bool half = false;
     bool full = false;
@@ -38,13 +40,13 @@ void add_field_command(CLI::App& app) {
                   "N, samples per side of each box face (" + std::to_string(kMinSamplesPerSide) +
                       " to " + std::to_string(kMaxSamplesPerSide) + ")")
       ->capture_default_str();
-  add_layers_option(cmd, args->layers);
+  add_field_format_options(cmd, args->format, args->layers);
   auto* half = cmd->add_flag("--half", args->half, "store U, V as half floats (default)");
   cmd->add_flag("--float", args->full, "store U, V as 32-bit floats")->excludes(half);
   cmd->callback([args] {
     std::string error;
     const bool use_half = !args->full;
-    if (!check_field_size(args->samples, args->layers, use_half, error)) {
+    if (!check_field_size(args->samples, use_half, error)) {
       throw CommandError(args->output + ": " + error);
     }
     ExrAssetHeader header;
@@ -72,14 +74,13 @@ void add_field_command(CLI::App& app) {
     }
     const int side = sample_count(args->samples);
     std::printf("field N = %d: %d x %d sample pairs, ~%.0f MB in memory (%s)\n", args->samples,
-                side, side,
-                double(field_memory_estimate(args->samples, args->layers, use_half)) / 1e6,
+                side, side, double(field_memory_estimate(args->samples, use_half)) / 1e6,
                 use_half ? "half" : "float");
     std::fflush(stdout);
     FieldFileReport report;
-    if (!write_field_file(image, pm, args->samples, args->layers,
-                          use_half ? ExrPrecision::kHalf : ExrPrecision::kFloat, args->output,
-                          report, error)) {
+    const FieldFileFormat format{args->format, args->layers,
+                                 use_half ? ExrPrecision::kHalf : ExrPrecision::kFloat};
+    if (!write_field_file(image, pm, args->samples, format, args->output, report, error)) {
       throw CommandError(error);
     }
     std::printf(

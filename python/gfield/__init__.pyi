@@ -111,7 +111,7 @@ class GeometryField:
         """N."""
     @property
     def layers(self) -> int:
-        """K."""
+        """K, the hits a lookup reads per line (format 3: the most a line holds, at most 8)."""
     @property
     def box(self) -> npt.NDArray[np.float32]:
         """(2, 3): min and max corners."""
@@ -122,8 +122,12 @@ class GeometryField:
     @property
     def image(self) -> GeometryImage | None: ...
     @property
-    def table(self) -> npt.NDArray[np.float32]:
-        """(K, S, S, 2): table[layer, entry sample, exit sample] = uv; -1 fewer hits, -2 no ray."""
+    def nearest(self) -> npt.NDArray[np.float32]:
+        """(S, 5 N^2, 2): nearest[entry sample, column] = uv of the hit nearest the entry; -1 miss."""
+    def line_hits(self, entry: int, exit: int) -> npt.NDArray[np.float32]:
+        """(k, 2): every hit of the line from sample entry towards sample exit, in order."""
+    def table(self, layers: int = 4) -> npt.NDArray[np.float32]:
+        """(K, S, S, 2), computed: table[layer, entry, exit] = uv; -1 fewer hits, -2 no ray."""
     def lookup(
         self,
         origins: _Floats,
@@ -145,6 +149,7 @@ def build(
     size: int | Literal["auto"] = "auto",
     max_image_error: float = 0.005,
     samples: int = 24,
+    format: Literal[3, 2] = 3,
     layers: int | Literal["auto"] = "auto",
     precision: Literal["half", "float"] = "half",
     verify_rays: int = 100000,

@@ -53,7 +53,7 @@ void check_choice(const char* name, const std::string& value,
 
 py::object build(const std::filesystem::path& mesh_path, const std::filesystem::path& out,
                  const std::string& part, const py::object& size, double max_image_error,
-                 int samples, const py::object& layers, const std::string& precision,
+                 int samples, int format, const py::object& layers, const std::string& precision,
                  long long verify_rays, const std::string& method, const std::string& components,
                  bool allow_outside_paths, int threads, const py::object& progress) {
   AssetArguments args;
@@ -68,6 +68,10 @@ py::object build(const std::filesystem::path& mesh_path, const std::filesystem::
     throw py::value_error("max_image_error: " + problem);
   }
   args.samples = samples;
+  if (format != kFieldFormatVersion && format != kLayeredFieldVersion) {
+    throw py::value_error("format: expected 3 or 2, got " + std::to_string(format));
+  }
+  args.format = format;
   args.layers = layers_value(layers);
   check_choice("precision", precision, {"half", "float"});
   args.full = precision == "float";
@@ -109,8 +113,9 @@ py::object build(const std::filesystem::path& mesh_path, const std::filesystem::
 void bind_build(py::module_& m) {
   m.def("build", &build, py::arg("mesh_path"), py::arg("out"), py::kw_only(), py::arg("mesh") = "",
         py::arg("size") = "auto", py::arg("max_image_error") = kDefaultMaxMeanError,
-        py::arg("samples") = 24, py::arg("layers") = "auto", py::arg("precision") = "half",
-        py::arg("verify_rays") = 100000, py::arg("method") = "auto", py::arg("components") = "all",
+        py::arg("samples") = 24, py::arg("format") = kFieldFormatVersion,
+        py::arg("layers") = "auto", py::arg("precision") = "half", py::arg("verify_rays") = 100000,
+        py::arg("method") = "auto", py::arg("components") = "all",
         py::arg("allow_outside_paths") = false, py::arg("threads") = 0,
         py::arg("progress") = py::none(),
         "Builds the asset OUT (DIR/NAME: NAME.gimage.exr, NAME.gimage.obj, NAME.gfield.exr,\n"
@@ -118,7 +123,8 @@ void bind_build(py::module_& m) {
         "the report (the dict of NAME.report.json).\n\n"
         "The options are gfield build's: mesh (--mesh, glTF), size ('auto' or texels per\n"
         "side, 8 to 8192), max_image_error (percent of the diagonal, for size='auto'),\n"
-        "samples (N, 4 to 48), layers ('auto' or K, 1 to 4), precision ('half' or 'float'),\n"
+        "samples (N, 4 to 48), format (3: compact, or 2: layered), layers (format 2: 'auto'\n"
+        "or K, 1 to 4), precision ('half' or 'float'),\n"
         "verify_rays (per family; 0 skips the accuracy), method ('auto', 'orbifold',\n"
         "'square'), components ('all', 'largest'), allow_outside_paths, threads (0: all\n"
         "cores).\n\n"

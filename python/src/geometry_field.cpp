@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "gfield/exr_io.hpp"
+#include "gfield/field_lines.hpp"
 #include "gfield/field_lookup.hpp"
 #include "gfield/printable.hpp"
 #include "python/src/bindings.hpp"
@@ -120,12 +121,56 @@ py::dict lookup_rays(const FieldAsset& asset, const py::object& origins,
   return answer;
 }
 
-/// The table as the GeometryField struct holds it: K layers of (6N^2)^2 uvs (layer, entry
-/// sample, exit sample, u/v), viewed. The one place that knows the field's storage.
-py::array table_view(const py::object& self) {
+/// The nearest-hit table as the GeometryField struct holds it: (6N^2, 5N^2, 2), viewed.
+py::array nearest_view(const py::object& self) {
   const GeometryField& field = self.cast<const FieldAsset&>().field;
+  return read_only_view(&field.nearest.data()->x,
+                        {py::ssize_t(field_side(field)), py::ssize_t(field_columns(field)), 2},
+                        self);
+}
+
+/// The layered table of `layers` hits per ray (format 2's): (K, 6N^2, 6N^2, 2), computed.
+py::array layered_table(const FieldAsset& a, int layers) {
+  const GeometryField& field = a.field;
+  if (layers < 1 || layers > kMaxLineHits) {
+    throw py::value_error("layers: expected 1 to " + std::to_string(kMaxLineHits) + ", got " +
+                          std::to_string(layers));
+  }
   const auto side = py::ssize_t(field_side(field));
-  return read_only_view(&field.uv.data()->x, {py::ssize_t(field.layers), side, side, 2}, self);
+  py::array_t<float> table({py::ssize_t(layers), side, side, py::ssize_t(2)});
+  float* out = table.mutable_data();
+  {
+    py::gil_scoped_release release;
+    const size_t count = size_t(side) * size_t(side);
+    for (size_t pair = 0; pair < count; ++pair) {
+      for (int l = 0; l < layers; ++l) {
+        const glm::vec2 uv = field_uv(field, int(pair / size_t(side)), int(pair % size_t(side)), l);
+        out[2 * (size_t(l) * count + pair)] = uv.x;
+        out[2 * (size_t(l) * count + pair) + 1] = uv.y;
+      }
+    }
+  }
+  return table;
+}
+
+/// Every hit of the line from `entry` towards `exit`: (k, 2).
+py::array line_hits_array(const FieldAsset& a, int entry, int exit) {
+  const GeometryField& field = a.field;
+  const int side = field_side(field);
+  if (entry < 0 || exit < 0 || entry >= side || exit >= side) {
+    throw py::value_error("entry and exit: sample indices in [0, " + std::to_string(side) +
+                          "), got " + std::to_string(entry) + ", " + std::to_string(exit));
+  }
+  if (field_uv(field, entry, exit).x == kFieldNoRay) {
+    return py::array_t<float>(std::vector<py::ssize_t>{0, 2});
+  }
+  const LineHits hits = line_hits(field, entry, exit);
+  py::array_t<float> out(std::vector<py::ssize_t>{hits.count, 2});
+  for (int k = 0; k < hits.count; ++k) {
+    out.mutable_at(k, 0) = hits.uv[size_t(k)].x;
+    out.mutable_at(k, 1) = hits.uv[size_t(k)].y;
+  }
+  return out;
 }
 
 }  // namespace
@@ -133,21 +178,22 @@ py::array table_view(const py::object& self) {
 void bind_geometry_field(py::module_& m) {
   py::class_<FieldAsset, std::shared_ptr<FieldAsset>>(
       m, "GeometryField",
-      "A geometry field (NAME.gfield.exr, docs/geometry-field.md): for every pair of the 6N^2\n"
-      "samples on the faces of the object's box (entry, exit), the geometry-image uvs of the\n"
-      "first K hits of the line between them; with its geometry image, lookups of any ray.")
+      "A geometry field (NAME.gfield.exr, docs/geometry-field.md): for every line through two\n"
+      "of the 6N^2 samples on the faces of the object's box, the geometry-image uvs of its\n"
+      "hits; with its geometry image, lookups of any ray.")
       .def_static("load", &load, py::arg("path"), py::arg("image") = py::none(),
-                  "Reads NAME.gfield.exr (format versions 1 and 2) and the geometry image it\n"
+                  "Reads NAME.gfield.exr (format versions 1 to 3) and the geometry image it\n"
                   "indexes: `image` (a GeometryImage or a path) or, when None, NAME.gimage.exr\n"
                   "beside it if that exists (lookup needs one). Raises gfield.Error with the\n"
                   "reader's one-line message for a damaged file, or when the image does not\n"
                   "belong to the field (box, source or build id).")
       .def_property_readonly(
           "samples_per_side", [](const FieldAsset& a) { return a.field.samples_per_side; },
-          "N, samples per side of each box face (the table is 6N^2 x 6N^2).")
+          "N, samples per side of each box face (6N^2 samples).")
       .def_property_readonly(
           "layers", [](const FieldAsset& a) { return a.field.layers; },
-          "K, hits stored per line (1 to 4).")
+          "K, the hits a lookup reads per line: the most a line holds (format 3, at most 8),\n"
+          "the layers of a format-2 file, 1 for format 1.")
       .def_property_readonly(
           "box", [](const FieldAsset& a) { return box_to_python(a.field.box); },
           "(2, 3) float32: the box's min and max corners, mesh coordinates.")
@@ -160,11 +206,20 @@ void bind_geometry_field(py::module_& m) {
       .def_property_readonly(
           "image", [](const FieldAsset& a) { return a.image; },
           "The GeometryImage it is looked up with, or None.")
-      .def_property_readonly("table", &table_view,
-                             "(K, 6N^2, 6N^2, 2) float32, read-only: table[l, entry, exit] is the\n"
-                             "uv of hit l + 1 on the line from sample `entry` towards sample\n"
-                             "`exit` (sample index face * N^2 + b * N + a, docs/formats.md);\n"
-                             "(-1, -1): fewer hits, (-2, -2): both samples on one face.")
+      .def_property_readonly("nearest", &nearest_view,
+                             "(6N^2, 5N^2, 2) float32, read-only: the nearest-hit table,\n"
+                             "nearest[entry, column] the uv of the hit nearest sample `entry` on\n"
+                             "the line towards the exit sample at `column` (the samples of the\n"
+                             "five other faces in order, docs/formats.md); (-1, -1): a miss.")
+      .def("line_hits", &line_hits_array, py::arg("entry"), py::arg("exit"),
+           "(k, 2) float32: every hit of the line from sample `entry` towards sample `exit`\n"
+           "(index face * N^2 + b * N + a, docs/formats.md), in order from `entry` (k = 0 for\n"
+           "a line that misses or two samples on one face).")
+      .def("table", &layered_table, py::arg("layers") = kMaxFieldLayers,
+           "(K, 6N^2, 6N^2, 2) float32, computed: the layered table of format 2, table[l,\n"
+           "entry, exit] the uv of hit l + 1 on the line from sample `entry` towards sample\n"
+           "`exit`; (-1, -1): fewer hits, (-2, -2): both samples on one face. K = `layers`\n"
+           "(1 to 8; 4 GB at N = 24 and K = 8).")
       .def("lookup", &lookup_rays, py::arg("origins"), py::arg("directions"),
            py::arg("t_min") = 0.0f, py::arg("mode") = "refined",
            "The first hit beyond t_min of R rays origin + t * direction (mesh coordinates),\n"

@@ -52,6 +52,7 @@ GF_CONST int BUFFER_BVH_NODES = 2;      // GpuBvhNode[]: every mesh's BVH, one a
 GF_CONST int BUFFER_BVH_TRIANGLES = 3;  // GpuBvhTriangle[]: their triangles in leaf order
 GF_CONST int BUFFER_BVH_SHADING = 4;    // GpuBvhShading[]: the same triangles' shading data
 GF_CONST int BUFFER_WORK = 5;           // uint[WORK_COUNT]: work counters (GF_COUNT_WORK)
+GF_CONST int BUFFER_FIELD_LINES = 6;    // uint[]: every field's line table and interior hits
 
 // Work counters (runtime/work_counters.hpp), summed over a frame's fragments: what a lookup or a
 // traversal costs, independent of the device.
@@ -69,7 +70,8 @@ GF_CONST int WORK_COUNT = 8;
 // same texture in every pass.
 GF_CONST int UNIT_GI_POSITIONS = 0;   // 2D array RGBA32F: P (mesh coordinates), coverage A in w
 GF_CONST int UNIT_GI_NORMALS = 1;     // 2D array RGBA32F: unit normals
-GF_CONST int UNIT_FIELDS = 2;         // 2D array RG8/RG16/RG32F: uv codes, texel (exit, entry)
+GF_CONST int UNIT_FIELDS = 2;         // 2D array RG8/RG16/RG32F: nearest-hit uv codes, texel
+                                      // (column, entry), a field per layer
 GF_CONST int UNIT_PROBE_ORIGINS = 3;  // field probe: ray origins (xyz) and t_min (w)
 GF_CONST int UNIT_PROBE_DIRECTIONS = 4;  // field probe: ray directions (xyz) and t_max (w)
 GF_CONST int UNIT_ENVIRONMENT = 5;    // 2D array RGBA32F: equirect layer 0 or six cube faces
@@ -101,16 +103,58 @@ GF_INLINE float gf_encode_field_component(float uv, int bits) {
   if (uv < 0.0f) return top;
   return round(min(uv, 1.0f) * (top - 2.0f));
 }
-GF_INLINE float gf_decode_field_component(float texel, int bits) {
-  if (bits >= 32) return texel;
+// A component's code (an integer, bits < 32) as a uv component, -1 or -2.
+GF_INLINE float gf_decode_field_code(float code, int bits) {
   float top = float((1 << bits) - 1);
-  float code = round(texel * top);
   if (code > top - 0.5f) return -1.0f;
   if (code > top - 1.5f) return -2.0f;
   return code / (top - 2.0f);
 }
+GF_INLINE float gf_decode_field_component(float texel, int bits) {
+  if (bits >= 32) return texel;
+  return gf_decode_field_code(round(texel * float((1 << bits) - 1)), bits);
+}
 GF_INLINE vec2 gf_decode_field_texel(vec2 texel, int bits) {
   return vec2(gf_decode_field_component(texel.x, bits), gf_decode_field_component(texel.y, bits));
+}
+
+// The compact geometry field (format version 3; docs/formats.md, "Geometry field"). Each line
+// through two samples on different faces holds its hits h1..hn in order from its lower sample
+// index (at most FIELD_MAX_LINE_HITS: a line with more keeps the 4 nearest each end).
+// - The nearest-hit table: for every ordered pair (entry, exit) on different faces, the hit
+//   nearest the entry (h1 from the lower sample, hn from the higher), or a miss; (6N^2) rows (the
+//   entry sample) of 5N^2 columns (the exit sample among the five other faces:
+//   gf_field_column).
+// - The line table, uint words: the lines of 1 hit or of 3 or more (a line without an entry
+//   holds 0 or 2: its nearest hits), by tiles of FIELD_TILE x FIELD_TILE lines of the table
+//   (row = the lower sample, column = the higher one's). Words [0, tiles): 0, or the word where
+//   the tile's record starts; a record: 64 bits of which lines have an entry (slot
+//   gf_field_tile_slot; words 0 and 1), the half-word index of the tile's first entry (word 2)
+//   and the index of its first interior hit (word 3). Entries are 16 bits, two per word (the
+//   first in the low half), in slot order: the hit count n (bits 0-3) and the offset of the
+//   line's interior hits h2..h(n-1) from the record's first (bits 4-15).
+// - The interior hits, in order from each line's lower sample.
+GF_CONST int FIELD_MAX_LINE_HITS = 8;
+GF_CONST int FIELD_TILE = 8;
+// Columns of the nearest-hit table: 5 N^2.
+GF_INLINE int gf_field_columns(int n) { return 5 * n * n; }
+// The column of exit sample `exit` in entry sample `entry`'s row (their faces differ, so the
+// exit's face comes after the entry's exactly when exit > entry): no division, which llvmpipe
+// runs lane by lane.
+GF_INLINE int gf_field_column(int n, int entry, int exit) {
+  return exit > entry ? exit - n * n : exit;
+}
+// Tiles per row of the line table, and tiles in all: the words before the records.
+GF_INLINE int gf_field_tile_columns(int n) { return (5 * n * n + FIELD_TILE - 1) / FIELD_TILE; }
+GF_INLINE int gf_field_tiles(int n) {
+  return (6 * n * n + FIELD_TILE - 1) / FIELD_TILE * gf_field_tile_columns(n);
+}
+// The tile of the line (low, high) at `column` = gf_field_column(n, low, high), and its slot.
+GF_INLINE int gf_field_tile(int n, int low, int column) {
+  return low / FIELD_TILE * gf_field_tile_columns(n) + column / FIELD_TILE;
+}
+GF_INLINE int gf_field_tile_slot(int low, int column) {
+  return low % FIELD_TILE * FIELD_TILE + column % FIELD_TILE;
 }
 
 // One scene object (std430, 320 bytes).
@@ -129,7 +173,9 @@ struct GpuObject {
   ivec4 kind;   // SHAPE_*, MATERIAL_*, TEXTURE_*, 0
   ivec4 asset;  // mesh: image layer, samples per side N, geometry-image size n, 1 when the
                 // geometry image holds albedo (UNIT_GI_ALBEDO) else 0
-  ivec4 field;  // mesh: first layer of its field in the field array, layers K, bits, 0
+  ivec4 field;  // mesh: its layer in the nearest-hit array (UNIT_FIELDS), the first word of
+                // its line table and of its interior hits in BUFFER_FIELD_LINES, bits per uv
+                // component + 256 * the hits a lookup reads per line (GeometryField::layers)
   ivec4 image;  // mesh: texel (x, y) of its geometry image's corner in layer asset.x (images
                 // share layers: runtime/image_atlas.hpp); z: the root of its BVH in
                 // BUFFER_BVH_NODES (-1: none loaded); w: 0

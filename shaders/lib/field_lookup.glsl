@@ -9,11 +9,9 @@
 // their callers, GF_OUT/GF_INOUT for output parameters, GF_IN for structs passed in (a const
 // reference in C++).
 //
-// The includer defines, before including this file (GLSL) or as members (C++):
-//   int  gf_samples_per_side();             N of the field
-//   int  gf_field_layers();                 K, hits stored per line (layers looked up)
-//   vec2 gf_field_texel(int layer, int entry, int exit);  stored uv of the pair's hit `layer`
-//                                           (texelFetch, row = entry; < 0: miss or no ray)
+// The includer includes field_lines.glsl before this file (the hits of a line: gf_line_hit, with
+// the fetches it needs) and defines, before including this file (GLSL) or as members (C++):
+//   int  gf_field_layers();                 K, the hits looked up per line at most
 //   int  gf_image_size();                    n of the geometry image (n >= 2)
 //   vec3 gf_image_position_texel(int i, int j);  position texel, column i, scanline j (texelFetch)
 //   vec3 gf_image_normal_texel(int i, int j);    normal texel (texelFetch)
@@ -27,6 +25,7 @@
 // Conventions (docs/geometry-field.md): rays are origin + t * direction in mesh (object)
 // coordinates, t in [t_min, t_max]; a hit's t is along the given (unnormalised) direction.
 
+#ifndef GF_INOUT
 #ifdef __cplusplus
 #define GF_IN(T) const T&
 #define GF_OUT(T) T&
@@ -35,6 +34,7 @@
 #define GF_IN(T) in T
 #define GF_OUT(T) out T
 #define GF_INOUT(T) inout T
+#endif
 #endif
 
 // Work counting (shaders/lib/work.glsl): the includer may define GF_COUNT(kind, n) to count the
@@ -300,11 +300,12 @@ struct GfLine {
 // line's origin: its projection onto the ray at least t_min + margin (for `last`, whose layers
 // run from the exit side: at most t_max - margin); the last layer K - 1 is taken as it is (K = 1
 // is the single-layer lookup). uv: that layer's stored uv. -1 when the line has no further hit.
+// `hits`: the pair's line as read so far (gf_line_unread() at first).
 int gf_layer_beyond(GF_IN(GfLine) line, int layer, int entry, int exit, float margin,
-                    GF_OUT(vec2) uv) {
+                    GF_OUT(vec2) uv, GF_INOUT(GfLineHits) hits) {
   uv = vec2(-1.0f);
   for (int l = layer; l < gf_field_layers(); l++) {
-    uv = gf_field_texel(l, entry, exit);
+    uv = gf_line_hit(entry, exit, l, hits);
     if (uv.x < 0.0f) {
       return -1;
     }
@@ -323,7 +324,8 @@ int gf_layer_beyond(GF_IN(GfLine) line, int layer, int entry, int exit, float ma
 // entry and exit samples.
 GfHit gf_trace_nearest(GF_IN(GfLine) line) {
   vec2 uv;
-  if (gf_layer_beyond(line, 0, line.k_entry.x, line.k_exit.x, line.margin, uv) < 0) {
+  GfLineHits hits = gf_line_unread();
+  if (gf_layer_beyond(line, 0, line.k_entry.x, line.k_exit.x, line.margin, uv, hits) < 0) {
     return gf_miss();
   }
   return gf_hit_at(line.o, line.d, line.t_min, line.t_max, uv);
@@ -338,7 +340,8 @@ GfHit gf_trace_linear(GF_IN(GfLine) line) {
   for (int i = 0; i < 4; i++) {
     for (int j = 0; j < 4; j++) {
       vec2 uv;
-      if (gf_layer_beyond(line, 0, line.k_entry[i], line.k_exit[j], line.margin, uv) >= 0) {
+      GfLineHits hits = gf_line_unread();
+      if (gf_layer_beyond(line, 0, line.k_entry[i], line.k_exit[j], line.margin, uv, hits) >= 0) {
         weight += line.w_entry[i] * line.w_exit[j];
         uv_sum += (line.w_entry[i] * line.w_exit[j]) * uv;
       }
@@ -378,7 +381,8 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   float weight = 0.0f;
   for (int i = 0; i < 4; i++) {
     for (int j = 0; j < 4; j++) {
-      if (gf_field_texel(0, line.k_entry[i], line.k_exit[j]).x >= 0.0f) {
+      GfLineHits nearest_only = gf_line_unread();
+      if (gf_line_hit(line.k_entry[i], line.k_exit[j], 0, nearest_only).x >= 0.0f) {
         weight += line.w_entry[i] * line.w_exit[j];
       }
     }
@@ -387,11 +391,16 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   vec3 start = line.o + (line.last ? line.t_max : line.t_min) * line.d;
   for (int i = 0; i < 4; i++) {
     for (int j = 0; j < 4; j++) {
-      vec2 uv;
-      int layer = gf_layer_beyond(line, 0, line.k_entry[i], line.k_exit[j], 0.0f, uv);
-      while (layer >= 0) {
+      GfLineHits hits = gf_line_unread();
+      // One call of gf_layer_beyond (each call is inlined: see gf_trace_from).
+      for (int next = 0; next < gf_field_layers();) {
+        vec2 uv;
+        int layer = gf_layer_beyond(line, next, line.k_entry[i], line.k_exit[j], 0.0f, uv, hits);
+        if (layer < 0) {
+          break;
+        }
         vec3 p;
-        int next = layer + 2;
+        next = layer + 2;
         if (gf_refine(line.o, e1, e2, tolerance, seams, start, uv, p)) {
           float t = dot(p - line.o, line.d) / dot(line.d, line.d);
           if (t >= line.t_min && t <= line.t_max) {
@@ -408,7 +417,6 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
           }
           next = layer + 1;
         }
-        layer = gf_layer_beyond(line, next, line.k_entry[i], line.k_exit[j], 0.0f, uv);
       }
     }
   }

@@ -1,16 +1,18 @@
 // The scene's geometry images and geometry fields on the GPU (runtime/gpu_assets.hpp): four
 // 2D-array textures read with texelFetch (positions, normals, albedo: each geometry image a
-// square of a layer, runtime/image_atlas.hpp; fields: K consecutive layers per geometry field, its hits along each line, the field's
-// uvs as the contract's codes, gf_decode_field_texel). A lookup first selects its asset with
-// gs_select_asset(); the functions that shaders/lib/field_lookup.glsl expects then read that
-// asset's layers.
+// square of a layer, runtime/image_atlas.hpp; the fields' nearest-hit tables, one layer per
+// field, the uvs as the contract's codes, gf_decode_field_texel) and one storage buffer of the
+// fields' line tables and interior hits (BUFFER_FIELD_LINES). A lookup first selects its asset
+// with gs_select_asset(); the functions that shaders/lib/field_lines.glsl and field_lookup.glsl
+// expect then read that asset's layers.
 
 #include "lib/contract.glsl"
 #include "lib/work.glsl"
 
 layout(binding = UNIT_GI_POSITIONS) uniform sampler2DArray u_gi_positions;  // xyz P, w A
 layout(binding = UNIT_GI_NORMALS) uniform sampler2DArray u_gi_normals;      // xyz unit normal
-layout(binding = UNIT_FIELDS) uniform sampler2DArray u_fields;  // xy uv code, texel (exit, entry)
+layout(binding = UNIT_FIELDS) uniform sampler2DArray u_fields;  // xy uv code, texel (column, entry)
+layout(std430, binding = BUFFER_FIELD_LINES) readonly buffer FieldLines { uint gs_field_words[]; };
 layout(binding = UNIT_GI_ALBEDO) uniform sampler2DArray u_gi_albedo;  // rgb linear albedo
 
 int gs_layer = 0;
@@ -18,32 +20,56 @@ ivec2 gs_image_origin = ivec2(0);
 int gs_samples_per_side = 0;
 int gs_image_size = 2;
 int gs_field_layer = 0;
+int gs_field_lines = 0;
+int gs_field_interior = 0;
 int gs_field_layers = 1;
 int gs_field_bits = 32;
 vec3 gs_box_min = vec3(0.0f);
 vec3 gs_box_max = vec3(1.0f);
 
 // image_layer, samples_per_side, image_size: GpuObject.asset.xyz; the image's corner in its
-// layer: GpuObject.image.xy; field_layer, field_layers, field_bits: GpuObject.field.xyz; the box:
-// GpuObject.box_min/box_max.
-void gs_select_asset(ivec3 asset, ivec2 image_origin, ivec3 field, vec3 box_min, vec3 box_max) {
+// layer: GpuObject.image.xy; the field's layer, line table, interior hits, bits + 256 layers:
+// GpuObject.field; the box: GpuObject.box_min/box_max.
+void gs_select_asset(ivec3 asset, ivec2 image_origin, ivec4 field, vec3 box_min, vec3 box_max) {
   gs_layer = asset.x;
   gs_image_origin = image_origin;
   gs_samples_per_side = asset.y;
   gs_image_size = asset.z;
   gs_field_layer = field.x;
-  gs_field_layers = field.y;
-  gs_field_bits = field.z;
+  gs_field_lines = field.y;
+  gs_field_interior = field.z;
+  gs_field_bits = field.w % 256;
+  gs_field_layers = field.w / 256;
   gs_box_min = box_min;
   gs_box_max = box_max;
 }
 
 int gf_samples_per_side() { return gs_samples_per_side; }
 int gf_field_layers() { return gs_field_layers; }
-vec2 gf_field_texel(int layer, int entry, int exit) {
+vec2 gf_field_nearest_texel(int entry, int column) {
   WORK_ADD(WORK_FIELD_FETCHES, 1);
-  vec2 texel = texelFetch(u_fields, ivec3(exit, entry, gs_field_layer + layer), 0).xy;
+  vec2 texel = texelFetch(u_fields, ivec3(column, entry, gs_field_layer), 0).xy;
   return gf_decode_field_texel(texel, gs_field_bits);
+}
+uint gf_field_word(int i) {
+  WORK_ADD(WORK_FIELD_FETCHES, 1);
+  return gs_field_words[gs_field_lines + i];
+}
+// Interior hit i: two 8-bit codes (u low) in half a word, two 16-bit codes in a word, or two
+// floats in two words (runtime/gpu_assets.cpp, gfield/gpu_storage.hpp: field_interior_words).
+vec2 gf_field_interior_texel(int i) {
+  WORK_ADD(WORK_FIELD_FETCHES, 1);
+  if (gs_field_bits == 8) {
+    uint w = gs_field_words[gs_field_interior + i / 2] >> uint(16 * (i % 2));
+    return vec2(gf_decode_field_code(float(w & 255u), 8),
+                gf_decode_field_code(float((w >> 8u) & 255u), 8));
+  }
+  if (gs_field_bits == 16) {
+    uint w = gs_field_words[gs_field_interior + i];
+    return vec2(gf_decode_field_code(float(w & 65535u), 16), gf_decode_field_code(float(w >> 16u), 16));
+  }
+  return vec2(uintBitsToFloat(gs_field_words[gs_field_interior + 2 * i]),
+              uintBitsToFloat(gs_field_words[gs_field_interior + 2 * i + 1]));
 }
 int gf_image_size() { return gs_image_size; }
 // Texel (i, j) of the selected image (0 <= i, j < n) in its layer.
@@ -81,4 +107,5 @@ vec3 gf_box_min() { return gs_box_min; }
 vec3 gf_box_max() { return gs_box_max; }
 
 #define GF_COUNT(kind, n) WORK_ADD(kind, n)
+#include "lib/field_lines.glsl"
 #include "lib/field_lookup.glsl"

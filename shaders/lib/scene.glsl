@@ -109,7 +109,7 @@ float shadow_epsilon(SceneHit hit) {
 
 // Makes mesh object k's geometry image and field the ones gf_* reads (gs_select_asset).
 void select_mesh(int k) {
-  gs_select_asset(objects[k].asset.xyz, objects[k].image.xy, objects[k].field.xyz,
+  gs_select_asset(objects[k].asset.xyz, objects[k].image.xy, objects[k].field,
                   objects[k].box_min.xyz, objects[k].box_max.xyz);
 }
 

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "gfield/gpu_contract.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -62,7 +64,8 @@ GeometryField tiny_field(const std::string& build_id) {
   field.samples_per_side = 1;
   field.source = "m.obj";
   field.build_id = build_id;
-  field.uv.assign(36, glm::vec2(kFieldMiss));
+  field.nearest.assign(30, glm::vec2(kFieldMiss));
+  field.lines.assign(size_t(gpu::gf_field_tiles(1)), 0u);
   return field;
 }
 

@@ -12,10 +12,13 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfVecAttribute.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
+
+#include "gfield/field_lines.hpp"
 
 namespace gfield {
 namespace {
@@ -41,26 +44,68 @@ GeometryImage make_image(int n) {
   return image;
 }
 
-GeometryField make_field(int n) {
+/// A layered table of N = n (as versions 1 and 2 hold it: `layers` tables of (6N^2)^2 uvs,
+/// index (layer * S + entry) * S + exit), as a build makes it: "no ray" on one face; else a line
+/// of (entry + exit) % 5 + 1 random hits (none where (entry + exit) % 4 == 0), the first
+/// `layers` of them from each end, misses after them.
+std::vector<glm::vec2> make_layered_table(int n, int layers) {
+  const size_t side = size_t(sample_count(n));
+  std::vector<glm::vec2> table(side * side * size_t(layers));
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const auto at = [&](int layer, size_t entry, size_t exit) -> glm::vec2& {
+    return table[(size_t(layer) * side + entry) * side + exit];
+  };
+  for (size_t low = 0; low < side; ++low) {
+    for (size_t high = low; high < side; ++high) {
+      const bool no_ray = face_sample(int(low), n).face == face_sample(int(high), n).face;
+      // The line's hits from `low`; the ray from `high` meets them in reverse.
+      const int count = no_ray || (low + high) % 4 == 0 ? 0 : int((low + high) % 5) + 1;
+      std::vector<glm::vec2> hits;
+      for (int k = 0; k < count; ++k) {
+        hits.emplace_back(u(rng), u(rng));
+      }
+      for (int layer = 0; layer < layers; ++layer) {
+        const bool hit = layer < count;
+        at(layer, low, high) = no_ray ? glm::vec2(kFieldNoRay)
+                               : hit  ? hits[size_t(layer)]
+                                      : glm::vec2(kFieldMiss);
+        at(layer, high, low) = no_ray ? glm::vec2(kFieldNoRay)
+                               : hit  ? hits[size_t(count - 1 - layer)]
+                                      : glm::vec2(kFieldMiss);
+      }
+    }
+  }
+  return table;
+}
+
+/// The compact field of make_layered_table(n, layers).
+GeometryField make_field(int n, int layers = kMaxFieldLayers) {
   GeometryField field;
   field.samples_per_side = n;
   field.box = {{0, 0, 0}, {1, 2, 3}};
   field.source = "field-test.obj";
-  const int side = sample_count(n);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  compact_layered_table(make_layered_table(n, layers), layers, field);
+  return field;
+}
+
+/// Expects field_uv of `a` and `b` to agree on every pair and the first `layers` layers, within
+/// `tolerance` (half floats keep uv to 2^-11 relative; -1 and -2 exactly).
+void expect_same_hits(const GeometryField& a, const GeometryField& b, int layers, float tolerance) {
+  const int side = field_side(a);
   for (int entry = 0; entry < side; ++entry) {
     for (int exit = 0; exit < side; ++exit) {
-      if (face_sample(entry, n).face == face_sample(exit, n).face) {
-        field.uv.emplace_back(kFieldNoRay, kFieldNoRay);
-      } else if ((entry + exit) % 4 == 0) {
-        field.uv.emplace_back(kFieldMiss, kFieldMiss);
-      } else {
-        field.uv.emplace_back(u(rng), u(rng));
+      for (int layer = 0; layer < layers; ++layer) {
+        const glm::vec2 x = field_uv(a, entry, exit, layer), y = field_uv(b, entry, exit, layer);
+        if (is_field_hit(x)) {
+          ASSERT_NEAR(x.x, y.x, tolerance) << entry << " " << exit << " " << layer;
+          ASSERT_NEAR(x.y, y.y, tolerance) << entry << " " << exit << " " << layer;
+        } else {
+          ASSERT_EQ(x, y) << entry << " " << exit << " " << layer;
+        }
       }
     }
   }
-  return field;
 }
 
 TEST(ExrIo, GeometryImageRoundTripsInFloatAndHalf) {
@@ -86,48 +131,26 @@ TEST(ExrIo, GeometryImageRoundTripsInFloatAndHalf) {
   }
 }
 
-/// make_field(n) with `layers` layers: layer l of a pair holds a hit where l < the pair's hits
-/// ((entry + exit) % 5 of them), a miss after; "no ray" in every layer.
-GeometryField make_layered_field(int n, int layers) {
-  const GeometryField first = make_field(n);
-  GeometryField field = first;
-  field.layers = layers;
-  const size_t side = size_t(sample_count(n));
-  field.uv.clear();
-  for (int layer = 0; layer < layers; ++layer) {
-    for (size_t k = 0; k < side * side; ++k) {
-      const glm::vec2 uv = first.uv[k];
-      const int hits = is_field_hit(uv) ? int((k / side + k % side) % 5) + 1 : 0;
-      field.uv.push_back(!is_field_hit(uv) ? uv
-                         : layer < hits    ? glm::fract(uv + 0.37f * float(layer))
-                                           : glm::vec2(kFieldMiss));
-    }
-  }
-  return field;
-}
-
 TEST(ExrIo, LayeredGeometryFieldRoundTrips) {
-  const GeometryField field = make_layered_field(3, kMaxFieldLayers);
+  const GeometryField field = make_field(3);
   const std::string path = temp_path("layers.gfield.exr");
   std::string error;
-  ASSERT_TRUE(save_geometry_field(path, field, ExrPrecision::kHalf, error)) << error;
+  ASSERT_TRUE(save_layered_geometry_field(path, field, kMaxFieldLayers, ExrPrecision::kHalf, error))
+      << error;
   ExrAssetHeader header;
   ASSERT_TRUE(load_asset_header(path, header, error)) << error;
-  EXPECT_EQ(header.version, kFieldFormatVersion);
+  EXPECT_EQ(header.version, kLayeredFieldVersion);
   EXPECT_EQ(header.layers, kMaxFieldLayers);
+  EXPECT_EQ(header.width, 54);
   GeometryField back;
   ASSERT_TRUE(load_geometry_field(path, back, error)) << error;
   EXPECT_EQ(back.layers, kMaxFieldLayers);
-  ASSERT_EQ(back.uv.size(), field.uv.size());
-  for (size_t k = 0; k < field.uv.size(); ++k) {
-    ASSERT_NEAR(back.uv[k].x, field.uv[k].x, 5e-4f) << k;
-    ASSERT_NEAR(back.uv[k].y, field.uv[k].y, 5e-4f) << k;
-  }
-  EXPECT_EQ(field_uv(back, 1, 40, 2), field_uv(field, 1, 40, 2));
+  expect_same_hits(field, back, kMaxFieldLayers, 5e-4f);
 }
 
 TEST(ExrIo, GeometryFieldRoundTripsInFloatAndHalf) {
   const GeometryField field = make_field(3);
+  ASSERT_FALSE(field.interior.empty());  // lines of 3 and more hits: the line table is used
   for (const ExrPrecision precision : {ExrPrecision::kFloat, ExrPrecision::kHalf}) {
     const std::string path = temp_path("field.gfield.exr");
     std::string error;
@@ -135,24 +158,18 @@ TEST(ExrIo, GeometryFieldRoundTripsInFloatAndHalf) {
     ExrAssetHeader header;
     ASSERT_TRUE(load_asset_header(path, header, error)) << error;
     EXPECT_EQ(header.format, "geometry-field");
+    EXPECT_EQ(header.version, kFieldFormatVersion);
     EXPECT_EQ(header.samples_per_side, 3);
-    EXPECT_EQ(header.width, 54);
+    EXPECT_EQ(header.width, 45);
     GeometryField back;
     ASSERT_TRUE(load_geometry_field(path, back, error)) << error;
     EXPECT_EQ(back.samples_per_side, 3);
+    EXPECT_EQ(back.layers, field.layers);
     EXPECT_EQ(back.source, "field-test.obj");
     EXPECT_EQ(back.box.max, field.box.max);
-    // Half floats keep uv to 2^-11 relative; -1 and -2 exactly.
-    const float tolerance = precision == ExrPrecision::kHalf ? 5e-4f : 0.0f;
-    ASSERT_EQ(back.uv.size(), field.uv.size());
-    for (size_t k = 0; k < field.uv.size(); ++k) {
-      if (is_field_hit(field.uv[k])) {
-        ASSERT_NEAR(back.uv[k].x, field.uv[k].x, tolerance);
-        ASSERT_NEAR(back.uv[k].y, field.uv[k].y, tolerance);
-      } else {
-        ASSERT_EQ(back.uv[k], field.uv[k]);
-      }
-    }
+    EXPECT_EQ(back.lines, field.lines);
+    ASSERT_EQ(back.interior.size(), field.interior.size());
+    expect_same_hits(field, back, kMaxLineHits, precision == ExrPrecision::kHalf ? 5e-4f : 0.0f);
   }
 }
 
@@ -287,10 +304,60 @@ TEST(ExrIo, VersionOneFieldsLoadAsOneLayer) {
   std::string error;
   ASSERT_TRUE(load_geometry_field(path, field, error)) << error;
   EXPECT_EQ(field.layers, 1);
-  EXPECT_EQ(field.uv.size(), size_t(54) * 54);
+  EXPECT_EQ(field.nearest.size(), size_t(54) * 45);
   ExrAssetHeader header;
   ASSERT_TRUE(load_asset_header(path, header, error)) << error;
   EXPECT_EQ(header.layers, 1);
+}
+
+/// Writes `table` (make_layered_table's layout, FLOAT) as a version-2 field of N = n.
+void write_layered(const std::string& path, int n, int layers,
+                   const std::vector<glm::vec2>& table) {
+  const int side = sample_count(n);
+  Imf::Header header(side, side);
+  header.insert("gfield.format", Imf::StringAttribute("geometry-field"));
+  header.insert("gfield.version", Imf::IntAttribute(2));
+  header.insert("gfield.boxMin", Imf::V3fAttribute({0, 0, 0}));
+  header.insert("gfield.boxMax", Imf::V3fAttribute({1, 1, 1}));
+  header.insert("gfield.samplesPerSide", Imf::IntAttribute(n));
+  header.insert("gfield.layers", Imf::IntAttribute(layers));
+  Imf::FrameBuffer fb;
+  const size_t count = size_t(side) * size_t(side);
+  for (int layer = 0; layer < layers; ++layer) {
+    for (int c = 0; c < 2; ++c) {
+      const std::string name = "hit" + std::to_string(layer) + (c == 0 ? ".U" : ".V");
+      header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+      char* base = const_cast<char*>(reinterpret_cast<const char*>(&table[size_t(layer) * count]));
+      fb.insert(name, Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(glm::vec2),
+                                 sizeof(glm::vec2) * size_t(side)));
+    }
+  }
+  Imf::OutputFile file(path.c_str(), header);
+  file.setFrameBuffer(fb);
+  file.writePixels(side);
+}
+
+// A version-2 file as the layered builds wrote it loads into the compact field with the same
+// hits from both ends of every line.
+TEST(ExrIo, VersionTwoFieldsLoadWithEveryStoredHit) {
+  const int n = 3, layers = 3;
+  const std::vector<glm::vec2> table = make_layered_table(n, layers);
+  const std::string path = temp_path("v2.gfield.exr");
+  write_layered(path, n, layers, table);
+  GeometryField field;
+  std::string error;
+  ASSERT_TRUE(load_geometry_field(path, field, error)) << error;
+  EXPECT_EQ(field.layers, layers);
+  const int side = sample_count(n);
+  for (int entry = 0; entry < side; ++entry) {
+    for (int exit = 0; exit < side; ++exit) {
+      for (int layer = 0; layer < layers; ++layer) {
+        const size_t k =
+            (size_t(layer) * size_t(side) + size_t(entry)) * size_t(side) + size_t(exit);
+        ASSERT_EQ(field_uv(field, entry, exit, layer), table[k]) << entry << " " << exit;
+      }
+    }
+  }
 }
 
 void expect_field_error(const std::string& path, const std::string& fragment) {
@@ -320,26 +387,68 @@ TEST(ExrIo, RejectsFieldsWhoseLayersOrBitDepthDisagreeWithTheHeader) {
   expect_field_error(path, "one bit depth for all layers");
   write_raw(path, 54, 54, "geometry-field", 2, {"hit0.U", "hit0.V"}, 4, 1);
   expect_field_error(path, "expected 96x96 for N = 4");
-  write_raw(path, 54, 54, "geometry-field", 3, {"hit0.U", "hit0.V"}, 3, 1);
-  expect_field_error(path, "unsupported format version 3 (this build reads versions 1 to 2)");
+  write_raw(path, 45, 54, "geometry-field", 3, {"hit0.U", "hit0.V"}, 3, 1);
+  expect_field_error(path, "holds the channels hit.U, hit.V and line");
+  write_raw(path, 54, 54, "geometry-field", 4, {"hit0.U", "hit0.V"}, 3, 1);
+  expect_field_error(path, "unsupported format version 4 (this build reads versions 1 to 3)");
 }
 
 TEST(ExrIo, RejectsFieldsWhoseLayersAreOutOfOrder) {
   // A hit stored after a miss along the same line: the layers are not the line's hits in order.
-  GeometryField field = make_layered_field(3, 2);
+  std::vector<glm::vec2> table = make_layered_table(3, 2);
   const size_t side = size_t(sample_count(3));
   size_t k = 0;
-  while (is_field_hit(field.uv[k])) {  // a miss in layer 0 ...
+  while (table[k].x != kFieldMiss) {  // a miss in layer 0 ...
     ++k;
   }
-  while (field.uv[k].x != kFieldMiss) {
-    ++k;
-  }
-  field.uv[side * side + k] = glm::vec2(0.5f);  // ... followed by a hit in layer 1
+  table[side * side + k] = glm::vec2(0.5f);  // ... followed by a hit in layer 1
   const std::string path = temp_path("out-of-order.gfield.exr");
-  std::string error;
-  ASSERT_TRUE(save_geometry_field(path, field, ExrPrecision::kFloat, error)) << error;
+  write_layered(path, 3, 2, table);
   expect_field_error(path, "layer 1 disagrees with layer 0 at entry " + std::to_string(k / side));
+}
+
+// Version 3: a line table that disagrees with itself, its size or the interior hits is refused in
+// one line naming the file, never read past its end.
+TEST(ExrIo, RejectsCompactFieldsWhoseLineTableDisagrees) {
+  const GeometryField good = make_field(3);
+  const std::string path = temp_path("bad-lines.gfield.exr");
+  const auto expect_refused = [&](const GeometryField& bad, const std::string& fragment) {
+    std::string error;
+    ASSERT_TRUE(save_geometry_field(path, bad, ExrPrecision::kFloat, error)) << error;
+    SCOPED_TRACE(fragment);
+    expect_field_error(path, fragment);
+  };
+  const size_t tiles =
+      size_t(std::find_if(good.lines.begin(), good.lines.end(), [](uint32_t w) { return w != 0; }) -
+             good.lines.begin());
+  const uint32_t record = good.lines[tiles];
+  GeometryField bad = good;
+  bad.lines[tiles] += 4;  // a tile's record elsewhere than the next in tile order
+  expect_refused(bad, "(records in tile order, 4 words each)");
+  bad = good;
+  bad.lines[record] = bad.lines[record + 1] = 0;
+  expect_refused(bad, "its record marks no line");
+  bad = good;
+  bad.lines[record + 3] += 1;  // interior hits that start past where the tiles before end
+  expect_refused(bad, "first interior hit");
+  bad = good;
+  bad.lines.back() = (bad.lines.back() & 0xFFFF0000u) | 9u;  // a count above 8
+  expect_refused(bad, "hits at offset");
+  bad = good;
+  bad.lines.pop_back();
+  expect_refused(bad, "its entries run past the table's");
+  bad = good;
+  bad.lines.push_back(0u);
+  expect_refused(bad, "words and");
+  bad = good;
+  bad.interior.push_back(glm::vec2(0.5f));
+  expect_refused(bad, "interior hits, its entries need");
+  bad = good;
+  bad.nearest[7] = glm::vec2(1.5f, 0.5f);
+  expect_refused(bad, "is neither a uv in [0,1]^2 nor a miss");
+  bad = good;
+  bad.interior[0] = glm::vec2(-1.0f);
+  expect_refused(bad, "interior hit 0 (-1");
 }
 
 TEST(ExrIo, TruncatedFileIsAnErrorAndAFailedSaveLeavesNothing) {
@@ -353,7 +462,7 @@ TEST(ExrIo, TruncatedFileIsAnErrorAndAFailedSaveLeavesNothing) {
 
   // An inconsistent field is refused before anything is written.
   GeometryField bad = make_field(4);
-  bad.uv.pop_back();
+  bad.nearest.pop_back();
   const std::string target = temp_path("never-written.gfield.exr");
   fs::remove(target);
   EXPECT_FALSE(save_geometry_field(target, bad, ExrPrecision::kHalf, error));

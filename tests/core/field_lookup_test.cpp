@@ -16,6 +16,8 @@
 
 #include "gfield/field_lookup.hpp"
 
+#include "gfield/field_lines.hpp"
+
 namespace gfield {
 namespace {
 
@@ -92,7 +94,7 @@ void make_sphere_asset(SphereAsset& asset, int n, int samples) {
   field.box = box;
   field.source = "sphere";
   const size_t side = size_t(sample_count(samples));
-  field.uv.resize(2 * side * side);
+  std::vector<glm::vec2> table(2 * side * side);  // two layers, as a version-2 file holds them
   for (int entry = 0; entry < int(side); ++entry) {
     const FaceSample fe = face_sample(entry, samples);
     const glm::vec3 o = from_unit_cube(box, sample_point(fe, samples));
@@ -109,10 +111,11 @@ void make_sphere_asset(SphereAsset& asset, int n, int samples) {
         }
       }
       for (int layer = 0; layer < 2; ++layer) {
-        field.uv[size_t(layer) * side * side + size_t(entry) * side + size_t(exit)] = uv[layer];
+        table[size_t(layer) * side * side + size_t(entry) * side + size_t(exit)] = uv[layer];
       }
     }
   }
+  compact_layered_table(table, 2, field);
   std::string error;
   ASSERT_TRUE(make_field_lookup(field, image, asset.lookup, error)) << error;
 }
@@ -349,12 +352,12 @@ TEST_F(FieldLookupSphere, FieldAndImageMustBelongTogether) {
   EXPECT_FALSE(make_field_lookup(other, asset_->image, lookup, error));
   EXPECT_NE(error.find("torus"), std::string::npos);
   GeometryField truncated = asset_->field;
-  truncated.uv.pop_back();
+  truncated.nearest.pop_back();
   EXPECT_FALSE(make_field_lookup(truncated, asset_->image, lookup, error));
   GeometryField more_layers = asset_->field;
-  more_layers.layers = 3;  // the table holds two
+  more_layers.layers = kMaxLineHits + 1;
   EXPECT_FALSE(make_field_lookup(more_layers, asset_->image, lookup, error));
-  EXPECT_NE(error.find("K (6N^2)^2"), std::string::npos) << error;
+  EXPECT_NE(error.find("layers K outside [1, 8]"), std::string::npos) << error;
 }
 
 TEST(LookupMode, NamesRoundTrip) {

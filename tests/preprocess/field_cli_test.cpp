@@ -92,14 +92,18 @@ TEST_F(FieldCli, BuildWritesTheAssetAndItsReport) {
   ASSERT_TRUE(load_asset_header(name() + ".gfield.exr", header, error)) << error;
   EXPECT_EQ(header.source, "spot.obj");
   EXPECT_EQ(header.samples_per_side, 8);
-  // K chosen by default (spot's lines cross it up to 4 times and more) and the GPU bytes.
+  // The compact format by default (spot's lines cross it up to 4 times and more), its line table
+  // and the GPU bytes: the nearest-hit table, the line table's words and the interior hits.
   const nlohmann::json& field = report["geometry_field"];
+  EXPECT_EQ(header.version, kFieldFormatVersion);
   EXPECT_EQ(header.layers, field["layers"].get<int>());
-  EXPECT_TRUE(field["layers_chosen"].get<bool>());
-  EXPECT_GE(field["layers"].get<int>(), 2);
-  const size_t side = 6 * 8 * 8;
+  EXPECT_GE(field["layers"].get<int>(), 4);
+  EXPECT_EQ(field["format_version"], kFieldFormatVersion);
+  const size_t interior = field["line_table"]["interior_hits"].get<size_t>();
+  EXPECT_GT(interior, 0u);
   EXPECT_EQ(field["gpu_bytes"]["geometry_field_8bit"].get<size_t>(),
-            side * side * 2 * field["layers"].get<size_t>());
+            size_t(384) * 320 * 2 +
+                4 * (field["line_table"]["words"].get<size_t>() + (interior + 1) / 2));
   // Positions and normals RGBA32F, albedo RGBA16F (runtime/gpu_assets.hpp).
   EXPECT_EQ(field["gpu_bytes"]["geometry_image"].get<size_t>(), size_t(256) * 256 * (16 + 16 + 8));
 }
@@ -143,9 +147,9 @@ TEST_F(FieldCli, FieldLayersAndVerifyFieldBits) {
   fs::copy_file(name() + ".gimage.exr", out + ".gimage.exr", fs::copy_options::overwrite_existing);
   fs::copy_file(name() + ".gimage.obj", out + ".gimage.obj", fs::copy_options::overwrite_existing);
   CliRun r = run("field " + kSpot + " --image " + out + ".gimage.exr -o " + out +
-                 ".gfield.exr --samples 8 --layers 2");
+                 ".gfield.exr --samples 8 --format 2 --layers 2");
   ASSERT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("K = 2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("format 2: K = 2"), std::string::npos) << r.output;
   ExrAssetHeader header;
   std::string error;
   ASSERT_TRUE(load_asset_header(out + ".gfield.exr", header, error)) << error;
@@ -158,12 +162,17 @@ TEST_F(FieldCli, FieldLayersAndVerifyFieldBits) {
   r = run("field " + kSpot + " --image " + out + ".gimage.exr -o " + out +
           ".gfield.exr --layers 5");
   EXPECT_NE(r.status, 0);
+  r = run("field " + kSpot + " --image " + out + ".gimage.exr -o " + out +
+          ".gfield.exr --format 4");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("--format"), std::string::npos) << r.output;
   r = run("verify " + out + " --rays 100 --field-bits 12");
   EXPECT_NE(r.status, 0);
 }
 
 TEST_F(FieldCli, VerifyRefusesAFieldWhoseLayersDisagreeWithItsHeader) {
-  // The header says 3 layers, the file holds 2: one line naming the file, exit code 2.
+  // A layered (version-2) file whose header says 3 layers but holds 2: one line naming the file,
+  // exit code 2.
   GeometryField field;
   std::string error;
   ASSERT_TRUE(load_geometry_field(name() + ".gfield.exr", field, error)) << error;
@@ -172,9 +181,8 @@ TEST_F(FieldCli, VerifyRefusesAFieldWhoseLayersDisagreeWithItsHeader) {
                 fs::copy_options::overwrite_existing);
   fs::copy_file(name() + ".gimage.obj", other + ".gimage.obj",
                 fs::copy_options::overwrite_existing);
-  field.layers = 2;
-  field.uv.resize(field_layer_size(field) * 2, glm::vec2(kFieldMiss));
-  ASSERT_TRUE(save_geometry_field(other + ".gfield.exr", field, ExrPrecision::kHalf, error));
+  ASSERT_TRUE(
+      save_layered_geometry_field(other + ".gfield.exr", field, 2, ExrPrecision::kHalf, error));
   {
     Imf::InputFile in((other + ".gfield.exr").c_str());
     Imf::Header header = in.header();
@@ -288,8 +296,8 @@ TEST_F(FieldCli, BatchSkipsUpToDateAndReportsBadMeshesAtTheEnd) {
 
 TEST_F(FieldCli, InterruptedFieldBuildLeavesNoPartialFile) {
   const fs::path target = kDir / "interrupted.gfield.exr";
-  // Interrupt at increasing delays: either the command finished (and its file loads) or it was
-  // stopped, and then neither the target nor a temporary file is left.
+  // Interrupt at increasing delays: the target is whole (it loads; the command finished, or the
+  // signal came after the file's rename) or absent, and no temporary file is left.
   for (int delay_ms : {50, 150, 300, 600}) {
     fs::remove(target);
     const pid_t pid = fork();
@@ -307,12 +315,11 @@ TEST_F(FieldCli, InterruptedFieldBuildLeavesNoPartialFile) {
     int status = 0;
     waitpid(pid, &status, 0);
     const bool finished = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    if (finished) {
+    EXPECT_TRUE(fs::exists(target) || !finished) << delay_ms;
+    if (fs::exists(target)) {
       GeometryField field;
       std::string error;
-      EXPECT_TRUE(load_geometry_field(target.string(), field, error)) << error;
-    } else {
-      EXPECT_FALSE(fs::exists(target)) << delay_ms;
+      EXPECT_TRUE(load_geometry_field(target.string(), field, error)) << delay_ms << ": " << error;
     }
     for (const fs::directory_entry& entry : fs::directory_iterator(kDir)) {
       EXPECT_EQ(entry.path().filename().string().find("interrupted.gfield.exr.tmp"),

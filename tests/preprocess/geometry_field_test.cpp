@@ -14,6 +14,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "gfield/exr_io.hpp"
+#include "gfield/field_lines.hpp"
 #include "preprocess/field_build.hpp"
 #include "preprocess/verify.hpp"
 
@@ -108,8 +109,8 @@ class GeometryFieldTorus : public ::testing::Test {
     }
     const Box box = padded_bounds(points.data(), points.size(), 0.02f);
     asset_->image = rasterize_torus(asset_->pm, 256, box);
-    ASSERT_TRUE(build_geometry_field(asset_->pm, asset_->embree, asset_->image, 10, kAutoLayers,
-                                     asset_->field, error, &asset_->stats))
+    ASSERT_TRUE(build_geometry_field(asset_->pm, asset_->embree, asset_->image, 10, asset_->field,
+                                     error, &asset_->stats))
         << error;
     asset_->field.source = asset_->image.source;
     ready_ = true;
@@ -126,7 +127,7 @@ TEST_F(GeometryFieldTorus, TableLayoutAndBareCastAgree) {
   const GeometryField& field = asset_->field;
   const int n = field.samples_per_side;
   const int side = field_side(field);
-  ASSERT_EQ(field.uv.size(), size_t(side) * size_t(side) * size_t(field.layers));
+  ASSERT_EQ(field.nearest.size(), size_t(side) * size_t(side - n * n));
   size_t hits = 0;
   for (int entry = 0; entry < side; ++entry) {
     for (int exit = 0; exit < side; ++exit) {
@@ -144,24 +145,23 @@ TEST_F(GeometryFieldTorus, TableLayoutAndBareCastAgree) {
   }
   EXPECT_EQ(hits, asset_->stats.hits);
   EXPECT_EQ(asset_->stats.rays, size_t(side) * size_t(side) - 6 * size_t(n * n) * size_t(n * n));
-  // The chosen field's rays take their hits from one traversal per line, the bare cast casts
-  // every ray: they differ only where a grazing ray slips between triangles in one direction.
+  // The field's rays take their hits from one traversal per line, the bare cast casts every ray:
+  // they differ only where a grazing ray slips between triangles in one direction.
   const size_t bare_hits = cast_field_rays(asset_->embree, field.box, n);
   EXPECT_LE(std::max(bare_hits, hits) - std::min(bare_hits, hits), hits / 10000);
-  EXPECT_EQ(cast_field_rays(asset_->embree, field.box, n, kMaxFieldLayers + 1), hits);
+  EXPECT_EQ(cast_field_rays(asset_->embree, field.box, n, true), hits);
   // A torus seen through the box: a good share of rays hit, some miss through the hole.
   EXPECT_GT(hits, asset_->stats.rays / 4);
   EXPECT_LT(hits, asset_->stats.rays);
 }
 
 TEST_F(GeometryFieldTorus, LayersHoldTheLinesHitsInOrder) {
-  // The torus: lines through the box cross it 0, 2 or 4 times (tangent lines aside), so the
-  // chosen K is 4 and holds every hit of nearly all lines.
+  // The torus: lines through the box cross it 0, 2 or 4 times (tangent lines aside): the field
+  // holds every hit of every line.
   const GeometryField& field = asset_->field;
   const FieldBuildStats& stats = asset_->stats;
-  EXPECT_EQ(stats.layers, 4);
-  EXPECT_EQ(field.layers, 4);
-  EXPECT_EQ(stats.collected, kMaxFieldLayers + 1);
+  EXPECT_GE(field.layers, 4);
+  EXPECT_EQ(stats.lines_by_hits[kMaxLineHits + 1], 0u);
   size_t lines = 0;
   for (size_t count : stats.lines_by_hits) {
     lines += count;
@@ -203,39 +203,51 @@ TEST_F(GeometryFieldTorus, LayersHoldTheLinesHitsInOrder) {
   EXPECT_GT(hits, compared / 4);
 }
 
-TEST_F(GeometryFieldTorus, ExplicitLayersAreTheChosenFieldsFirstLayers) {
-  // Building K layers stores the same hits as collecting 5 per line: K = 1 (the first-hit cast)
-  // is the first layer, K = 2 the first two.
-  std::string error;
-  for (int layers : {1, 2}) {
-    GeometryField field;
-    FieldBuildStats stats;
-    ASSERT_TRUE(build_geometry_field(asset_->pm, asset_->embree, asset_->image, 10, layers, field,
-                                     error, &stats))
-        << error;
-    EXPECT_EQ(field.layers, layers);
-    EXPECT_EQ(stats.collected, layers);
-    EXPECT_LE(std::max(stats.hits, asset_->stats.hits) - std::min(stats.hits, asset_->stats.hits),
-              stats.hits / 10000);
-    EXPECT_LT(layer_coverage(stats, layers), 0.0);  // unknown: no more hits were looked for
-    const size_t count = field_layer_size(field) * size_t(layers);
-    ASSERT_EQ(field.uv.size(), count);
-    // Equal up to rounding (a ray through an edge hits both triangles there at one t, and the
-    // traversals may keep either one), and up to grazing rays: Embree's non-robust traversal lets
-    // an occasional ray slip between two triangles, and K = 1 casts every ray where K > 1 takes
-    // both rays of a line from one traversal (9 of 360,000 first-layer uvs on this torus, lines
-    // tangent to the tube; none of the second layer's).
-    size_t differ = 0;
-    for (size_t i = 0; i < count; ++i) {
-      if (glm::distance(field.uv[i], asset_->field.uv[i]) >= 1e-5f && differ++ < 5) {
-        const size_t side = size_t(field_side(field));
-        std::printf("K = %d: layer %zu, entry %zu, exit %zu: (%g %g) vs (%g %g)\n", layers,
-                    i / (side * side), i / side % side, i % side, field.uv[i].x, field.uv[i].y,
-                    asset_->field.uv[i].x, asset_->field.uv[i].y);
+TEST_F(GeometryFieldTorus, EveryLineHoldsItsHitsMirroredFromItsOtherEnd) {
+  // One list per line: from the other sample, its hits in reverse order, bit for bit.
+  const GeometryField& field = asset_->field;
+  const int n = field.samples_per_side;
+  const int side = field_side(field);
+  for (int a = 0; a < side; ++a) {
+    for (int b = a + 1; b < side; ++b) {
+      if (a / (n * n) == b / (n * n)) {
+        continue;
+      }
+      const LineHits forward = line_hits(field, a, b), backward = line_hits(field, b, a);
+      ASSERT_EQ(forward.count, backward.count) << a << " " << b;
+      for (int k = 0; k < forward.count; ++k) {
+        ASSERT_EQ(forward.uv[size_t(k)], backward.uv[size_t(forward.count - 1 - k)]);
       }
     }
-    std::printf("K = %d: %zu of %zu uvs differ\n", layers, differ, count);
-    EXPECT_LE(differ, count / 10000);
+  }
+}
+
+TEST_F(GeometryFieldTorus, LayeredFilesHoldTheFirstHitsOfEveryLine) {
+  // `gfield field --format 2`: layer l of every pair is hit l of its line, bit for bit (floats),
+  // and read back the lines of at most K hits are whole again.
+  const std::filesystem::path dir = std::filesystem::path(GFIELD_TEST_TMP) / "geometry_field";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "layered.gfield.exr").string();
+  const GeometryField& field = asset_->field;
+  std::string error;
+  for (int layers : {1, kMaxFieldLayers}) {
+    ASSERT_TRUE(save_layered_geometry_field(path, field, layers, ExrPrecision::kFloat, error))
+        << error;
+    GeometryField back;
+    ASSERT_TRUE(load_geometry_field(path, back, error)) << error;
+    EXPECT_EQ(back.layers, layers);
+    const int side = field_side(field);
+    for (int a = 0; a < side; ++a) {
+      for (int b = 0; b < side; ++b) {
+        for (int l = 0; l < layers; ++l) {
+          ASSERT_EQ(field_uv(back, a, b, l), field_uv(field, a, b, l)) << a << " " << b << " " << l;
+        }
+        if (layers == kMaxFieldLayers && field_uv(field, a, b).x != kFieldNoRay &&
+            line_hits(field, a, b).count <= layers) {
+          ASSERT_EQ(line_hits(back, a, b).count, line_hits(field, a, b).count);
+        }
+      }
+    }
   }
 }
 
@@ -303,24 +315,21 @@ TEST_F(GeometryFieldTorus, LookupModesAgainstExactCasts) {
 
 TEST(GeometryField, SamplesPerSideOutOfRangeIsRefused) {
   std::string error;
-  EXPECT_FALSE(check_field_size(3, 1, true, error));
+  EXPECT_FALSE(check_field_size(3, true, error));
   EXPECT_NE(error.find("out of range"), std::string::npos);
-  EXPECT_FALSE(check_field_size(49, 1, true, error));
-  EXPECT_FALSE(check_field_size(24, kMaxFieldLayers + 1, true, error));
-  EXPECT_NE(error.find("layers"), std::string::npos);
-  EXPECT_TRUE(check_field_size(24, 1, true, error)) << error;
-  EXPECT_EQ(field_memory_estimate(24, 1, true), size_t(3456) * 3456 * 12);
-  EXPECT_EQ(field_memory_estimate(24, kAutoLayers, true), size_t(3456) * 3456 * 12 * 4);
+  EXPECT_FALSE(check_field_size(49, true, error));
+  EXPECT_TRUE(check_field_size(24, true, error)) << error;
+  EXPECT_EQ(field_memory_estimate(24, true), size_t(3456) * 2880 * 12);
 
   ParameterizedMesh pm = make_torus();
   EmbreeMesh embree;
   ASSERT_TRUE(embree.build(pm.mesh, error)) << error;
   const GeometryImage image = rasterize_torus(pm, 16, Box{glm::vec3(-1.5f), glm::vec3(1.5f)});
   GeometryField field;
-  EXPECT_FALSE(build_geometry_field(pm, embree, image, 2, 1, field, error));
-  EXPECT_FALSE(build_geometry_field(pm, embree, image, 8, kMaxFieldLayers + 1, field, error));
+  EXPECT_FALSE(build_geometry_field(pm, embree, image, 2, field, error));
+  EXPECT_FALSE(build_geometry_field(pm, embree, image, 49, field, error));
   pm.corner_uv.pop_back();
-  EXPECT_FALSE(build_geometry_field(pm, embree, image, 8, 1, field, error));
+  EXPECT_FALSE(build_geometry_field(pm, embree, image, 8, field, error));
   EXPECT_NE(error.find("corner uvs"), std::string::npos);
 }
 
@@ -360,10 +369,11 @@ TEST_F(GeometryFieldTorus, FilesRoundTripAndBadFilesAreErrors) {
   ASSERT_TRUE(save_geometry_image(image_path, asset_->image, ExrPrecision::kFloat, error)) << error;
   GeometryField field;
   ASSERT_TRUE(load_geometry_field(field_path, field, error)) << error;
-  ASSERT_EQ(field.uv.size(), asset_->field.uv.size());
-  for (size_t i = 0; i < field.uv.size(); i += 97) {
-    ASSERT_NEAR(field.uv[i].x, asset_->field.uv[i].x, 1e-3f);
+  ASSERT_EQ(field.nearest.size(), asset_->field.nearest.size());
+  for (size_t i = 0; i < field.nearest.size(); i += 97) {
+    ASSERT_NEAR(field.nearest[i].x, asset_->field.nearest[i].x, 1e-3f);
   }
+  EXPECT_EQ(field.lines, asset_->field.lines);
   // A geometry image is not a field; a truncated field is an error naming the file.
   EXPECT_FALSE(load_geometry_field(image_path, field, error));
   EXPECT_NE(error.find(image_path), std::string::npos);

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gfield/exr_io.hpp"
+#include "gfield/field_lines.hpp"
 #include "gfield/geometry_field.hpp"
 #include "test_support/cli_run.hpp"
 
@@ -106,8 +107,10 @@ TEST_F(MeshScale, VerifyRefusesAFieldWithoutHitsWhereTheMeshHasSurface) {
   GeometryField field;
   std::string error;
   ASSERT_TRUE(load_geometry_field(asset + ".gfield.exr", field, error)) << error;
-  for (glm::vec2& uv : field.uv)
-    uv = is_field_hit(uv) ? glm::vec2(kFieldMiss) : uv;
+  for (glm::vec2& uv : field.nearest)
+    uv = glm::vec2(kFieldMiss);
+  std::vector<TableLine> none;
+  pack_line_table(none, field);
   const std::string published = fs::canonical(asset + ".gfield.exr").string();
   ASSERT_TRUE(save_geometry_field(published, field, ExrPrecision::kHalf, error)) << error;
   const test::CliRun r = run_cli("verify " + asset + " --rays 1000");

@@ -81,27 +81,28 @@ def test_albedo_of_a_textured_mesh(tmp_path):
     assert image.albedo[covered].std(axis=0).min() > 0.01  # a painted texture, not a constant
 
 
-def test_field_table_layout_against_exact_casts(spot_asset, spot_field):
-    """table[layer, entry, exit] as docs/formats.md lays it out: -2 on one face, and the first
-    layer's hits are those of Embree's casts from sample to sample of the parameterised mesh."""
+def test_field_tables_against_exact_casts(spot_asset, spot_field):
+    """nearest[entry, column] and line_hits as docs/formats.md lays them out: the nearest hits
+    are those of Embree's casts from sample to sample of the parameterised mesh, and every line
+    reads the same hits from both ends; table(K) is the layered table of format 2."""
     n, k = spot_field.samples_per_side, spot_field.layers
     side = 6 * n * n
-    table = spot_field.table
-    assert table.shape == (k, side, side, 2) and table.dtype == np.float32
-    assert not table.flags.writeable and 1 <= k <= 4
+    nearest = spot_field.nearest
+    assert nearest.shape == (side, 5 * n * n, 2) and nearest.dtype == np.float32
+    assert not nearest.flags.writeable and 4 <= k <= 8
+    hit = nearest[..., 0] >= 0
+    assert np.all(nearest[hit] <= 1.0) and np.all(nearest[~hit] == -1.0)
     face = np.arange(side) // (n * n)
-    same_face = face[:, None] == face[None, :]
-    assert np.all(table[:, same_face] == -2.0) and not np.any(table[:, ~same_face] == -2.0)
-    hit = table[..., 0] >= 0
-    assert np.all((table[hit] <= 1.0)) and np.all(table[~hit] < 0)
     rng = np.random.default_rng(11)
     entry, exit = rng.integers(0, side, (2, 20000))
     keep = face[entry] != face[exit]
     entry, exit = entry[keep], exit[keep]
+    # The column of the exit sample in the entry's row: the five other faces in order.
+    column = (face[exit] - (face[exit] > face[entry])) * n * n + exit % (n * n)
     points = sample_points(spot_field.box.astype(np.float64), n)
     built = gfield.load_mesh(f"{spot_asset}.gimage.obj")
     exact = built.intersect(points[entry], points[exit] - points[entry])
-    stored = table[0, entry, exit]
+    stored = nearest[entry, column]
     stored_hit = stored[:, 0] >= 0
     assert np.mean(stored_hit == exact["hit"]) > 0.999
     both = stored_hit & exact["hit"]
@@ -110,6 +111,18 @@ def test_field_table_layout_against_exact_casts(spot_asset, spot_field):
     error = np.linalg.norm(error, axis=1)
     diagonal = np.linalg.norm(spot_field.box[1] - spot_field.box[0])
     assert np.median(error) / diagonal < 0.002
+    for a, b, first in zip(entry[:500], exit[:500], stored[:500]):
+        hits = spot_field.line_hits(a, b)
+        assert np.array_equal(hits, spot_field.line_hits(b, a)[::-1])
+        assert np.array_equal(hits[0], first) if len(hits) else first[0] == -1.0
+    assert spot_field.line_hits(0, 1).shape == (0, 2)  # one face: no line
+    table = spot_field.table(2)
+    assert table.shape == (2, side, side, 2)
+    same_face = face[:, None] == face[None, :]
+    assert np.all(table[:, same_face] == -2.0) and not np.any(table[:, ~same_face] == -2.0)
+    assert np.array_equal(table[0, entry, exit], stored)
+    with pytest.raises(ValueError, match="layers: expected 1 to 8, got 9"):
+        spot_field.table(9)
 
 
 def test_field_properties_and_its_image(spot_asset, spot_field, tmp_path):
@@ -124,7 +137,7 @@ def test_field_properties_and_its_image(spot_asset, spot_field, tmp_path):
     alone = tmp_path / "alone.gfield.exr"
     shutil.copy(f"{spot_asset}.gfield.exr", alone)
     field = gfield.GeometryField.load(alone)
-    assert field.image is None and field.table.shape[1] == 384
+    assert field.image is None and field.nearest.shape == (384, 320, 2)
     with pytest.raises(gfield.Error, match="no geometry image to look up with"):
         field.lookup(np.zeros((1, 3)), np.ones((1, 3)))
 

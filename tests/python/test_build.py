@@ -47,17 +47,18 @@ def test_build_is_the_cli_build_and_returns_its_report(tmp_path):
         str(tmp_path / "py"), str(tmp_path / "cli"))
     assert same_paths == json.dumps(without_times(cli_report["accuracy"]))
     fields = [gfield.GeometryField.load(tmp_path / k / "spot.gfield.exr") for k in ("py", "cli")]
-    assert np.array_equal(fields[0].table, fields[1].table)
+    assert np.array_equal(fields[0].nearest, fields[1].nearest)
     assert np.array_equal(fields[0].image.positions, fields[1].image.positions)
 
 
 def test_options_are_the_cli_options(tmp_path):
-    report = gfield.build(SPOT, tmp_path / "spot", size=64, samples=6, layers=2,
+    report = gfield.build(SPOT, tmp_path / "spot", size=64, samples=6, format=2, layers=2,
                           precision="float", method="square", components="largest",
                           verify_rays=0, threads=1)
     assert report["geometry_image"]["size"] == 64
     assert report["geometry_field"]["samples_per_side"] == 6
     assert report["geometry_field"]["layers"] == 2
+    assert report["geometry_field"]["format_version"] == 2
     assert report["geometry_field"]["precision"] == "float"
     assert "accuracy" not in report
     options = report["inputs"]["options"]
@@ -73,6 +74,7 @@ def test_options_are_the_cli_options(tmp_path):
         ({"size": 4}, r"size: expected auto or texels per side in \[8, 8192\], got 4"),
         ({"max_image_error": 0.0}, "max_image_error: expected a positive percentage, got 0.0"),
         ({"layers": 5}, "layers: expected auto or 1 to 4, got 5"),
+        ({"format": 4}, "format: expected 3 or 2, got 4"),
         ({"precision": "double"}, "precision: expected one of half, float, got double"),
         ({"method": "lscm"}, "method: expected one of auto, orbifold, square, got lscm"),
         ({"components": "some"}, "components: expected one of all, largest, got some"),

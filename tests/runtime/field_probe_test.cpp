@@ -103,7 +103,7 @@ TEST(FieldProbe, GpuLookupAgreesWithCpuLookup) {
     GpuAssets assets;
     ASSERT_TRUE(assets.upload({&image}, {&field}, bits, error)) << error;
     EXPECT_EQ(assets.assets()[0].field_layers, 2);
-    EXPECT_EQ(assets.assets()[0].field_bytes, field_gpu_bytes(8, 2, bits));
+    EXPECT_EQ(assets.assets()[0].field_bytes, field_gpu_bytes(field, bits));
     expect_gpu_agrees(assets, lookup, rays, bits);
   }
 }
@@ -113,9 +113,11 @@ void mirror_uv(GeometryImage& image, GeometryField& field) {
   std::reverse(image.position.begin(), image.position.end());
   std::reverse(image.normal.begin(), image.normal.end());
   std::reverse(image.coverage.begin(), image.coverage.end());
-  for (glm::vec2& uv : field.uv)
-    if (uv.x >= 0.0f)  // a hit (miss and no-ray codes are negative)
+  for (glm::vec2& uv : field.nearest)
+    if (uv.x >= 0.0f)  // a hit (the miss code is negative)
       uv = glm::vec2(1.0f) - uv;
+  for (glm::vec2& uv : field.interior)
+    uv = glm::vec2(1.0f) - uv;
 }
 
 // Geometry images of different sizes share one texture array sized to the largest (--size auto

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "gfield/field_lines.hpp"
 #include "gfield/geometry_field.hpp"
 #include "gfield/geometry_image.hpp"
 
@@ -64,12 +65,11 @@ inline void make_sphere_assets(int n, int samples_per_side, GeometryImage& image
   }
   field = {};
   field.samples_per_side = samples_per_side;
-  field.layers = 2;
   field.box = box;
   field.source = "sphere";
   const int side = sample_count(samples_per_side);
   const size_t layer_size = size_t(side) * size_t(side);
-  field.uv.assign(2 * layer_size, glm::vec2(kFieldNoRay));
+  std::vector<glm::vec2> table(2 * layer_size, glm::vec2(kFieldNoRay));  // two layers
   for (int entry = 0; entry < side; ++entry) {
     const FaceSample se = face_sample(entry, samples_per_side);
     const glm::vec3 s = from_unit_cube(box, sample_point(se, samples_per_side));
@@ -82,10 +82,11 @@ inline void make_sphere_assets(int n, int samples_per_side, GeometryImage& image
       const bool hit = t >= 0.0f && t <= 1.0f;
       const float t_exit = hit ? sphere_hit(e, s - e) : -1.0f;  // from the far end back
       const size_t k = size_t(entry) * size_t(side) + size_t(exit);
-      field.uv[k] = hit ? octahedral_uv(s + t * (e - s)) : glm::vec2(kFieldMiss);
-      field.uv[layer_size + k] = hit ? octahedral_uv(e + t_exit * (s - e)) : glm::vec2(kFieldMiss);
+      table[k] = hit ? octahedral_uv(s + t * (e - s)) : glm::vec2(kFieldMiss);
+      table[layer_size + k] = hit ? octahedral_uv(e + t_exit * (s - e)) : glm::vec2(kFieldMiss);
     }
   }
+  compact_layered_table(table, 2, field);
 }
 
 }  // namespace gfield::test
