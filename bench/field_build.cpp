@@ -122,8 +122,11 @@ int main(int argc, char** argv) {
           [&] { build_geometry_field(asset.pm, embree, asset.image, n, fresh, error, &stats); });
       field = std::move(fresh);
     }
-    if (bare_hits != stats.hits || line_hits != bare_hits) {
-      std::fprintf(stderr, "%s: bare cast and build disagree (%zu, %zu vs %zu hits)\n",
+    // The build's traversals and the build meet the same rays; the bare cast of every ray
+    // differs where a grazing ray slips between two triangles in one direction only.
+    if (line_hits != stats.hits ||
+        std::max(bare_hits, line_hits) - std::min(bare_hits, line_hits) > stats.hits / 10000) {
+      std::fprintf(stderr, "%s: bare cast, traversals and build disagree (%zu, %zu, %zu hits)\n",
                    file.c_str(), bare_hits, line_hits, stats.hits);
       ++failures;
     }

@@ -1,6 +1,7 @@
 #include "gfield/field_lines.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "gfield/gpu_contract.hpp"
 
@@ -216,36 +217,35 @@ void store_line(GeometryField& field, int low, int high, const LineHits& hits,
 
 void pack_line_table(std::vector<TableLine>& table_lines, GeometryField& field) {
   const int n = field.samples_per_side;
-  const auto tile_of = [n](const TableLine& l) {
-    return gpu::gf_field_tile(n, int(l.low), int(l.column));
-  };
-  const auto slot_of = [](const TableLine& l) {
-    return gpu::gf_field_tile_slot(int(l.low), int(l.column));
-  };
-  std::sort(table_lines.begin(), table_lines.end(), [&](const TableLine& a, const TableLine& b) {
-    const int ta = tile_of(a), tb = tile_of(b);
-    return ta != tb ? ta < tb : slot_of(a) < slot_of(b);
-  });
+  // The lines in tile and slot order: their keys sorted (16 bytes each, not the lines' 64).
+  std::vector<std::pair<uint64_t, uint32_t>> order(table_lines.size());
+  for (size_t k = 0; k < table_lines.size(); ++k) {
+    const TableLine& l = table_lines[k];
+    const int low = int(l.low), column = int(l.column);
+    order[k] = {uint64_t(gpu::gf_field_tile(n, low, column)) << 6 |
+                    uint64_t(gpu::gf_field_tile_slot(low, column)),
+                uint32_t(k)};
+  }
+  std::sort(order.begin(), order.end());
   const size_t tiles = size_t(gpu::gf_field_tiles(n));
   std::vector<TileRecord> records;
   std::vector<uint16_t> entries;
   field.lines.assign(tiles, 0u);
   field.interior.clear();
   int most = 0;
-  for (size_t i = 0; i < table_lines.size();) {
-    const int tile = tile_of(table_lines[i]);
+  for (size_t i = 0; i < order.size();) {
+    const uint64_t tile = order[i].first >> 6;
     TileRecord& record = records.emplace_back();
     record.first_entry = uint32_t(entries.size());
     record.first_interior = uint32_t(field.interior.size());
     field.lines[size_t(tile)] = uint32_t(tiles + 4 * (records.size() - 1));
-    for (; i < table_lines.size() && tile_of(table_lines[i]) == tile; ++i) {
-      const TableLine& line = table_lines[i];
-      record.mask |= uint64_t(1) << slot_of(line);
+    for (; i < order.size() && order[i].first >> 6 == tile; ++i) {
+      const TableLine& line = table_lines[order[i].second];
+      record.mask |= uint64_t(1) << (order[i].first & 63u);
       const uint32_t offset = uint32_t(field.interior.size()) - record.first_interior;
       entries.push_back(uint16_t(line_entry(line.count, offset)));
-      for (int k = 0; k + 2 < line.count; ++k) {
-        field.interior.push_back(line.interior[size_t(k)]);
-      }
+      field.interior.insert(field.interior.end(), line.interior.begin(),
+                            line.interior.begin() + std::max(0, line.count - 2));
       most = std::max(most, line.count);
     }
   }
