@@ -9,9 +9,28 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 namespace gfield {
+
+/// A fresh folder of the process's own for a benchmark's assets (temp/NAME-PID), removed when
+/// it ends: assets of another build (another format) are never taken for this one's.
+struct BenchFolder {
+  std::filesystem::path path;
+  explicit BenchFolder(const std::string& name)
+      : path(std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~BenchFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  BenchFolder(const BenchFolder&) = delete;
+  BenchFolder& operator=(const BenchFolder&) = delete;
+};
 
 /// Runs `gfield ARGUMENTS` quietly; false (with the command on stderr) when it fails.
 inline bool run_gfield_cli(const std::string& arguments) {

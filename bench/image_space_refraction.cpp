@@ -206,8 +206,8 @@ int main(int argc, char** argv) {
   GlBenchArguments arguments;
   if (!parse_gl_bench_arguments(argc, argv, "bench_image_space_refraction", arguments))
     return 2;
-  const fs::path dir = fs::temp_directory_path() / "gfield_bench_image_space_refraction";
-  fs::create_directories(dir);
+  const BenchFolder folder("gfield_bench_image_space_refraction");
+  const fs::path& dir = folder.path;
   auto context = create_bench_context();
   if (!context)
     return kExitNoOpenGL;

@@ -175,8 +175,8 @@ int main(int argc, char** argv) {
   if (!parse_gl_bench_arguments(int(rest.size()), rest.data(), "bench_runtime_field", arguments))
     return 2;
   const int frames = arguments.frames > 0 ? arguments.frames : 2;
-  const fs::path dir = fs::temp_directory_path() / "gfield_bench_runtime_field";
-  fs::create_directories(dir);
+  const BenchFolder folder("gfield_bench_runtime_field");
+  const fs::path& dir = folder.path;
   auto context = create_bench_context();
   if (!context)
     return kExitNoOpenGL;

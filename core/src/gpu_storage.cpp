@@ -35,7 +35,7 @@ std::vector<uint8_t> field_nearest_texels(const GeometryField& field, int bits) 
     encode_texels<uint8_t>(field.nearest.data(), count, bits, bytes.data());
   } else if (bits == 16) {
     encode_texels<uint16_t>(field.nearest.data(), count, bits, bytes.data());
-  } else {
+  } else if (!bytes.empty()) {
     std::memcpy(bytes.data(), field.nearest.data(), bytes.size());
   }
   return bytes;
@@ -54,7 +54,7 @@ std::vector<uint32_t> field_interior_words(const GeometryField& field, int bits)
     for (const glm::vec2& uv : hits) {
       words.push_back(code(uv.x, 16) | (code(uv.y, 16) << 16));
     }
-  } else {
+  } else if (!hits.empty()) {
     words.resize(2 * hits.size());
     std::memcpy(words.data(), hits.data(), words.size() * sizeof(uint32_t));
   }
