@@ -18,8 +18,8 @@
 
 #include <glm/glm.hpp>
 
-#include "preprocess/cut_graph.hpp"
 #include "geometry/mesh_io.hpp"
+#include "preprocess/cut_graph.hpp"
 
 namespace gfield {
 

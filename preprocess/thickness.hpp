@@ -6,9 +6,9 @@
 
 #include <string>
 
+#include "geometry/mesh_io.hpp"
 #include "gfield/geometry_image.hpp"
 #include "gfield/thickness.hpp"
-#include "geometry/mesh_io.hpp"
 
 namespace gfield {
 

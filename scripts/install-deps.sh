@@ -25,6 +25,8 @@ packages=(
   # where there is no systemd (the test starts its own on 127.0.0.1)
   slurmctld slurmd slurm-client munge jq
   clang libclang-rt-14-dev
+  # the layout check (scripts/check-format.sh)
+  clang-format
 )
 
 missing=()

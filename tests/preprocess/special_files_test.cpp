@@ -78,7 +78,8 @@ TEST_F(SpecialFiles, BatchSkipsAndListsWhatIsNotAFileAndBuildsTheRest) {
 TEST_F(SpecialFiles, ARefusedWriteSaysWhy) {
   std::ofstream(kDir / "file") << "a file, not a folder";
   const std::string target = (kDir / "file" / "out.png").string();
-  const test::CliRun r = run_cli("render " GFIELD_DATA_DIR "/scenes/two-mirror-spheres.json -q "
+  const test::CliRun r = run_cli("render " GFIELD_DATA_DIR
+                                 "/scenes/two-mirror-spheres.json -q "
                                  "--size 8x8 --spp 1 -o " +
                                  target);
   EXPECT_EQ(r.exit_code, 2);
