@@ -1,6 +1,7 @@
 #include "gfield/exr_io.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -471,9 +472,12 @@ TEST(ExrIo, TruncatedFileIsAnErrorAndAFailedSaveLeavesNothing) {
   EXPECT_FALSE(save_geometry_field("/nonexistent-dir/x.gfield.exr", make_field(2),
                                    ExrPrecision::kHalf, error));
   EXPECT_NE(error.find("/nonexistent-dir/x.gfield.exr"), std::string::npos) << error;
+  // This process's temporary files (NAME.tmp-PID-N): other tests' processes write theirs into the
+  // same folder at the same time.
+  const std::string own = ".tmp-" + std::to_string(getpid()) + "-";
   for (const auto& entry : fs::directory_iterator(GFIELD_TEST_TMP)) {
     const std::string name = entry.path().filename().string();
-    EXPECT_FALSE(name.starts_with("exr_io_") && name.find(".tmp-") != std::string::npos) << name;
+    EXPECT_FALSE(name.starts_with("exr_io_") && name.find(own) != std::string::npos) << name;
   }
 }
 
