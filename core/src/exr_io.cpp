@@ -88,24 +88,32 @@ Imf::Slice float_slice(const float* base, int components, int width) {
 }
 
 // Frame buffer for writing: OpenEXR converts pixel types when reading but not when writing, so
-// HALF channels get a converted copy (kept alive in `halves` until the write is done).
+// HALF channels get a converted copy (kept alive in `halves` until the write is done). Slices
+// start at scanline `first_row` of the data window.
 struct OutputChannels {
   Imf::FrameBuffer frame_buffer;
   std::vector<std::vector<half>> halves;
+  int first_row = 0;
 
   void add(Imf::Header& header, const char* name, Imf::PixelType type, const float* base,
            int components, size_t count, int width) {
     header.channels().insert(name, Imf::Channel(type));
+    add_slice(name, type, base, components, count, width);
+  }
+  /// A slice of a channel the header already has.
+  void add_slice(const char* name, Imf::PixelType type, const float* base, int components,
+                 size_t count, int width) {
+    const ptrdiff_t origin = ptrdiff_t(first_row) * width;
     if (type == Imf::FLOAT) {
-      frame_buffer.insert(name, float_slice(base, components, width));
+      frame_buffer.insert(name, float_slice(base - origin * components, components, width));
       return;
     }
     std::vector<half>& h = halves.emplace_back(count);
     for (size_t i = 0; i < count; ++i) {
       h[i] = half(base[i * size_t(components)]);
     }
-    frame_buffer.insert(name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(h.data()), sizeof(half),
-                                         sizeof(half) * size_t(width)));
+    frame_buffer.insert(name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(h.data() - origin),
+                                         sizeof(half), sizeof(half) * size_t(width)));
   }
 };
 
@@ -698,18 +706,13 @@ bool save_geometry_field(const std::string& filename, const GeometryField& field
   std::copy(field.interior.begin(), field.interior.end(), interior.begin());
   std::vector<uint32_t> lines(padded, 0u);
   std::copy(field.lines.begin(), field.lines.end(), lines.begin());
-  Imf::Header scratch = header;  // OutputChannels::add inserts the channels again: already there
   OutputChannels tables;
-  const ptrdiff_t origin = ptrdiff_t(rows) * width;
+  tables.first_row = rows;
   if (padded > 0) {
     const float* hits = &interior[0].x;
-    tables.add(scratch, kHitU, pixel_type(precision), hits, 2, padded, width);
-    tables.add(scratch, kHitV, pixel_type(precision), hits + 1, 2, padded, width);
-    for (const char* name : {kHitU, kHitV}) {
-      const Imf::Slice slice = tables.frame_buffer[name];
-      tables.frame_buffer[name] = Imf::Slice(
-          slice.type, slice.base - origin * ptrdiff_t(slice.xStride), slice.xStride, slice.yStride);
-    }
+    tables.add_slice(kHitU, pixel_type(precision), hits, 2, padded, width);
+    tables.add_slice(kHitV, pixel_type(precision), hits + 1, 2, padded, width);
+    const ptrdiff_t origin = ptrdiff_t(rows) * width;
     tables.frame_buffer.insert(kLineChannel,
                                Imf::Slice(Imf::UINT, reinterpret_cast<char*>(lines.data() - origin),
                                           sizeof(uint32_t), sizeof(uint32_t) * size_t(width)));
@@ -731,11 +734,12 @@ bool save_layered_geometry_field(const std::string& filename, const GeometryFiel
   const int side = field_side(field);
   const size_t count = size_t(side) * size_t(side);
   std::vector<glm::vec2> table(count * size_t(layers));
+  glm::vec2 uv[kMaxFieldLayers];
   for (int entry = 0; entry < side; ++entry) {
     for (int exit = 0; exit < side; ++exit) {
+      layered_pair(field, entry, exit, layers, uv);
       for (int layer = 0; layer < layers; ++layer) {
-        table[size_t(layer) * count + size_t(entry) * size_t(side) + size_t(exit)] =
-            field_uv(field, entry, exit, layer);
+        table[size_t(layer) * count + size_t(entry) * size_t(side) + size_t(exit)] = uv[layer];
       }
     }
   }

@@ -24,7 +24,7 @@ struct GlslFieldLines {
 };
 
 int face_of(int n, int sample) {
-  return sample / (n * n);
+  return face_sample(sample, n).face;
 }
 
 /// The sample at `column` of `row`'s row (the inverse of field_column).
@@ -260,6 +260,17 @@ void pack_line_table(std::vector<TableLine>& table_lines, GeometryField& field) 
   const bool any_hit = std::any_of(field.nearest.begin(), field.nearest.end(),
                                    [](glm::vec2 uv) { return uv.x >= 0.0f; });
   field.layers = std::max(any_hit ? 2 : 1, most);
+}
+
+void layered_pair(const GeometryField& field, int entry, int exit, int layers, glm::vec2* uv) {
+  const int n = field.samples_per_side;
+  const bool no_ray = face_of(n, entry) == face_of(n, exit);
+  const LineHits hits = no_ray ? LineHits{} : line_hits(field, entry, exit);
+  for (int layer = 0; layer < layers; ++layer) {
+    uv[layer] = no_ray               ? glm::vec2(kFieldNoRay)
+                : layer < hits.count ? hits.uv[size_t(layer)]
+                                     : glm::vec2(kFieldMiss);
+  }
 }
 
 LineHits line_hits(const GeometryField& field, int entry, int exit) {

@@ -142,11 +142,12 @@ py::array layered_table(const FieldAsset& a, int layers) {
   {
     py::gil_scoped_release release;
     const size_t count = size_t(side) * size_t(side);
+    glm::vec2 uv[kMaxLineHits];
     for (size_t pair = 0; pair < count; ++pair) {
+      layered_pair(field, int(pair / size_t(side)), int(pair % size_t(side)), layers, uv);
       for (int l = 0; l < layers; ++l) {
-        const glm::vec2 uv = field_uv(field, int(pair / size_t(side)), int(pair % size_t(side)), l);
-        out[2 * (size_t(l) * count + pair)] = uv.x;
-        out[2 * (size_t(l) * count + pair) + 1] = uv.y;
+        out[2 * (size_t(l) * count + pair)] = uv[l].x;
+        out[2 * (size_t(l) * count + pair) + 1] = uv[l].y;
       }
     }
   }

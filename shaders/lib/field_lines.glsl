@@ -10,7 +10,7 @@
 //   uint gf_field_word(int i);                         word i of the line table
 //   vec2 gf_field_interior_texel(int i);               interior hit i (a uv)
 
-#ifndef GF_INOUT
+// Parameter qualifiers for both languages (field_lookup.glsl uses them too).
 #ifdef __cplusplus
 #define GF_IN(T) const T&
 #define GF_OUT(T) T&
@@ -19,7 +19,6 @@
 #define GF_IN(T) in T
 #define GF_OUT(T) out T
 #define GF_INOUT(T) inout T
-#endif
 #endif
 
 // The line through a pair of samples as read from one of them: its hit count and where its
@@ -85,5 +84,6 @@ vec2 gf_line_hit(int entry, int exit, int layer, GF_INOUT(GfLineHits) line) {
     int to = layer == 0 ? exit : entry;
     return gf_field_nearest_texel(from, gf_field_column(gf_samples_per_side(), from, to));
   }
-  return gf_field_interior_texel(line.interior + (line.from_high ? line.count - 2 - layer : layer - 1));
+  return gf_field_interior_texel(line.interior +
+                                 (line.from_high ? line.count - 2 - layer : layer - 1));
 }

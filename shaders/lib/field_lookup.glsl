@@ -25,17 +25,7 @@
 // Conventions (docs/geometry-field.md): rays are origin + t * direction in mesh (object)
 // coordinates, t in [t_min, t_max]; a hit's t is along the given (unnormalised) direction.
 
-#ifndef GF_INOUT
-#ifdef __cplusplus
-#define GF_IN(T) const T&
-#define GF_OUT(T) T&
-#define GF_INOUT(T) T&
-#else
-#define GF_IN(T) in T
-#define GF_OUT(T) out T
-#define GF_INOUT(T) inout T
-#endif
-#endif
+// GF_IN, GF_OUT, GF_INOUT (parameter qualifiers for both languages): field_lines.glsl.
 
 // Work counting (shaders/lib/work.glsl): the includer may define GF_COUNT(kind, n) to count the
 // lookups and the Newton steps; by default it is nothing.

@@ -53,6 +53,10 @@ void pack_line_table(std::vector<TableLine>& table_lines, GeometryField& field);
 /// The hits of the line from `entry` towards `exit` (different faces), in order from `entry`.
 LineHits line_hits(const GeometryField& field, int entry, int exit);
 
+/// The first `layers` (at most kMaxLineHits) hits of the pair (entry, exit) as the layered
+/// format holds them: uv[l] = field_uv(field, entry, exit, l), the line read once.
+void layered_pair(const GeometryField& field, int entry, int exit, int layers, glm::vec2* uv);
+
 /// Checks a field read from a file: the tables' sizes against N, every nearest hit a uv in
 /// [0,1]^2 or a miss, every interior hit a uv, and the line table exactly as pack_line_table
 /// lays it out (records in tile order, masks of canonical lines, entries' counts in {1, 3..8}
