@@ -14,6 +14,7 @@ namespace gfield {
 struct AssetArguments {
   std::string size = "auto";
   double max_image_error = kDefaultMaxMeanError;
+  size_t proxy_above = kDefaultProxyAbove;  ///< GeometryImageOptions::proxy_above
   int samples = 24;
   int format = kFieldFormatVersion;  ///< 3, or 2 (layered, with `layers`)
   int layers = kAutoLayers;
@@ -60,6 +61,7 @@ inline AssetOptions asset_options(const AssetArguments& args) {
   AssetOptions options;
   image_size_from_text(args.size, options.image.size);  // checked by image_size_problem
   options.image.max_mean_error = args.max_image_error;
+  options.image.proxy_above = args.proxy_above;
   options.image.method = args.method == "orbifold" ? ParameterizationMethod::kOrbifold
                          : args.method == "square" ? ParameterizationMethod::kSquare
                                                    : ParameterizationMethod::kAuto;

@@ -155,7 +155,8 @@ nlohmann::json image_options_to_json(const GeometryImageOptions& o) {
           {"max_split_depth", o.max_split_depth},
           {"measure", o.measure},
           {"error_samples", o.error_samples},
-          {"seed", o.seed}};
+          {"seed", o.seed},
+          {"proxy_above", o.proxy_above}};
 }
 
 nlohmann::json asset_options_to_json(const AssetOptions& o) {
@@ -282,6 +283,8 @@ bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
     verify.original = mesh_path;
     verify.original_part = options.part;
     verify.original_outside_paths = options.outside_paths;
+    const nlohmann::json& proxy = report["geometry_image"]["proxy"];
+    verify.proxy = proxy.is_object() && proxy.value("used", false);
     nlohmann::json accuracy;
     report_progress(options.control, "verify", 0.0);
     if (!verify_asset_files(staged, name, verify, accuracy, error) ||

@@ -8,6 +8,8 @@
 #include <ctime>
 #include <filesystem>
 
+#include "preprocess/verify.hpp"
+
 namespace gfield {
 
 std::string manifest_path(const std::string& dir, const Shard& shard) {
@@ -31,9 +33,9 @@ nlohmann::json manifest_accuracy(const nlohmann::json& report) {
   if (!report.contains("accuracy")) {
     return nlohmann::json::object();
   }
-  const nlohmann::json& built = report["accuracy"]["references"][0];
-  const nlohmann::json& refined = built["box_rays"]["refined"];
-  return {{"table_hit_miss", built["table"]["hit_agreement"]},
+  const nlohmann::json& described = described_reference(report["accuracy"]);
+  const nlohmann::json& refined = described["box_rays"]["refined"];
+  return {{"table_hit_miss", described["table"]["hit_agreement"]},
           {"refined_hit_miss", refined["hit_agreement"]},
           {"refined_median_percent", refined["position_error_percent_of_diagonal"]["median"]},
           {"refined_p95_percent", refined["position_error_percent_of_diagonal"]["p95"]}};

@@ -21,6 +21,7 @@
 #include "preprocess/parameterize.hpp"
 #include "preprocess/rasterize.hpp"
 #include "preprocess/surface_distance.hpp"
+#include "preprocess/surface_projection.hpp"
 
 namespace gfield {
 namespace {
@@ -431,11 +432,18 @@ ParameterizedMesh charted_mesh(const RepairedMesh& repaired,
   return parameterized;
 }
 
+/// Where a geometry image's texels come from: the charted mesh's own albedo, or (a proxy's image)
+/// the full surface.
+struct ImageSource {
+  const AlbedoSource* albedo = nullptr;
+  const SurfaceProjection* projection = nullptr;
+};
+
 /// Rasterises the packed charts into the size x size `image` (its box: the padded bounds of the
 /// charted mesh) and gives the parameterised mesh its corner uvs.
 void rasterize_image(const RepairedMesh& repaired, const std::vector<Component>& components,
                      const std::vector<Chart>& charts, const std::vector<ChartRect>& rects,
-                     int size, const AlbedoSource* albedo, GeometryImage& image,
+                     int size, const ImageSource& source, GeometryImage& image,
                      ParameterizedMesh& parameterized, GeometryImageReport& report) {
   const TriangleMesh& mesh = repaired.mesh;
   std::vector<RasterChart> raster(components.size());
@@ -447,12 +455,16 @@ void rasterize_image(const RepairedMesh& repaired, const std::vector<Component>&
     report.charts[c].rect = rects[c];
   }
   parameterized = charted_mesh(repaired, components);
-  std::vector<glm::vec3> box_points(parameterized.mesh.positions.begin(),
-                                    parameterized.mesh.positions.end());
+  // A proxy's image holds the full surface, which its box must hold too.
+  const std::vector<glm::dvec3>& bounded = source.projection != nullptr
+                                               ? source.projection->surface().positions
+                                               : parameterized.mesh.positions;
+  std::vector<glm::vec3> box_points(bounded.begin(), bounded.end());
   image.box = padded_bounds(box_points.data(), box_points.size(), kBoxPadding);
   const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
   std::vector<glm::vec2> face_uv;
-  rasterize_charts(mesh, normals, raster, size, image.box, albedo, image, face_uv);
+  rasterize_charts(mesh, normals, raster, size, image.box, source.albedo, source.projection, image,
+                   face_uv);
   for (const Component& c : components)
     for (int f : c.faces)
       for (int k = 0; k < 3; ++k)
@@ -581,7 +593,7 @@ void measure_image_to_mesh(const TriangleMesh& input, const GeometryImage& image
 /// mesh -> image distance measured (measure_mesh_to_image), the stage times added to `report`.
 bool image_at_size(const TriangleMesh& input, const RepairedMesh& repaired,
                    const std::vector<Component>& components, const std::vector<Chart>& charts,
-                   const AlbedoSource* albedo, const GeometryImageOptions& options, int size,
+                   const ImageSource& source, const GeometryImageOptions& options, int size,
                    GeometryImage& image, ParameterizedMesh& parameterized,
                    GeometryImageReport& report, std::string& error) {
   Stopwatch stage;
@@ -594,7 +606,7 @@ bool image_at_size(const TriangleMesh& input, const RepairedMesh& repaired,
   report.seconds.pack += stage.seconds();
   stage.restart();
   image = {};
-  rasterize_image(repaired, components, charts, rects, size, albedo, image, parameterized, report);
+  rasterize_image(repaired, components, charts, rects, size, source, image, parameterized, report);
   report.seconds.rasterize += stage.seconds();
   stage.restart();
   measure_mesh_to_image(input, image, options, report);
@@ -617,6 +629,106 @@ std::string albedo_summary(const MeshAppearance& appearance) {
   return text;
 }
 
+/// The proxy of a mesh above options.proxy_above faces and the projection onto its full surface
+/// (`appearance`: null or carrying a base colour), reported.
+bool make_proxy(const TriangleMesh& input, const MeshAppearance* appearance,
+                const GeometryImageOptions& options, MeshProxy& proxy,
+                SurfaceProjection& projection, GeometryImageReport& report, std::string& error) {
+  if (!make_mesh_proxy(input, options.proxy_above / 2, proxy, error))
+    return false;
+  const double diagonal = bounds_diagonal(input);
+  // The proxy's surface lies within its error bound of the mesh; the reach leaves a margin.
+  if (!projection.build(input, appearance, proxy.welded, 4.0 * proxy.error + 1e-4 * diagonal,
+                        error))
+    return false;
+  report.proxy.input_faces = input.triangles.size();
+  report.proxy.faces = proxy.proxy.triangles.size();
+  report.proxy.error_percent = diagonal > 0.0 ? 100.0 * proxy.error / diagonal : 0.0;
+  return true;
+}
+
+}  // namespace
+
+namespace {
+
+/// The image of `input` through `proxy` (and `projection` onto the input), or of `input` itself
+/// (null): repair, charts, parameterisation, and the automatic size's trials, into `report`.
+bool image_route(const TriangleMesh& input, const GeometryImageOptions& options,
+                 const MeshAppearance* appearance, const MeshProxy* proxy,
+                 const SurfaceProjection* projection, GeometryImage& image,
+                 ParameterizedMesh& parameterized, GeometryImageReport& report,
+                 std::string& error) {
+  Stopwatch stage;
+  RepairedMesh repaired;
+  std::vector<Component> components;
+  if (!repair_and_split(proxy != nullptr ? proxy->proxy : input, options, repaired, components,
+                        report, error))
+    return false;
+  report.seconds.repair = stage.seconds();
+  stage.restart();
+  std::vector<Chart> charts;
+  if (!parameterize_pieces(repaired.mesh, components, options, charts, report, error))
+    return false;
+  report.seconds.parameterize = stage.seconds();
+  const MeshAppearance none;
+  const AlbedoSource own_albedo(input, appearance != nullptr ? *appearance : none, repaired.mesh,
+                                repaired.source_face);
+  ImageSource source;
+  if (projection != nullptr)
+    source.projection = projection;
+  else if (appearance != nullptr)
+    source.albedo = &own_albedo;
+  report.albedo = appearance != nullptr ? albedo_summary(*appearance) : "none";
+  report.route = route_summary(report.charts);
+  report.diagonal = bounds_diagonal(input);
+  const bool automatic = options.size == kAutoImageSize;
+  report.max_mean_error = automatic ? options.max_mean_error : 0.0;
+  for (size_t trial = 0;; ++trial) {
+    const int size = automatic ? kAutoImageSizes[trial] : options.size;
+    if (!image_at_size(input, repaired, components, charts, source, options, size, image,
+                       parameterized, report, error))
+      return false;
+    if (!automatic)
+      break;
+    report.size_trials.push_back({size, report.mesh_to_image.mean});
+    if (report.mesh_to_image.mean <= options.max_mean_error ||
+        trial + 1 == std::size(kAutoImageSizes))
+      break;
+  }
+  return true;
+}
+
+/// The image through a proxy where `input` has more than options.proxy_above faces and the
+/// proxy's image keeps its mean mesh -> image distance within kProxyErrorFactor times
+/// options.max_mean_error; report.proxy says what was tried. False only on errors.
+bool proxy_route(const TriangleMesh& input, const GeometryImageOptions& options,
+                 const MeshAppearance* appearance, GeometryImage& image,
+                 ParameterizedMesh& parameterized, GeometryImageReport& report,
+                 std::string& error) {
+  if (options.proxy_above == 0 || input.triangles.size() <= options.proxy_above)
+    return true;
+  Stopwatch stage;
+  MeshProxy proxy;
+  SurfaceProjection projection;
+  if (!make_proxy(input, appearance, options, proxy, projection, report, error))
+    return false;
+  report.seconds.proxy = stage.seconds();
+  if (!image_route(input, options, appearance, &proxy, &projection, image, parameterized, report,
+                   error))
+    return false;
+  report.proxy.mean_percent = report.mesh_to_image.mean;
+  report.proxy.used = report.mesh_to_image.samples == 0 ||
+                      report.mesh_to_image.mean <= kProxyErrorFactor * options.max_mean_error;
+  if (!report.proxy.used) {  // the full route starts over; what the proxy cost stays counted
+    const ProxyReport tried = report.proxy;
+    const double seconds = stage.seconds();
+    report = {};
+    report.proxy = tried;
+    report.seconds.proxy = seconds;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions& options,
@@ -627,40 +739,15 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
   report = {};
   if (!check_build_input(input, options, error))
     return false;
-  Stopwatch stage;
-  RepairedMesh repaired;
-  std::vector<Component> components;
-  if (!repair_and_split(input, options, repaired, components, report, error))
+  const MeshAppearance* albedo =
+      appearance != nullptr && carries_base_color(*appearance) ? appearance : nullptr;
+  if (!proxy_route(input, options, albedo, image, parameterized, report, error))
     return false;
-  report.seconds.repair = stage.seconds();
-  stage.restart();
-  std::vector<Chart> charts;
-  if (!parameterize_pieces(repaired.mesh, components, options, charts, report, error))
+  if (!report.proxy.used &&
+      !image_route(input, options, albedo, nullptr, nullptr, image, parameterized, report, error))
     return false;
-  report.seconds.parameterize = stage.seconds();
-  const MeshAppearance none;
-  const bool albedo = appearance != nullptr && carries_base_color(*appearance);
-  const AlbedoSource source(input, albedo ? *appearance : none, repaired.mesh,
-                            repaired.source_face);
-  report.albedo = albedo ? albedo_summary(*appearance) : "none";
-  report.route = route_summary(report.charts);
-  report.diagonal = bounds_diagonal(input);
-  const bool automatic = options.size == kAutoImageSize;
-  report.max_mean_error = automatic ? options.max_mean_error : 0.0;
-  for (size_t trial = 0;; ++trial) {
-    const int size = automatic ? kAutoImageSizes[trial] : options.size;
-    if (!image_at_size(input, repaired, components, charts, albedo ? &source : nullptr, options,
-                       size, image, parameterized, report, error))
-      return false;
-    if (!automatic)
-      break;
-    report.size_trials.push_back({size, report.mesh_to_image.mean});
-    if (report.mesh_to_image.mean <= options.max_mean_error ||
-        trial + 1 == std::size(kAutoImageSizes))
-      break;
-  }
   if (options.measure) {  // of the image kept only
-    stage.restart();
+    Stopwatch stage;
     measure_image_to_mesh(input, image, parameterized, options, report);
     report.seconds.measure += stage.seconds();
   }
@@ -700,6 +787,12 @@ nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
                                                : json{{"max_mean_error_percent", r.max_mean_error},
                                                       {"trials", trials}}},
       {"route", r.route},
+      {"proxy", r.proxy.faces > 0 ? json{{"used", r.proxy.used},
+                                         {"input_faces", r.proxy.input_faces},
+                                         {"faces", r.proxy.faces},
+                                         {"error_percent", r.proxy.error_percent},
+                                         {"mesh_to_image_mean_percent", r.proxy.mean_percent}}
+                                  : json(nullptr)},
       {"components", r.components},
       {"dropped_components", r.dropped_components},
       {"dropped_faces", r.dropped_faces},
@@ -729,7 +822,8 @@ nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
         {"diagonal", r.diagonal}}},
       {"ray_offset", r.ray_offset},
       {"seconds",
-       {{"repair", r.seconds.repair},
+       {{"proxy", r.seconds.proxy},
+        {"repair", r.seconds.repair},
         {"parameterize", r.seconds.parameterize},
         {"pack", r.seconds.pack},
         {"rasterize", r.seconds.rasterize},
@@ -757,6 +851,14 @@ std::string geometry_image_report_to_text(const GeometryImageReport& r) {
         trials.c_str(), r.max_mean_error,
         kept.mesh_to_image_mean > r.max_mean_error ? ", not reached at the largest size" : "");
   }
+  if (r.proxy.used)
+    add("proxy: %zu faces charted for %zu (meshoptimizer, error bound %.4f%% of the diagonal); "
+        "texels projected onto the full surface",
+        r.proxy.faces, r.proxy.input_faces, r.proxy.error_percent);
+  else if (r.proxy.faces > 0)
+    add("proxy: %zu faces tried for %zu and rejected (its image's mean mesh -> image distance "
+        "%.4f%% exceeds %g times the target); built from the full mesh",
+        r.proxy.faces, r.proxy.input_faces, r.proxy.mean_percent, kProxyErrorFactor);
   add("route: %s", r.route.c_str());
   for (size_t c = 0; c < r.charts.size(); ++c) {
     const ChartReport& chart = r.charts[c];
@@ -792,10 +894,10 @@ std::string geometry_image_report_to_text(const GeometryImageReport& r) {
       r.image_to_mesh.p99, r.image_to_mesh.max);
   add("ray offset: %.3g of the box diagonal (mesh -> image p98, at least %.0e)", r.ray_offset,
       double(kMinRayOffset));
-  add("seconds: repair %.3f, parameterize %.3f, pack %.3f, rasterize %.3f, measure %.3f, total "
-      "%.3f",
-      r.seconds.repair, r.seconds.parameterize, r.seconds.pack, r.seconds.rasterize,
-      r.seconds.measure, r.seconds.total);
+  add("seconds: proxy %.3f, repair %.3f, parameterize %.3f, pack %.3f, rasterize %.3f, measure "
+      "%.3f, total %.3f",
+      r.seconds.proxy, r.seconds.repair, r.seconds.parameterize, r.seconds.pack,
+      r.seconds.rasterize, r.seconds.measure, r.seconds.total);
   return text;
 }
 

@@ -13,6 +13,7 @@
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/geometry_image.hpp"
 #include "preprocess/chart_packing.hpp"
+#include "preprocess/mesh_proxy.hpp"
 #include "preprocess/repair.hpp"
 
 namespace gfield {
@@ -51,6 +52,9 @@ struct GeometryImageOptions {
   bool measure = true;
   size_t error_samples = 100000;  ///< area-weighted points per direction
   uint64_t seed = 1;
+  /// A mesh of more faces is charted and parameterised as a proxy of at most half as many
+  /// (mesh_proxy.hpp), its texels filled from the full surface; 0: never.
+  size_t proxy_above = kDefaultProxyAbove;
 };
 
 /// Error statistics in percent of the input's bounding-box diagonal.
@@ -77,8 +81,23 @@ struct ChartReport {
   ChartRect rect;
 };
 
+/// A proxy's image is kept where its mean mesh -> image distance is at most this many times
+/// GeometryImageOptions::max_mean_error; else the image is built from the full mesh.
+inline constexpr double kProxyErrorFactor = 2.0;
+
+/// The proxy a large mesh was charted as (GeometryImageOptions::proxy_above); faces = 0: none
+/// was tried.
+struct ProxyReport {
+  bool used = false;  ///< the image kept is the proxy's (else it was rejected)
+  size_t input_faces = 0;
+  size_t faces = 0;            ///< of the proxy
+  double error_percent = 0.0;  ///< meshoptimizer's bound, percent of the input's diagonal
+  double mean_percent = 0.0;   ///< the proxy image's mean mesh -> image distance (percent)
+};
+
 struct StageTimes {  ///< seconds
-  double repair = 0.0, parameterize = 0.0, pack = 0.0, rasterize = 0.0, measure = 0.0, total = 0.0;
+  double proxy = 0.0, repair = 0.0, parameterize = 0.0, pack = 0.0, rasterize = 0.0, measure = 0.0,
+         total = 0.0;
 };
 
 /// One image size an automatic size tried, and its mean mesh -> image distance (percent of the
@@ -89,7 +108,8 @@ struct SizeTrial {
 };
 
 struct GeometryImageReport {
-  RepairReport repair;
+  ProxyReport proxy;
+  RepairReport repair;  ///< of the proxy where one is used
   /// The sizes tried, smallest first, the last one kept; empty for a size given.
   std::vector<SizeTrial> size_trials;
   double max_mean_error = 0.0;  ///< the automatic size's target (percent of the diagonal)
@@ -116,7 +136,8 @@ struct GeometryImageReport {
 };
 
 /// Builds the geometry image of `input` (as loaded). `image.source` is left for the caller.
-/// `parameterized` receives the repaired mesh (kept components) with every corner's image uv.
+/// `parameterized` receives the repaired mesh (kept components; the proxy's above
+/// options.proxy_above faces) with every corner's image uv.
 /// With `appearance` (input's, mesh_appearance.hpp) carrying a base colour, image.albedo is the
 /// base colour resampled at every texel (docs/geometry-image.md, "Albedo").
 /// False with an error in words (no file name) for input it cannot handle.

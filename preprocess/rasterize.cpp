@@ -272,8 +272,8 @@ void pad_image(GeometryImage& image, const Box& box) {
 
 void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
                       const std::vector<RasterChart>& charts, int size, const Box& box,
-                      const AlbedoSource* albedo, GeometryImage& image,
-                      std::vector<glm::vec2>& face_uv) {
+                      const AlbedoSource* albedo, const SurfaceProjection* projection,
+                      GeometryImage& image, std::vector<glm::vec2>& face_uv) {
   const size_t texels = size_t(size) * size_t(size);
   image.size = size;
   image.position.assign(texels, glm::vec3(0.0f));
@@ -304,6 +304,8 @@ void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& n
   }
   if (albedo != nullptr)
     fill_unknown_albedo(image, state.albedo_known);
+  if (projection != nullptr)
+    projection->project(image);
   pad_image(image, box);
 }
 

@@ -14,6 +14,7 @@
 #include "gfield/geometry_image.hpp"
 #include "preprocess/albedo_resample.hpp"
 #include "preprocess/chart_packing.hpp"
+#include "preprocess/surface_projection.hpp"
 
 namespace gfield {
 
@@ -42,10 +43,12 @@ std::vector<ChartTransform> orbifold_copies(glm::dvec2 lo, glm::dvec2 hi);
 /// charts' faces (orbifold faces: the copy that holds the face's centroid in the chart square).
 /// `normals` are unit vertex normals of `mesh`. With `albedo`, image.albedo too: each covered
 /// texel the base colour averaged over its footprint; texels of faces that fill holes the
-/// nearest such texel of their chart; padding as positions.
+/// nearest such texel of their chart; padding as positions. With `projection` (a proxy's image),
+/// the covered texels are moved onto the full-resolution surface before the padding, and take
+/// their albedo from it (`albedo` is then null).
 void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
                       const std::vector<RasterChart>& charts, int size, const Box& box,
-                      const AlbedoSource* albedo, GeometryImage& image,
-                      std::vector<glm::vec2>& face_uv);
+                      const AlbedoSource* albedo, const SurfaceProjection* projection,
+                      GeometryImage& image, std::vector<glm::vec2>& face_uv);
 
 }  // namespace gfield

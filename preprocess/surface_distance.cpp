@@ -1,26 +1,16 @@
-// Surface sampling and point-to-surface distances (CGAL AABB tree, queries in parallel).
+// Surface sampling and point-to-surface distances (Embree point queries, in parallel).
 
 #include "preprocess/surface_distance.hpp"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
+
+#include "preprocess/closest_point.hpp"
 
 namespace gfield {
 namespace {
-
-using Kernel = CGAL::Simple_cartesian<double>;
-using Point3 = Kernel::Point_3;
-using Triangle3 = Kernel::Triangle_3;
-using Triangles = std::vector<Triangle3>;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
 /// Uniform double in [0, 1) from 53 random bits.
 double unit(std::mt19937_64& rng) {
@@ -60,29 +50,15 @@ std::vector<glm::dvec3> sample_surface(const TriangleMesh& mesh, size_t count, u
 
 std::vector<double> distances_to_surface(const std::vector<glm::dvec3>& points,
                                          const TriangleMesh& surface) {
-  Triangles triangles;
-  triangles.reserve(surface.triangles.size());
-  auto point = [&](int v) {
-    const glm::dvec3& p = surface.positions[v];
-    return Point3(p.x, p.y, p.z);
-  };
-  for (const glm::ivec3& t : surface.triangles) {
-    Triangle3 triangle(point(t[0]), point(t[1]), point(t[2]));
-    if (!triangle.is_degenerate())
-      triangles.push_back(triangle);
-  }
   std::vector<double> distance(points.size(), std::numeric_limits<double>::infinity());
-  if (triangles.empty())
+  EmbreeMesh embree;
+  std::string ignored;
+  if (surface.triangles.empty() || !embree.build(surface, ignored))
     return distance;
-  Tree tree(triangles.begin(), triangles.end());
-  tree.accelerate_distance_queries();
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 1024),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t k = range.begin(); k != range.end(); ++k) {
-                        const Point3 q(points[k].x, points[k].y, points[k].z);
-                        distance[k] = std::sqrt(tree.squared_distance(q));
-                      }
-                    });
+  const std::vector<ClosestPoint> closest = closest_points(embree, surface, points);
+  for (size_t k = 0; k < points.size(); ++k)
+    if (closest[k].triangle >= 0)
+      distance[k] = closest[k].distance;
   return distance;
 }
 

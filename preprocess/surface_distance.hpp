@@ -1,6 +1,7 @@
 #pragma once
 // Distances between surfaces for the geometry-image reconstruction error: area-weighted random
-// points on one triangle mesh and their distances to the closest point of another (CGAL AABB tree).
+// points on one triangle mesh and their distances to the closest point of another (Embree point
+// queries).
 
 #include <cstdint>
 #include <vector>

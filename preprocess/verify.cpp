@@ -160,15 +160,16 @@ glm::vec3 random_face_point(std::mt19937_64& rng, int face) {
   return face_point(face, glm::vec2(s, t));
 }
 
-/// Lookups and exact casts of one ray family against every reference mesh (`built_only`: the
-/// built mesh only: the surface rays leave its triangles).
+/// Lookups and exact casts of one ray family against the reference meshes.
 struct Family {
   std::string name;
   std::vector<Ray> rays;
   bool with_last = false;      ///< also the last hit (segments only)
   std::vector<int> ignored;    ///< the triangle each ray leaves (surface rays), else empty
   std::vector<int> layers{0};  ///< layers looked up per run (0: all K)
-  bool built_only = false;
+  /// "": against every reference mesh; else only against the one of this label (rays leaving
+  /// the surface: the mesh they leave)
+  std::string reference;
   /// surface rays: how they leave (self_origins, self_t_min, facing; the rays and triangles are
   /// the family's above), else empty
   SurfaceRays leaving = {};
@@ -419,6 +420,19 @@ MeshSource find_original(const std::string& name, const std::string& report_path
   return {};
 }
 
+/// Whether the report beside the asset (where there is one) says its image was built through a
+/// proxy (geometry_image.proxy).
+bool report_says_proxy(const std::string& report_path) {
+  std::ifstream file(report_path);
+  if (!file)
+    return false;
+  const nlohmann::json report = nlohmann::json::parse(file, nullptr, false);
+  return report.is_object() && report.contains("geometry_image") &&
+         report["geometry_image"].is_object() && report["geometry_image"].contains("proxy") &&
+         report["geometry_image"]["proxy"].is_object() &&
+         report["geometry_image"]["proxy"].value("used", false);
+}
+
 /// The report beside the asset, where there is one, must be of the image's build.
 bool check_report(const std::string& report_path, const GeometryImage& image,
                   const std::string& image_path, std::string& error) {
@@ -470,17 +484,18 @@ struct Run {
   double seconds;
 };
 
-/// The ray families: box and view rays with all layers; rays leaving the built mesh's surface
-/// (random points and hemisphere directions; mirror reflections of view rays) with K = 1 and
-/// with all K.
+/// The ray families: box and view rays with all layers; rays leaving the surface of `mesh` (held
+/// by `embree`; reference `label`: the built mesh, or the original of an image built through a
+/// proxy) (random points and hemisphere directions; mirror reflections of view rays) with K = 1
+/// and with all K.
 std::vector<Family> make_families(const GeometryField& field, const GeometryImage& image,
-                                  const EmbreeMesh& built, const TriangleMesh& mesh,
-                                  const VerifyOptions& options) {
+                                  const EmbreeMesh& embree, const TriangleMesh& mesh,
+                                  const std::string& label, const VerifyOptions& options) {
   std::vector<Family> families;
-  Family box{"box_rays", random_box_rays(field.box, options.rays, options.seed), true, {}, {0}};
+  Family box{"box_rays", random_box_rays(field.box, options.rays, options.seed), true, {}, {0}, {}};
   families.push_back(std::move(box));
   Family view{
-      "view_rays", random_view_rays(field.box, options.rays, options.seed + 1), false, {}, {0}};
+      "view_rays", random_view_rays(field.box, options.rays, options.seed + 1), false, {}, {0}, {}};
   families.push_back(std::move(view));
   const SurfaceOffsets offsets = surface_offsets(image, field.box);
   const std::vector<int> layers =
@@ -489,8 +504,8 @@ std::vector<Family> make_families(const GeometryField& field, const GeometryImag
     SurfaceRays rays =
         name == std::string("surface_rays")
             ? random_surface_rays(mesh, options.rays, offsets, options.seed + 3)
-            : mirror_surface_rays(built, mesh, field.box, options.rays, offsets, options.seed + 4);
-    Family family{name, std::move(rays.rays), false, std::move(rays.triangles), layers, true};
+            : mirror_surface_rays(embree, mesh, field.box, options.rays, offsets, options.seed + 4);
+    Family family{name, std::move(rays.rays), false, std::move(rays.triangles), layers, label};
     family.leaving.self_origins = std::move(rays.self_origins);
     family.leaving.self_t_min = rays.self_t_min;
     family.leaving.facing = std::move(rays.facing);
@@ -549,7 +564,7 @@ nlohmann::json reference_report(const Reference& reference, const EmbreeMesh& em
       verify_table(field, image, embree, reference.mesh, options.rays, options.seed + 2));
   const Exact exact(embree, reference.mesh);
   for (const Family& family : families) {
-    if (family.built_only && reference.label != "built") {
+    if (!family.reference.empty() && reference.label != family.reference) {
       continue;
     }
     const std::vector<Answer> first =
@@ -623,12 +638,21 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
     }
     references.push_back(std::move(r));
   }
-  EmbreeMesh built;
+  EmbreeMesh built, original_embree;
   if (!built.build(pm.mesh, error)) {
     error = shown.parameterized_mesh + ": " + error;
     return false;
   }
-  const std::vector<Family> families = make_families(field, image, built, pm.mesh, options);
+  if (references.size() > 1 && !original_embree.build(references[1].mesh, error)) {
+    error = references[1].path + ": " + error;
+    return false;
+  }
+  // An image built through a proxy describes the original: its rays leave the original's surface.
+  const bool proxy = options.proxy || report_says_proxy(read.report);
+  const bool from_original = proxy && references.size() > 1;
+  const std::vector<Family> families = make_families(
+      field, image, from_original ? original_embree : built,
+      from_original ? references[1].mesh : pm.mesh, from_original ? "original" : "built", options);
   const std::vector<Run> runs = lookup_runs(lookup, families);
 
   report = nlohmann::json::object();
@@ -642,16 +666,12 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   report["source"] = printable(image.source);
   report["rays_per_family"] = options.rays;
   report["seed"] = options.seed;
+  report["proxy"] = proxy;
   report["references"] = nlohmann::json::array();
   for (const Reference& reference : references) {
-    EmbreeMesh other;
-    if (reference.label != "built" && !other.build(reference.mesh, error)) {
-      error = reference.path + ": " + error;
-      return false;
-    }
-    report["references"].push_back(reference_report(reference,
-                                                    reference.label == "built" ? built : other,
-                                                    field, image, families, runs, options));
+    report["references"].push_back(
+        reference_report(reference, reference.label == "built" ? built : original_embree, field,
+                         image, families, runs, options));
   }
   if (original.file.empty()) {
     report["original_note"] = "original mesh file not found (use --original)";
@@ -659,6 +679,11 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   if (!check_field_sees_mesh(report["references"][0]["table"], shown.field, error))
     return false;
   return true;
+}
+
+const nlohmann::json& described_reference(const nlohmann::json& report) {
+  const nlohmann::json& references = report["references"];
+  return report.value("proxy", false) && references.size() > 1 ? references[1] : references[0];
 }
 
 std::string verify_report_to_text(const nlohmann::json& report) {

@@ -104,12 +104,16 @@ struct VerifyOptions {
   std::string original_part;  ///< glTF: its mesh (MeshSource::part); from the report with it
   /// Whether the original mesh may read files outside its folder (--allow-outside-paths).
   OutsidePaths original_outside_paths = OutsidePaths::kRefused;
+  /// The image was built through a proxy (mesh_proxy.hpp): rays leaving the surface leave the
+  /// original's (also when NAME.report.json says so).
+  bool proxy = false;
 };
 
 /// Verifies the asset NAME (NAME.gfield.exr, NAME.gimage.exr, NAME.gimage.obj) against the mesh
 /// it was built from and, where found, against the original file: the table, box rays and view
 /// rays with all K layers; against the built mesh also rays leaving its surface (surface_rays,
-/// mirror_rays), with the first layer (K = 1) and with all K. The report: see
+/// mirror_rays), with the first layer (K = 1) and with all K (against the original instead
+/// where the image was built through a proxy, VerifyOptions::proxy). The report: see
 /// docs/geometry-field.md. False with an error "FILE: problem", also when the files (and
 /// NAME.report.json, where present) are of different builds (gfield/build_id.hpp).
 bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,
@@ -117,6 +121,10 @@ bool verify_asset(const std::string& name, const VerifyOptions& options, nlohman
 /// The same for the files `read` (a build's staged files), reported as asset NAME's.
 bool verify_asset_files(const AssetFiles& read, const std::string& name,
                         const VerifyOptions& options, nlohmann::json& report, std::string& error);
+
+/// The reference of a verify report that the asset describes: the original where the image was
+/// built through a proxy (and the original was found), else the built mesh.
+const nlohmann::json& described_reference(const nlohmann::json& report);
 
 /// The report as readable text (one table per reference mesh).
 std::string verify_report_to_text(const nlohmann::json& report);

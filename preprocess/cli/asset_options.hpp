@@ -11,11 +11,13 @@
 
 #include "preprocess/asset_arguments.hpp"
 #include "preprocess/cli/path_options.hpp"
+#include "preprocess/verify.hpp"
 
 namespace gfield {
 
-/// --size and --max-image-error of `gfield image`, `build` and `batch`.
-inline void add_image_size_options(CLI::App* cmd, std::string& size, double& max_image_error) {
+/// --size, --max-image-error and --proxy-above of `gfield image`, `build` and `batch`.
+inline void add_image_size_options(CLI::App* cmd, std::string& size, double& max_image_error,
+                                   size_t& proxy_above) {
   const std::string sizes =
       std::to_string(kAutoImageSizes[0]) + ", or " + std::to_string(kAutoImageSizes[1]);
   cmd->add_option("--size", size,
@@ -40,6 +42,11 @@ inline void add_image_size_options(CLI::App* cmd, std::string& size, double& max
           },
           "PERCENT"))
       ->capture_default_str();
+  cmd->add_option("--proxy-above", proxy_above,
+                  "a mesh of more faces is charted as a simplified proxy of half as many, the "
+                  "image's texels\nprojected onto the full surface (0: never)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
 }
 
 /// --format and --layers of `gfield field`, `build` and `batch`.
@@ -60,7 +67,7 @@ inline void add_field_format_options(CLI::App* cmd, int& format, int& layers) {
 /// --method,
 /// --components, --allow-outside-paths to `cmd`.
 inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArguments>& args) {
-  add_image_size_options(cmd, args->size, args->max_image_error);
+  add_image_size_options(cmd, args->size, args->max_image_error, args->proxy_above);
   cmd->add_option("--samples", args->samples,
                   "N, field samples per side of each box face (" +
                       std::to_string(kMinSamplesPerSide) + " to " +
@@ -81,23 +88,33 @@ inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArgument
   add_outside_paths_option(cmd, args->allow_outside_paths);
 }
 
+/// "; proxy of 99865 faces" where the image was charted on a proxy (mesh_proxy.hpp), "; proxy
+/// of 99865 faces rejected" where one was tried and not kept, else "".
+inline std::string proxy_text(const nlohmann::json& image_report) {
+  if (!image_report.contains("proxy") || !image_report["proxy"].is_object())
+    return "";
+  const nlohmann::json& proxy = image_report["proxy"];
+  return "; proxy of " + std::to_string(proxy["faces"].get<size_t>()) +
+         (proxy.value("used", false) ? " faces" : " faces rejected");
+}
+
 /// One line: what an asset build produced and how accurate it is.
 inline std::string asset_summary(const nlohmann::json& report) {
   char line[512];
   const nlohmann::json& f = report["geometry_field"];
   std::snprintf(line, sizeof(line),
-                "image %d^2 (%s), field N = %d, format %d, K = %d (casts %.2f s, write %.2f s), "
+                "image %d^2 (%s%s), field N = %d, format %d, K = %d (casts %.2f s, write %.2f s), "
                 "GPU %.1f MB (image) + %.1f MB (field at 8 bits)",
                 report["geometry_image"]["size"].get<int>(),
                 report["geometry_image"].value("route", std::string("?")).c_str(),
-                f["samples_per_side"].get<int>(), f.value("format_version", 2),
-                f["layers"].get<int>(), f["cast_seconds"].get<double>(),
-                f["write_seconds"].get<double>(),
+                proxy_text(report["geometry_image"]).c_str(), f["samples_per_side"].get<int>(),
+                f.value("format_version", 2), f["layers"].get<int>(),
+                f["cast_seconds"].get<double>(), f["write_seconds"].get<double>(),
                 f["gpu_bytes"]["geometry_image"].get<double>() / 1e6,
                 f["gpu_bytes"]["geometry_field_8bit"].get<double>() / 1e6);
   std::string text = line;
   if (report.contains("accuracy")) {
-    const nlohmann::json& r = report["accuracy"]["references"][0];
+    const nlohmann::json& r = described_reference(report["accuracy"]);
     const nlohmann::json& refined = r["box_rays"]["refined"];
     std::snprintf(line, sizeof(line),
                   ", table hit/miss %.3f%%, refined hit/miss %.3f%% median %.4f%% p95 %.4f%%",

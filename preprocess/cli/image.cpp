@@ -26,6 +26,7 @@ struct ImageArguments {
   std::string mesh, part, output, json;
   std::string size = "auto";
   double max_image_error = kDefaultMaxMeanError;
+  size_t proxy_above = kDefaultProxyAbove;
   std::string method = "auto", components = "all", holes = "all-but-longest", protrusions = "split";
   bool no_measure = false;
   bool allow_outside_paths = false;
@@ -40,7 +41,7 @@ void add_image_options(CLI::App* cmd, const std::shared_ptr<ImageArguments>& arg
                   "scene, placed by its nodes, as one mesh)");
   cmd->add_option("-o,--output", args->output, "output geometry image (NAME.gimage.exr)")
       ->required();
-  add_image_size_options(cmd, args->size, args->max_image_error);
+  add_image_size_options(cmd, args->size, args->max_image_error, args->proxy_above);
   cmd->add_option("--method", args->method,
                   "auto: orbifold for closed genus-0 components, a disk chart otherwise;\n"
                   "orbifold: only closed genus 0; square: every component cut to a disk")
@@ -73,6 +74,7 @@ GeometryImageOptions image_options(const ImageArguments& args) {
   GeometryImageOptions options;
   image_size_from_text(args.size, options.size);  // checked by --size's validator
   options.max_mean_error = args.max_image_error;
+  options.proxy_above = args.proxy_above;
   options.method = args.method == "orbifold" ? ParameterizationMethod::kOrbifold
                    : args.method == "square" ? ParameterizationMethod::kSquare
                                              : ParameterizationMethod::kAuto;
