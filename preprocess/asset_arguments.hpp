@@ -20,7 +20,7 @@ struct AssetArguments {
   int layers = kAutoLayers;
   bool half = false;  ///< the default; the flag exists for symmetry with --float
   bool full = false;
-  size_t verify_rays = 100000;
+  size_t verify_rays = kDefaultVerifyRays;
   std::string method = "auto";
   std::string components = "all";
   bool allow_outside_paths = false;

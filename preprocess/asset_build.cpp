@@ -242,7 +242,7 @@ bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
                        const std::vector<std::string>& warnings, const std::string& mesh_path,
                        const std::string& name, const AssetOptions& options,
                        const BuildInputs& inputs, const AssetFiles& staged, const Stopwatch& watch,
-                       nlohmann::json& report, std::string& error) {
+                       double mesh_seconds, nlohmann::json& report, std::string& error) {
   const AssetFiles files = asset_files(name);
   report = nlohmann::json::object();
   report["mesh"] = printable(std::filesystem::path(mesh_path).filename().string());
@@ -277,6 +277,7 @@ bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
   report["geometry_field"]["precision"] =
       options.field.precision == ExrPrecision::kHalf ? "half" : "float";
 
+  Stopwatch verify_watch;
   if (options.verify_rays > 0) {
     VerifyOptions verify;
     verify.rays = options.verify_rays;
@@ -300,6 +301,15 @@ bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
                      {"geometry_field", printable(files.field)},
                      {"geometry_image_bytes", size_t(std::filesystem::file_size(staged.image, ec))},
                      {"geometry_field_bytes", field_report.file_bytes}};
+  const nlohmann::json& image_report = report["geometry_image"];
+  const nlohmann::json& field = report["geometry_field"];
+  report["stage_seconds"] = {
+      {"mesh", mesh_seconds},
+      {"image", image_report["seconds"]["total"]},
+      {"image_write", image_report["write_seconds"]},
+      {"field", field["bvh_seconds"].get<double>() + field["cast_seconds"].get<double>()},
+      {"field_write", field["write_seconds"]},
+      {"verify", options.verify_rays > 0 ? verify_watch.seconds() : 0.0}};
   report["seconds"] = watch.seconds();
   return write_text_file(staged.report, report.dump(2) + "\n", error);
 }
@@ -324,18 +334,20 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
   MeshAppearance appearance;
   std::vector<std::string> warnings;
   report_progress(options.control, "mesh", 0.0);
+  const Stopwatch mesh_watch;
   if (!load_mesh(MeshSource{mesh_path, options.part, options.outside_paths}, mesh, &appearance,
                  warnings, error) ||
       interrupted(options.control, mesh_path, error)) {
     return false;
   }
   report_progress(options.control, "mesh", 1.0);
+  const double mesh_seconds = mesh_watch.seconds();
   AssetStaging staging;
   if (!staging.open(name, error)) {
     return false;
   }
   if (!write_asset_files(mesh, appearance, warnings, mesh_path, name, options, inputs,
-                         staging.staged(), watch, report, error) ||
+                         staging.staged(), watch, mesh_seconds, report, error) ||
       !staging.publish(error)) {
     error = with_asset_names(error, staging.staged(), asset_files(name));
     return false;

@@ -13,7 +13,7 @@ EmbreeMesh::~EmbreeMesh() {
   }
 }
 
-bool EmbreeMesh::build(const TriangleMesh& mesh, std::string& error) {
+bool EmbreeMesh::build(const TriangleMesh& mesh, std::string& error, RTCBuildQuality quality) {
   device_ = rtcNewDevice(nullptr);
   if (!device_) {
     error =
@@ -21,7 +21,7 @@ bool EmbreeMesh::build(const TriangleMesh& mesh, std::string& error) {
     return false;
   }
   scene_ = rtcNewScene(device_);
-  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_MEDIUM);
+  rtcSetSceneBuildQuality(scene_, quality);
   // Casts may pass an intersection filter in their context (the layered field build).
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);

@@ -21,8 +21,10 @@ class EmbreeMesh {
   EmbreeMesh(const EmbreeMesh&) = delete;
   EmbreeMesh& operator=(const EmbreeMesh&) = delete;
 
-  /// Builds the BVH of `mesh`. False with an error if Embree refuses the device or geometry.
-  bool build(const TriangleMesh& mesh, std::string& error);
+  /// Builds the BVH of `mesh` (`quality`: LOW for a BVH built for few queries). False with an
+  /// error if Embree refuses the device or geometry.
+  bool build(const TriangleMesh& mesh, std::string& error,
+             RTCBuildQuality quality = RTC_BUILD_QUALITY_MEDIUM);
 
   RTCDevice device() const { return device_; }
   RTCScene scene() const { return scene_; }

@@ -42,6 +42,7 @@ Component make_component(const TriangleMesh& mesh, std::vector<int> faces) {
   Component c;
   c.faces = std::move(faces);
   std::unordered_map<int, int> local;
+  local.reserve(c.faces.size());
   for (int f : c.faces) {
     glm::ivec3 t;
     for (int k = 0; k < 3; ++k) {
@@ -60,6 +61,7 @@ Component make_component(const TriangleMesh& mesh, std::vector<int> faces) {
   // Edges, boundary loops (each boundary vertex of an oriented manifold has one outgoing
   // boundary halfedge), genus from the Euler characteristic.
   std::unordered_map<uint64_t, int> directed;
+  directed.reserve(3 * c.mesh.triangles.size());
   for (const glm::ivec3& t : c.mesh.triangles)
     for (int k = 0; k < 3; ++k)
       directed[half_edge_key(t[k], t[(k + 1) % 3])] = t[(k + 1) % 3];

@@ -21,6 +21,7 @@
 #include <map>
 #include <numeric>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace gfield {
 namespace {
@@ -42,6 +43,14 @@ struct PositionHash {
     return size_t(h);
   }
 };
+struct FaceHash {
+  size_t operator()(const std::array<int, 3>& f) const {
+    uint64_t h = 1469598103934665603ull;
+    for (int v : f)
+      h = (h ^ uint64_t(uint32_t(v))) * 1099511628211ull;
+    return size_t(h ^ (h >> 29));
+  }
+};
 struct PositionEqual {
   bool operator()(const glm::dvec3& a, const glm::dvec3& b) const { return a == b; }
 };
@@ -58,6 +67,7 @@ size_t orient_outward(TriangleMesh& mesh) {
   std::vector<double> volume(count, 0.0);
   std::vector<char> closed(count, 1);
   std::unordered_map<uint64_t, int> directed;
+  directed.reserve(3 * mesh.triangles.size());
   auto key = [](int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); };
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
     const glm::ivec3& t = mesh.triangles[f];
@@ -111,6 +121,7 @@ bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out
 
   // Weld exactly coincident positions.
   std::unordered_map<glm::dvec3, int, PositionHash, PositionEqual> index;
+  index.reserve(input.positions.size());
   std::vector<int> welded(input.positions.size());
   std::vector<glm::dvec3> positions;
   for (size_t v = 0; v < input.positions.size(); ++v) {
@@ -124,7 +135,8 @@ bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out
   // Drop degenerate and duplicate faces.
   std::vector<std::array<int, 3>> faces;
   std::vector<int> kept;  // the input face of each of `faces`
-  std::map<std::array<int, 3>, char> seen;
+  std::unordered_set<std::array<int, 3>, FaceHash> seen;
+  seen.reserve(input.triangles.size());
   for (size_t input_face = 0; input_face < input.triangles.size(); ++input_face) {
     const glm::ivec3& t = input.triangles[input_face];
     const std::array<int, 3> f{welded[t[0]], welded[t[1]], welded[t[2]]};
@@ -135,7 +147,7 @@ bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out
     }
     std::array<int, 3> key = f;
     std::sort(key.begin(), key.end());
-    if (!seen.emplace(key, 1).second) {
+    if (!seen.insert(key).second) {
       ++report.duplicate_faces;
       continue;
     }

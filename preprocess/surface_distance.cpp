@@ -53,7 +53,7 @@ std::vector<double> distances_to_surface(const std::vector<glm::dvec3>& points,
   std::vector<double> distance(points.size(), std::numeric_limits<double>::infinity());
   EmbreeMesh embree;
   std::string ignored;
-  if (surface.triangles.empty() || !embree.build(surface, ignored))
+  if (surface.triangles.empty() || !embree.build(surface, ignored, RTC_BUILD_QUALITY_LOW))
     return distance;
   const std::vector<ClosestPoint> closest = closest_points(embree, surface, points);
   for (size_t k = 0; k < points.size(); ++k)

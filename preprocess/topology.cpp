@@ -81,12 +81,13 @@ std::vector<double> measure_faces(const TriangleMesh& mesh, TopologyReport& r) {
 
 /// Vertices at the exact position of an earlier vertex.
 size_t count_duplicate_positions(const TriangleMesh& mesh) {
-  std::map<std::array<double, 3>, int> seen;
+  std::vector<std::array<double, 3>> sorted(mesh.positions.size());
+  for (size_t v = 0; v < mesh.positions.size(); ++v)
+    sorted[v] = {mesh.positions[v].x, mesh.positions[v].y, mesh.positions[v].z};
+  std::sort(sorted.begin(), sorted.end());
   size_t duplicates = 0;
-  for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    const glm::dvec3& p = mesh.positions[v];
-    duplicates += seen.emplace(std::array<double, 3>{p.x, p.y, p.z}, int(v)).second ? 0 : 1;
-  }
+  for (size_t k = 1; k < sorted.size(); ++k)
+    duplicates += sorted[k] == sorted[k - 1] ? 1 : 0;
   return duplicates;
 }
 
@@ -131,20 +132,21 @@ Fans vertex_fans(const TriangleMesh& mesh) {
         fans.vertex_faces[size_t(t[c])].push_back(int(f));
   }
   fans.fan_of.resize(mesh.positions.size());
+  std::vector<std::pair<int, int>> corners;  // (other corner, local face index), sorted
   for (size_t v = 0; v < mesh.positions.size(); ++v) {
     const std::vector<int>& around = fans.vertex_faces[v];
     UnionFind fan(around.size());
-    std::unordered_map<int, int> first_face_with;  // other corner -> local face index
+    corners.clear();
     for (size_t k = 0; k < around.size(); ++k) {
       const glm::ivec3& t = mesh.triangles[size_t(around[k])];
-      for (int c = 0; c < 3; ++c) {
-        if (t[c] == int(v))
-          continue;
-        auto [it, inserted] = first_face_with.emplace(t[c], int(k));
-        if (!inserted)
-          fan.unite(it->second, int(k));
-      }
+      for (int c = 0; c < 3; ++c)
+        if (t[c] != int(v))
+          corners.emplace_back(t[c], int(k));
     }
+    std::sort(corners.begin(), corners.end());
+    for (size_t i = 1; i < corners.size(); ++i)  // faces sharing an edge at v share a fan
+      if (corners[i].first == corners[i - 1].first)
+        fan.unite(corners[i - 1].second, corners[i].second);
     fans.fan_of[v].resize(around.size());
     for (size_t k = 0; k < around.size(); ++k)
       fans.fan_of[v][k] = fan.find(int(k));
@@ -175,6 +177,7 @@ struct Components {
 Components face_components(const TriangleMesh& mesh, const std::vector<double>& face_area) {
   Components components(mesh.triangles.size());
   std::unordered_map<uint64_t, int> first_face_on;
+  first_face_on.reserve(2 * mesh.triangles.size());
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
     const glm::ivec3& t = mesh.triangles[f];
     for (int c = 0; c < 3; ++c) {

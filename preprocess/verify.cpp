@@ -195,9 +195,20 @@ glm::vec3 face_normal(const TriangleMesh& mesh, int f) {
 
 }  // namespace
 
+glm::dvec2 agreement_interval(size_t agree, size_t rays) {
+  if (rays == 0)
+    return {0.0, 1.0};
+  const double z = 1.959963984540054, n = double(rays), p = double(agree) / n;
+  const double centre = (p + z * z / (2.0 * n)) / (1.0 + z * z / n);
+  const double half = z * std::sqrt(p * (1.0 - p) / n + z * z / (4.0 * n * n)) / (1.0 + z * z / n);
+  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
+}
+
 nlohmann::json accuracy_to_json(const AccuracyStats& s) {
+  const glm::dvec2 interval = agreement_interval(s.agree, s.rays);
   return {{"rays", s.rays},
           {"hit_agreement", s.hit_agreement()},
+          {"hit_agreement_ci95", {interval.x, interval.y}},
           {"exact_hits", s.exact_hits},
           {"answer_hits", s.answer_hits},
           {"both_hit", s.both_hit},

@@ -35,6 +35,10 @@ struct AccuracyStats {
   double hit_agreement() const { return rays == 0 ? 0.0 : double(agree) / double(rays); }
 };
 
+/// The 95% confidence interval of a share of `agree` in `rays` (Wilson score interval): where
+/// the hit/miss agreement of every ray of the family lies, given the rays sampled.
+glm::dvec2 agreement_interval(size_t agree, size_t rays);
+
 nlohmann::json accuracy_to_json(const AccuracyStats& stats);
 
 /// `count` segments between uniform random points on two different faces of `box` (t in [0,1]).

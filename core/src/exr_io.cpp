@@ -583,6 +583,7 @@ bool save_geometry_image(const std::string& filename, const GeometryImage& image
   Imf::Header header = make_header(image.size, image.size, kImageTag, kGeometryImageVersion,
                                    image.box, image.source, image.build_id);
   header.insert("gfield.rayOffset", Imf::FloatAttribute(image.ray_offset));
+  header.zipCompressionLevel() = 1;
   const Imf::PixelType type = pixel_type(precision);
   const float* p = &image.position[0].x;
   const float* n = &image.normal[0].x;

@@ -98,6 +98,20 @@ inline std::string proxy_text(const nlohmann::json& image_report) {
          (proxy.value("used", false) ? " faces" : " faces rejected");
 }
 
+/// "stages: mesh 0.02 s, image 1.87 s (+ write 0.25 s), field 0.81 s (+ write 0.35 s), verify
+/// 1.10 s": a build's stage times (report "stage_seconds"), one line.
+inline std::string stage_summary(const nlohmann::json& report) {
+  const nlohmann::json& s = report["stage_seconds"];
+  char line[256];
+  std::snprintf(line, sizeof(line),
+                "stages: mesh %.2f s, image %.2f s (+ write %.2f s), field %.2f s (+ write %.2f "
+                "s), verify %.2f s",
+                s["mesh"].get<double>(), s["image"].get<double>(), s["image_write"].get<double>(),
+                s["field"].get<double>(), s["field_write"].get<double>(),
+                s["verify"].get<double>());
+  return line;
+}
+
 /// One line: what an asset build produced and how accurate it is.
 inline std::string asset_summary(const nlohmann::json& report) {
   char line[512];
@@ -116,10 +130,13 @@ inline std::string asset_summary(const nlohmann::json& report) {
   if (report.contains("accuracy")) {
     const nlohmann::json& r = described_reference(report["accuracy"]);
     const nlohmann::json& refined = r["box_rays"]["refined"];
+    const nlohmann::json& interval = refined["hit_agreement_ci95"];
     std::snprintf(line, sizeof(line),
-                  ", table hit/miss %.3f%%, refined hit/miss %.3f%% median %.4f%% p95 %.4f%%",
+                  ", table hit/miss %.3f%%, refined hit/miss %.3f%% (95%%: %.2f-%.2f%%) median "
+                  "%.4f%% p95 %.4f%%",
                   100.0 * r["table"]["hit_agreement"].get<double>(),
-                  100.0 * refined["hit_agreement"].get<double>(),
+                  100.0 * refined["hit_agreement"].get<double>(), 100.0 * interval[0].get<double>(),
+                  100.0 * interval[1].get<double>(),
                   refined["position_error_percent_of_diagonal"]["median"].get<double>(),
                   refined["position_error_percent_of_diagonal"]["p95"].get<double>());
     text += line;

@@ -25,6 +25,7 @@ void add_build_command(CLI::App& app) {
   auto threads = std::make_shared<int>(0);
   auto part = std::make_shared<std::string>();
   auto args = std::make_shared<AssetArguments>();
+  auto json = std::make_shared<bool>(false);
   cmd->add_option("MESH", *mesh, "mesh file (.obj, .ply, .off, .stl, .gltf, .glb)")->required();
   cmd->add_option("--mesh", *part,
                   "glTF: the mesh NAME (or #INDEX) to build (default: every primitive of the "
@@ -34,7 +35,10 @@ void add_build_command(CLI::App& app) {
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
   add_asset_options(cmd, args);
-  cmd->callback([mesh, name, threads, part, args] {
+  cmd->add_flag("--json", *json,
+                "print the report (NAME.report.json, its stage_seconds included) instead of the "
+                "summary");
+  cmd->callback([mesh, name, threads, part, args, json] {
     const ThreadLimit limit(*threads);
     AssetOptions options = asset_options(*args);
     options.part = *part;
@@ -50,12 +54,17 @@ void add_build_command(CLI::App& app) {
     if (!built) {
       throw CommandError(error);
     }
+    if (*json) {
+      std::printf("%s\n", report.dump(2).c_str());
+      return;
+    }
     print_warnings(report["warnings"].get<std::vector<std::string>>());
     std::printf(
-        "%s: %s\nwrote %s.{gimage.exr,gimage.obj,gfield.exr,report.json} in %.2f s "
+        "%s: %s\n%s\nwrote %s.{gimage.exr,gimage.obj,gfield.exr,report.json} in %.2f s "
         "(build %s)\n",
-        printable(*mesh).c_str(), asset_summary(report).c_str(), printable(*name).c_str(),
-        report["seconds"].get<double>(), report["build_id"].get<std::string>().c_str());
+        printable(*mesh).c_str(), asset_summary(report).c_str(), stage_summary(report).c_str(),
+        printable(*name).c_str(), report["seconds"].get<double>(),
+        report["build_id"].get<std::string>().c_str());
   });
 }
 

@@ -114,10 +114,10 @@ void bind_build(py::module_& m) {
   m.def("build", &build, py::arg("mesh_path"), py::arg("out"), py::kw_only(), py::arg("mesh") = "",
         py::arg("size") = "auto", py::arg("max_image_error") = kDefaultMaxMeanError,
         py::arg("samples") = 24, py::arg("format") = kFieldFormatVersion,
-        py::arg("layers") = "auto", py::arg("precision") = "half", py::arg("verify_rays") = 100000,
-        py::arg("method") = "auto", py::arg("components") = "all",
-        py::arg("allow_outside_paths") = false, py::arg("threads") = 0,
-        py::arg("progress") = py::none(),
+        py::arg("layers") = "auto", py::arg("precision") = "half",
+        py::arg("verify_rays") = kDefaultVerifyRays, py::arg("method") = "auto",
+        py::arg("components") = "all", py::arg("allow_outside_paths") = false,
+        py::arg("threads") = 0, py::arg("progress") = py::none(),
         "Builds the asset OUT (DIR/NAME: NAME.gimage.exr, NAME.gimage.obj, NAME.gfield.exr,\n"
         "NAME.report.json) from a mesh file, as `gfield build MESH -o OUT` does, and returns\n"
         "the report (the dict of NAME.report.json).\n\n"
