@@ -61,8 +61,10 @@ glm::dvec2 closest_barycentrics(const glm::dvec3& p, const glm::dvec3& a, const 
     const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
     return {1.0 - w, w};
   }
+  // va + vb + vc = |ab x ac|^2; near zero (collinear corners, to rounding) the face region's
+  // weights are noise: the nearest point of the three edges.
   const double sum = va + vb + vc;
-  if (!(sum > 0.0)) {  // degenerate (collinear) triangle: the nearest of its three edges
+  if (!(sum > 1e-10 * glm::dot(ab, ab) * glm::dot(ac, ac))) {
     glm::dvec2 best{0.0};
     double best_squared = std::numeric_limits<double>::infinity();
     const glm::dvec3 corner[3] = {a, b, c};

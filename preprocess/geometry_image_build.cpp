@@ -701,8 +701,8 @@ bool image_route(const TriangleMesh& input, const GeometryImageOptions& options,
 }
 
 /// The image through a proxy where `input` has more than options.proxy_above faces and the
-/// proxy's image keeps its mean mesh -> image distance within kProxyErrorFactor times
-/// options.max_mean_error; report.proxy says what was tried. False only on errors.
+/// proxy's image holds (kProxyErrorFactor); report.proxy says what was tried. False only on
+/// errors.
 bool proxy_route(const TriangleMesh& input, const GeometryImageOptions& options,
                  const MeshAppearance* appearance, GeometryImage& image,
                  ParameterizedMesh& parameterized, GeometryImageReport& report,
@@ -718,15 +718,28 @@ bool proxy_route(const TriangleMesh& input, const GeometryImageOptions& options,
   if (!image_route(input, options, appearance, &proxy, &projection, image, parameterized, report,
                    error))
     return false;
-  report.proxy.mean_percent = report.mesh_to_image.mean;
-  report.proxy.used = report.mesh_to_image.samples == 0 ||
-                      report.mesh_to_image.mean <= kProxyErrorFactor * options.max_mean_error;
+  ProxyReport& p = report.proxy;
+  p.mean_percent = report.mesh_to_image.mean;
+  p.input_genus = proxy.genus;
+  p.genus = 0;
+  for (const ChartReport& chart : report.charts)
+    p.genus += chart.genus;
+  char why[160] = "";
+  if (p.input_genus >= 0 && p.genus > p.input_genus)
+    std::snprintf(why, sizeof(why), "its charts have genus %ld, the mesh %ld", p.genus,
+                  p.input_genus);
+  else if (options.size == kAutoImageSize &&
+           report.mesh_to_image.mean > kProxyErrorFactor * options.max_mean_error)
+    std::snprintf(why, sizeof(why),
+                  "its image's mean mesh -> image distance %.4f%% exceeds %g times the target",
+                  report.mesh_to_image.mean, kProxyErrorFactor);
+  p.rejected = why;
+  p.used = p.rejected.empty();
   if (!report.proxy.used) {  // the full route starts over; what the proxy cost stays counted
-    const ProxyReport tried = report.proxy;
-    const double seconds = stage.seconds();
-    report = {};
-    report.proxy = tried;
-    report.seconds.proxy = seconds;
+    GeometryImageReport fresh;
+    fresh.proxy = std::move(report.proxy);
+    fresh.seconds.proxy = stage.seconds();
+    report = std::move(fresh);
   }
   return true;
 }
@@ -738,7 +751,7 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
                           GeometryImageReport& report, std::string& error,
                           const MeshAppearance* appearance) {
   Stopwatch watch;
-  report = {};
+  report = GeometryImageReport();
   if (!check_build_input(input, options, error))
     return false;
   const MeshAppearance* albedo =
@@ -793,7 +806,10 @@ nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
                                          {"input_faces", r.proxy.input_faces},
                                          {"faces", r.proxy.faces},
                                          {"error_percent", r.proxy.error_percent},
-                                         {"mesh_to_image_mean_percent", r.proxy.mean_percent}}
+                                         {"mesh_to_image_mean_percent", r.proxy.mean_percent},
+                                         {"genus", r.proxy.genus},
+                                         {"mesh_genus", r.proxy.input_genus},
+                                         {"rejected", r.proxy.rejected}}
                                   : json(nullptr)},
       {"components", r.components},
       {"dropped_components", r.dropped_components},
@@ -858,9 +874,8 @@ std::string geometry_image_report_to_text(const GeometryImageReport& r) {
         "texels projected onto the full surface",
         r.proxy.faces, r.proxy.input_faces, r.proxy.error_percent);
   else if (r.proxy.faces > 0)
-    add("proxy: %zu faces tried for %zu and rejected (its image's mean mesh -> image distance "
-        "%.4f%% exceeds %g times the target); built from the full mesh",
-        r.proxy.faces, r.proxy.input_faces, r.proxy.mean_percent, kProxyErrorFactor);
+    add("proxy: %zu faces tried for %zu and rejected (%s); built from the full mesh", r.proxy.faces,
+        r.proxy.input_faces, r.proxy.rejected.c_str());
   add("route: %s", r.route.c_str());
   for (size_t c = 0; c < r.charts.size(); ++c) {
     const ChartReport& chart = r.charts[c];

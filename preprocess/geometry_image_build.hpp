@@ -81,8 +81,10 @@ struct ChartReport {
   ChartRect rect;
 };
 
-/// A proxy's image is kept where its mean mesh -> image distance is at most this many times
-/// GeometryImageOptions::max_mean_error; else the image is built from the full mesh.
+/// A proxy's image is kept where its charts' genus is the mesh's (collapses that pinch or join
+/// the surface add handles the charts must cut) and, for an automatic size, its mean mesh ->
+/// image distance is at most this many times GeometryImageOptions::max_mean_error; else the
+/// image is built from the full mesh.
 inline constexpr double kProxyErrorFactor = 2.0;
 
 /// The proxy a large mesh was charted as (GeometryImageOptions::proxy_above); faces = 0: none
@@ -93,6 +95,9 @@ struct ProxyReport {
   size_t faces = 0;            ///< of the proxy
   double error_percent = 0.0;  ///< meshoptimizer's bound, percent of the input's diagonal
   double mean_percent = 0.0;   ///< the proxy image's mean mesh -> image distance (percent)
+  long input_genus = -1;       ///< the mesh's genus (-1: not a manifold, not compared)
+  long genus = 0;              ///< the proxy's charts' genus, summed
+  std::string rejected;        ///< why the proxy's image was not kept; empty when it was
 };
 
 struct StageTimes {  ///< seconds

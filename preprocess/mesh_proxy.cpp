@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <numeric>
 #include <unordered_map>
 #include <vector>
 
+#include "geometry/edge_key.hpp"
 #include "gfield/stopwatch.hpp"
 
 namespace gfield {
@@ -55,7 +57,61 @@ void drop_folded_pairs(std::vector<unsigned>& indices) {
   indices.resize(kept);
 }
 
+/// Union-find over vertex indices.
+struct VertexSets {
+  std::vector<int> parent;
+  explicit VertexSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[size_t(x)] != x)
+      x = parent[size_t(x)] = parent[size_t(parent[size_t(x)])];
+    return x;
+  }
+  void unite(int a, int b) { parent[size_t(find(a))] = find(b); }
+  /// The distinct sets among `members`.
+  size_t count(const std::vector<int>& members) {
+    std::vector<int> roots;
+    for (int v : members)
+      roots.push_back(find(v));
+    std::sort(roots.begin(), roots.end());
+    return size_t(std::unique(roots.begin(), roots.end()) - roots.begin());
+  }
+};
+
 }  // namespace
+
+long surface_genus(const TriangleMesh& mesh) {
+  std::unordered_map<uint64_t, int> faces_on;  // edge -> faces
+  faces_on.reserve(2 * mesh.triangles.size());
+  VertexSets components(mesh.positions.size());
+  std::vector<int> used;
+  long faces = 0;
+  for (const glm::ivec3& t : mesh.triangles) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+      continue;
+    ++faces;
+    for (int k = 0; k < 3; ++k) {
+      ++faces_on[edge_key(t[k], t[(k + 1) % 3])];
+      components.unite(t[k], t[(k + 1) % 3]);
+      used.push_back(t[k]);
+    }
+  }
+  VertexSets loops(mesh.positions.size());
+  std::vector<int> boundary;
+  for (const auto& [edge, count] : faces_on) {
+    if (count > 2)
+      return -1;
+    if (count == 1) {
+      const int a = int(edge >> 32), b = int(edge & 0xffffffffu);
+      loops.unite(a, b);
+      boundary.push_back(a);
+    }
+  }
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  const long chi = long(used.size()) - long(faces_on.size()) + faces;
+  const long c = long(components.count(used)), b = long(loops.count(boundary));
+  return std::max(0L, (2 * c - chi - b) / 2);
+}
 
 TriangleMesh weld_positions(const TriangleMesh& mesh) {
   TriangleMesh welded;
@@ -80,6 +136,7 @@ bool make_mesh_proxy(const TriangleMesh& input, size_t target_faces, MeshProxy& 
   out = {};
   out.welded = weld_positions(input);
   const TriangleMesh& welded = out.welded;
+  out.genus = surface_genus(welded);
   std::vector<unsigned> indices;
   indices.reserve(3 * welded.triangles.size());
   for (const glm::ivec3& t : welded.triangles)

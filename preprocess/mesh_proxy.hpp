@@ -25,6 +25,8 @@ struct MeshProxy {
   /// meshoptimizer's error bound of the simplification, mesh units (the largest distance the
   /// collapses moved the surface, as it measures it).
   double error = 0.0;
+  /// The welded mesh's genus, summed over its components (surface_genus); -1: not a manifold.
+  long genus = -1;
   double seconds = 0.0;
 };
 
@@ -33,6 +35,11 @@ struct MeshProxy {
 /// a positive area.
 bool make_mesh_proxy(const TriangleMesh& input, size_t target_faces, MeshProxy& out,
                      std::string& error);
+
+/// The genus of `mesh` summed over its components, from its Euler characteristic, components
+/// and boundary loops (faces with a repeated corner left out); -1 where an edge has more than
+/// two faces (no genus to speak of).
+long surface_genus(const TriangleMesh& mesh);
 
 /// Exactly coincident positions merged (hash on the bits; -0 and +0 weld): `mesh` with V'
 /// positions, its F faces re-indexed in their order.

@@ -1,0 +1,201 @@
+// The proxy of a large mesh (mesh_proxy.hpp) and the geometry image built through it: its size,
+// that it is made of the mesh's own vertices, that the image's texels lie on the full surface
+// (exact distances, closest_point.hpp), its accuracy against the full mesh's own image, and the
+// fall back to the full mesh where the proxy's image misses the bound.
+
+#include "preprocess/mesh_proxy.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <set>
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "preprocess/closest_point.hpp"
+#include "preprocess/geometry_image_build.hpp"
+#include "test_support/cli_run.hpp"
+
+namespace gfield {
+namespace {
+
+TriangleMesh bundled(const std::string& name) {
+  TriangleMesh mesh;
+  std::string error;
+  EXPECT_TRUE(load_mesh(std::string(GFIELD_MESH_DIR) + "/" + name, mesh, error)) << error;
+  return mesh;
+}
+
+TEST(MeshProxy, IsMadeOfTheMeshsOwnVerticesWithoutFoldedPairs) {
+  const TriangleMesh bunny = bundled("stanford-bunny.obj");
+  MeshProxy proxy;
+  std::string error;
+  ASSERT_TRUE(make_mesh_proxy(bunny, 10000, proxy, error)) << error;
+  EXPECT_EQ(proxy.welded.triangles.size(), bunny.triangles.size());
+  EXPECT_LE(proxy.proxy.triangles.size(), 10000u);
+  EXPECT_GE(proxy.proxy.triangles.size(), 9000u);
+  EXPECT_GT(proxy.error, 0.0);
+  const std::set<std::array<double, 3>> input([&] {
+    std::set<std::array<double, 3>> s;
+    for (const glm::dvec3& p : bunny.positions)
+      s.insert({p.x, p.y, p.z});
+    return s;
+  }());
+  for (const glm::dvec3& p : proxy.proxy.positions)
+    ASSERT_TRUE(input.count({p.x, p.y, p.z}));
+  std::set<std::array<int, 3>> faces;
+  for (const glm::ivec3& t : proxy.proxy.triangles) {
+    std::array<int, 3> key{t[0], t[1], t[2]};
+    std::sort(key.begin(), key.end());
+    ASSERT_TRUE(faces.insert(key).second) << "two faces over one vertex triple";
+  }
+}
+
+TEST(MeshProxy, WeldingMergesExactlyCoincidentPositions) {
+  TriangleMesh soup;  // two triangles of a square, each with its own corners
+  soup.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {-0.0, 1, 0}};
+  soup.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const TriangleMesh welded = weld_positions(soup);
+  EXPECT_EQ(welded.positions.size(), 4u);  // -0 and +0 are one position
+  EXPECT_EQ(welded.triangles[1][0], welded.triangles[0][0]);
+  EXPECT_EQ(welded.triangles[1][1], welded.triangles[0][2]);
+}
+
+TEST(MeshProxy, AMeshWithoutAreaHasNoProxy) {
+  TriangleMesh flat;
+  flat.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  flat.triangles = {{0, 1, 2}, {0, 0, 1}};
+  MeshProxy proxy;
+  std::string error;
+  EXPECT_FALSE(make_mesh_proxy(flat, 10, proxy, error));
+  EXPECT_NE(error.find("no face with a positive area"), std::string::npos) << error;
+  GeometryImageOptions options;
+  options.size = 16;
+  options.proxy_above = 1;
+  GeometryImage image;
+  ParameterizedMesh pm;
+  GeometryImageReport report;
+  error.clear();
+  EXPECT_FALSE(build_geometry_image(flat, options, image, pm, report, error));
+  EXPECT_NE(error.find("no face with a positive area"), std::string::npos) << error;
+  // The command: one line naming the file, exit 2, nothing written.
+  const std::string base = std::string(GFIELD_TEST_TMP) + "/flat-" + std::to_string(::getpid());
+  std::ofstream(base + ".obj") << "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n";
+  const test::CliRun run =
+      test::run_cli("build " + base + ".obj -o " + base + "-asset --proxy-above 1");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find(base + ".obj: no face with a positive area"), std::string::npos)
+      << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(base + "-asset.report.json"));
+  EXPECT_FALSE(std::filesystem::exists(base + "-asset.gimage.exr"));
+  std::filesystem::remove(base + ".obj");
+}
+
+/// The bunny's image at 256^2 with the proxy above `proxy_above` faces (0: never).
+void bunny_image(size_t proxy_above, GeometryImage& image, GeometryImageReport& report) {
+  GeometryImageOptions options;
+  options.size = 256;
+  options.proxy_above = proxy_above;
+  ParameterizedMesh pm;
+  std::string error;
+  ASSERT_TRUE(
+      build_geometry_image(bundled("stanford-bunny.obj"), options, image, pm, report, error))
+      << error;
+}
+
+TEST(GeometryImageProxy, TexelsLieOnTheFullSurfaceAndMatchItsOwnImage) {
+  GeometryImage image, full_image;
+  GeometryImageReport report, full;
+  bunny_image(20000, image, report);
+  bunny_image(0, full_image, full);
+  ASSERT_TRUE(report.proxy.used);
+  EXPECT_LE(report.proxy.faces, 10000u);
+  EXPECT_FALSE(full.proxy.used);
+  EXPECT_EQ(full.proxy.faces, 0u);
+  // Exact distances of the covered texels to the bunny: on it, but for the texels of the faces
+  // that fill its holes (they keep the proxy's points).
+  const TriangleMesh bunny = bundled("stanford-bunny.obj");
+  EmbreeMesh embree;
+  std::string error;
+  ASSERT_TRUE(embree.build(bunny, error)) << error;
+  std::vector<glm::dvec3> texels;
+  for (size_t t = 0; t < image.coverage.size(); ++t)
+    if (image.coverage[t] > 0.0f)
+      texels.push_back(glm::dvec3(image.position[t]));
+  const std::vector<ClosestPoint> closest = closest_points(embree, bunny, texels);
+  size_t on = 0;
+  for (const ClosestPoint& c : closest)
+    on += c.distance <= 1e-6 * report.diagonal;  // float positions
+  EXPECT_GE(double(on) / double(texels.size()), 0.98) << on << " of " << texels.size();
+  // As close to the mesh as the full mesh's own image at the same size.
+  EXPECT_LE(report.mesh_to_image.mean, 1.25 * full.mesh_to_image.mean);
+  EXPECT_LE(report.image_to_mesh.mean, 1.25 * full.image_to_mesh.mean);
+}
+
+TEST(GeometryImageProxy, AProxyMissingTheBoundGivesWayToTheFullMesh) {
+  const TriangleMesh homer = bundled("homer.obj");
+  GeometryImageOptions options;
+  options.max_mean_error = 1e-9;  // no image reaches it: the proxy's is rejected
+  options.proxy_above = 6000;
+  GeometryImage image, full_image;
+  ParameterizedMesh pm, full_pm;
+  GeometryImageReport report, full;
+  std::string error;
+  ASSERT_TRUE(build_geometry_image(homer, options, image, pm, report, error)) << error;
+  EXPECT_FALSE(report.proxy.used);
+  EXPECT_GT(report.proxy.faces, 0u);
+  EXPECT_GT(report.proxy.mean_percent, 2.0 * options.max_mean_error);
+  EXPECT_NE(report.proxy.rejected.find("exceeds"), std::string::npos) << report.proxy.rejected;
+  options.proxy_above = 0;
+  ASSERT_TRUE(build_geometry_image(homer, options, full_image, full_pm, full, error)) << error;
+  EXPECT_EQ(pm.mesh.triangles.size(), homer.triangles.size());
+  EXPECT_TRUE(image.position == full_image.position);
+  EXPECT_TRUE(image.normal == full_image.normal);
+}
+
+/// `gfield build homer.obj` at 256^2, N = 12, with --proxy-above `proxy_above`: its report.
+nlohmann::json homer_asset(const std::string& proxy_above, std::string& summary) {
+  const std::string name =
+      std::string(GFIELD_TEST_TMP) + "/proxy-homer-" + std::to_string(::getpid());
+  const test::CliRun run = test::run_cli("build " + std::string(GFIELD_MESH_DIR) +
+                                         "/homer.obj -o " + name + " --proxy-above " + proxy_above +
+                                         " --size 256 --samples 12 --verify-rays 5000");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  summary = run.out;
+  std::ifstream file(name + ".report.json");
+  const nlohmann::json report = nlohmann::json::parse(file, nullptr, false);
+  for (const char* extension : {".gimage.exr", ".gimage.obj", ".gfield.exr", ".report.json"})
+    std::filesystem::remove(name + extension);
+  return report;
+}
+
+TEST(GeometryImageProxy, VerifyCastsTheRaysLeavingTheSurfaceFromTheOriginal) {
+  std::string summary, full_summary;
+  const nlohmann::json report = homer_asset("6000", summary);
+  const nlohmann::json full = homer_asset("0", full_summary);
+  ASSERT_TRUE(report.is_object() && full.is_object());
+  EXPECT_NE(summary.find("proxy of "), std::string::npos) << summary;
+  EXPECT_TRUE(report["geometry_image"]["proxy"]["used"].get<bool>());
+  const nlohmann::json& accuracy = report["accuracy"];
+  EXPECT_TRUE(accuracy["proxy"].get<bool>());
+  ASSERT_EQ(accuracy["references"].size(), 2u);
+  const nlohmann::json &built = accuracy["references"][0], &original = accuracy["references"][1];
+  EXPECT_EQ(original["mesh"], "original");
+  EXPECT_FALSE(built.contains("surface_rays_k1"));  // the proxy is not the surface described
+  // Against the original, as the full mesh's own asset does against the mesh it was built from.
+  const nlohmann::json& own = full["accuracy"]["references"][0];
+  for (const char* family : {"box_rays", "view_rays", "surface_rays_k1", "surface_rays_k8",
+                             "mirror_rays_k1", "mirror_rays_k8"}) {
+    ASSERT_TRUE(own.contains(family) && original.contains(family)) << family;
+    EXPECT_GE(original[family]["refined"]["hit_agreement"].get<double>(),
+              own[family]["refined"]["hit_agreement"].get<double>() - 0.01)
+        << family;
+  }
+}
+
+}  // namespace
+}  // namespace gfield
