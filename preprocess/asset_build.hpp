@@ -61,7 +61,7 @@ std::string field_layers_summary(const FieldFileReport& report);
 /// Rays per family of a build's accuracy report: enough for its hit/miss agreements to within
 /// about 0.1 percentage point (their 95% intervals are in the report), at a fraction of the build's
 /// time (`gfield verify` casts 1,000,000 by default).
-inline constexpr size_t kDefaultVerifyRays = 20000;
+inline constexpr size_t kDefaultVerifyRays = 10000;
 
 struct AssetOptions {
   /// glTF: which of its meshes (MeshSource::part; "" the whole file). Hashed into the build id.

@@ -723,7 +723,7 @@ bool proxy_route(const TriangleMesh& input, const GeometryImageOptions& options,
   p.input_genus = proxy.genus;
   p.genus = 0;
   for (const ChartReport& chart : report.charts)
-    p.genus += chart.genus;
+    p.genus += std::max(0L, chart.genus);  // pieces cut from a chart count their own
   char why[160] = "";
   if (p.input_genus >= 0 && p.genus > p.input_genus)
     std::snprintf(why, sizeof(why), "its charts have genus %ld, the mesh %ld", p.genus,

@@ -4,8 +4,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <vector>
 
 #include "geometry/scene_file.hpp"
 #include "gfield/printable.hpp"
@@ -39,7 +43,6 @@ void build_mesh_asset(const MeshAsset& mesh, const std::string& dir, const Asset
     std::printf("%s: up to date (build %s)\n", printable(name).c_str(), inputs.build_id.c_str());
     return;
   }
-  remove_stale_staging(dir);
   nlohmann::json report;
   if (!build_asset(mesh.file, name, options, inputs, report, error)) {
     throw CommandError(error);
@@ -58,13 +61,23 @@ void run_assets(const AssetsArguments& args) {
     throw CommandError(error);
   }
   print_warnings(warnings);
+  std::vector<std::string> dirs;
   for (const MeshAsset& mesh : scene.meshes) {
     const std::string dir =
         args.dir.empty() ? fs::path(mesh.file).parent_path().string() : args.dir;
+    dirs.push_back(dir.empty() ? "." : dir);
     std::error_code ec;
-    fs::create_directories(dir.empty() ? "." : dir, ec);
-    build_mesh_asset(mesh, dir.empty() ? "." : dir, args.asset);
+    fs::create_directories(dirs.back(), ec);
   }
+  std::vector<std::string> folders = dirs;
+  std::sort(folders.begin(), folders.end());
+  folders.erase(std::unique(folders.begin(), folders.end()), folders.end());
+  for (const std::string& dir : folders)
+    remove_stale_staging(dir);
+  // The meshes side by side: one build's serial stages (repair, parameterisation, writes) run
+  // while another's parallel ones do. A failure stops the others' start and is reported.
+  tbb::parallel_for(size_t(0), scene.meshes.size(), size_t(1),
+                    [&](size_t m) { build_mesh_asset(scene.meshes[m], dirs[m], args.asset); });
 }
 
 }  // namespace

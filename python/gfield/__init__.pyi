@@ -152,7 +152,7 @@ def build(
     format: Literal[3, 2] = 3,
     layers: int | Literal["auto"] = "auto",
     precision: Literal["half", "float"] = "half",
-    verify_rays: int = 20000,
+    verify_rays: int = 10000,
     method: Literal["auto", "orbifold", "square"] = "auto",
     components: Literal["all", "largest"] = "all",
     allow_outside_paths: bool = False,
