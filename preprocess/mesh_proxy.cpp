@@ -9,7 +9,6 @@
 #include <unordered_map>
 #include <vector>
 
-#include "geometry/edge_key.hpp"
 #include "gfield/stopwatch.hpp"
 
 namespace gfield {
@@ -80,36 +79,55 @@ struct VertexSets {
 }  // namespace
 
 long surface_genus(const TriangleMesh& mesh) {
-  std::unordered_map<uint64_t, int> faces_on;  // edge -> faces
-  faces_on.reserve(2 * mesh.triangles.size());
-  VertexSets components(mesh.positions.size());
-  std::vector<int> used;
+  // Each edge (low, high) filed under its low vertex, so an edge's faces are the repeats of
+  // `high` among its low vertex's few entries (linear, no hashing).
+  const size_t n = mesh.positions.size();
+  std::vector<size_t> first(n + 1, 0);
+  auto proper = [](const glm::ivec3& t) { return t[0] != t[1] && t[1] != t[2] && t[0] != t[2]; };
+  for (const glm::ivec3& t : mesh.triangles)
+    if (proper(t))
+      for (int k = 0; k < 3; ++k)
+        ++first[size_t(std::min(t[k], t[(k + 1) % 3])) + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<int> high(first[n]);
+  std::vector<size_t> next(first.begin(), first.end() - 1);
+  VertexSets components(n);
+  std::vector<char> used(n, 0);
   long faces = 0;
   for (const glm::ivec3& t : mesh.triangles) {
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+    if (!proper(t))
       continue;
     ++faces;
     for (int k = 0; k < 3; ++k) {
-      ++faces_on[edge_key(t[k], t[(k + 1) % 3])];
-      components.unite(t[k], t[(k + 1) % 3]);
-      used.push_back(t[k]);
+      const int a = t[k], b = t[(k + 1) % 3];
+      high[next[size_t(std::min(a, b))]++] = std::max(a, b);
+      components.unite(a, b);
+      used[size_t(a)] = 1;
     }
   }
-  VertexSets loops(mesh.positions.size());
-  std::vector<int> boundary;
-  for (const auto& [edge, count] : faces_on) {
-    if (count > 2)
-      return -1;
-    if (count == 1) {
-      const int a = int(edge >> 32), b = int(edge & 0xffffffffu);
-      loops.unite(a, b);
-      boundary.push_back(a);
+  VertexSets loops(n);
+  std::vector<int> boundary, vertices;
+  long edges = 0;
+  for (size_t v = 0; v < n; ++v) {
+    if (used[v])
+      vertices.push_back(int(v));
+    const auto begin = high.begin() + std::ptrdiff_t(first[v]);
+    const auto end = high.begin() + std::ptrdiff_t(first[v + 1]);
+    std::sort(begin, end);
+    for (auto run = begin; run != end;) {
+      const auto stop = std::find_if(run, end, [&](int h) { return h != *run; });
+      if (stop - run > 2)
+        return -1;
+      if (stop - run == 1) {
+        loops.unite(int(v), *run);
+        boundary.push_back(int(v));
+      }
+      ++edges;
+      run = stop;
     }
   }
-  std::sort(used.begin(), used.end());
-  used.erase(std::unique(used.begin(), used.end()), used.end());
-  const long chi = long(used.size()) - long(faces_on.size()) + faces;
-  const long c = long(components.count(used)), b = long(loops.count(boundary));
+  const long chi = long(vertices.size()) - edges + faces;
+  const long c = long(components.count(vertices)), b = long(loops.count(boundary));
   return std::max(0L, (2 * c - chi - b) / 2);
 }
 

@@ -54,6 +54,17 @@ TEST(MeshProxy, IsMadeOfTheMeshsOwnVerticesWithoutFoldedPairs) {
   }
 }
 
+TEST(MeshProxy, GenusOfBundledMeshesAndOfANonManifoldOne) {
+  EXPECT_EQ(surface_genus(weld_positions(bundled("torus.obj"))), 1);
+  EXPECT_EQ(surface_genus(weld_positions(bundled("spot.obj"))), 0);
+  EXPECT_EQ(surface_genus(weld_positions(bundled("stanford-bunny.obj"))), 0);  // 5 holes
+  EXPECT_EQ(surface_genus(weld_positions(bundled("rocker-arm.obj"))), 1);
+  TriangleMesh fin;  // three faces on one edge
+  fin.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+  fin.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  EXPECT_EQ(surface_genus(fin), -1);
+}
+
 TEST(MeshProxy, WeldingMergesExactlyCoincidentPositions) {
   TriangleMesh soup;  // two triangles of a square, each with its own corners
   soup.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {-0.0, 1, 0}};
