@@ -148,6 +148,7 @@ def build(
     mesh: str = "",
     size: int | Literal["auto"] = "auto",
     max_image_error: float = 0.005,
+    proxy_above: int = 200000,
     samples: int = 24,
     format: Literal[3, 2] = 3,
     layers: int | Literal["auto"] = "auto",

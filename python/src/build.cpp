@@ -53,9 +53,10 @@ void check_choice(const char* name, const std::string& value,
 
 py::object build(const std::filesystem::path& mesh_path, const std::filesystem::path& out,
                  const std::string& part, const py::object& size, double max_image_error,
-                 int samples, int format, const py::object& layers, const std::string& precision,
-                 long long verify_rays, const std::string& method, const std::string& components,
-                 bool allow_outside_paths, int threads, const py::object& progress) {
+                 long long proxy_above, int samples, int format, const py::object& layers,
+                 const std::string& precision, long long verify_rays, const std::string& method,
+                 const std::string& components, bool allow_outside_paths, int threads,
+                 const py::object& progress) {
   AssetArguments args;
   args.size = size_text(size);
   if (const std::string problem = image_size_problem(args.size); !problem.empty()) {
@@ -67,6 +68,11 @@ py::object build(const std::filesystem::path& mesh_path, const std::filesystem::
       !problem.empty()) {
     throw py::value_error("max_image_error: " + problem);
   }
+  if (proxy_above < 0) {
+    throw py::value_error("proxy_above: expected 0 (never) or more, got " +
+                          std::to_string(proxy_above));
+  }
+  args.proxy_above = size_t(proxy_above);
   args.samples = samples;
   if (format != kFieldFormatVersion && format != kLayeredFieldVersion) {
     throw py::value_error("format: expected 3 or 2, got " + std::to_string(format));
@@ -113,16 +119,18 @@ py::object build(const std::filesystem::path& mesh_path, const std::filesystem::
 void bind_build(py::module_& m) {
   m.def("build", &build, py::arg("mesh_path"), py::arg("out"), py::kw_only(), py::arg("mesh") = "",
         py::arg("size") = "auto", py::arg("max_image_error") = kDefaultMaxMeanError,
-        py::arg("samples") = 24, py::arg("format") = kFieldFormatVersion,
-        py::arg("layers") = "auto", py::arg("precision") = "half",
-        py::arg("verify_rays") = kDefaultVerifyRays, py::arg("method") = "auto",
-        py::arg("components") = "all", py::arg("allow_outside_paths") = false,
-        py::arg("threads") = 0, py::arg("progress") = py::none(),
+        py::arg("proxy_above") = kDefaultProxyAbove, py::arg("samples") = 24,
+        py::arg("format") = kFieldFormatVersion, py::arg("layers") = "auto",
+        py::arg("precision") = "half", py::arg("verify_rays") = kDefaultVerifyRays,
+        py::arg("method") = "auto", py::arg("components") = "all",
+        py::arg("allow_outside_paths") = false, py::arg("threads") = 0,
+        py::arg("progress") = py::none(),
         "Builds the asset OUT (DIR/NAME: NAME.gimage.exr, NAME.gimage.obj, NAME.gfield.exr,\n"
         "NAME.report.json) from a mesh file, as `gfield build MESH -o OUT` does, and returns\n"
         "the report (the dict of NAME.report.json).\n\n"
         "The options are gfield build's: mesh (--mesh, glTF), size ('auto' or texels per\n"
         "side, 8 to 8192), max_image_error (percent of the diagonal, for size='auto'),\n"
+        "proxy_above (faces above which the image is charted on a simplified proxy; 0: never),\n"
         "samples (N, 4 to 48), format (3: compact, or 2: layered), layers (format 2: 'auto'\n"
         "or K, 1 to 4), precision ('half' or 'float'),\n"
         "verify_rays (per family; 0 skips the accuracy), method ('auto', 'orbifold',\n"

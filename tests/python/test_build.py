@@ -79,6 +79,7 @@ def test_options_are_the_cli_options(tmp_path):
         ({"method": "lscm"}, "method: expected one of auto, orbifold, square, got lscm"),
         ({"components": "some"}, "components: expected one of all, largest, got some"),
         ({"verify_rays": -1}, "verify_rays: expected 0 or more, got -1"),
+        ({"proxy_above": -1}, r"proxy_above: expected 0 \(never\) or more, got -1"),
         ({"threads": -2}, r"threads: expected 0 \(all cores\) to 4096, got -2"),
     ],
 )
