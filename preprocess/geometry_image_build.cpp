@@ -1,4 +1,6 @@
-// The geometry-image pipeline and its report.
+// The geometry-image pipeline: repair (or a proxy), charts, parameterisation, packing,
+// rasterisation at each size tried; its measurements: image_measure.cpp, its report
+// writers: geometry_image_report.cpp.
 
 #include "preprocess/geometry_image_build.hpp"
 
@@ -10,17 +12,15 @@
 
 #include <glm/gtx/component_wise.hpp>
 
-#include <nlohmann/json.hpp>
-
 #include "geometry/edge_key.hpp"
 #include "geometry/outward_normals.hpp"
 #include "gfield/limits.hpp"
 #include "gfield/stopwatch.hpp"
 #include "preprocess/chart_split.hpp"
 #include "preprocess/cut_graph.hpp"
+#include "preprocess/image_measure.hpp"
 #include "preprocess/parameterize.hpp"
 #include "preprocess/rasterize.hpp"
-#include "preprocess/surface_distance.hpp"
 #include "preprocess/surface_projection.hpp"
 
 namespace gfield {
@@ -108,44 +108,6 @@ std::vector<Component> split_components(const TriangleMesh& mesh) {
   for (std::vector<int>& f : faces)
     components.push_back(make_component(mesh, std::move(f)));
   return components;
-}
-
-/// Area-weighted percentile (p in [0,1]) of values.
-double weighted_percentile(std::vector<std::pair<double, double>> value_weight, double p) {
-  if (value_weight.empty())
-    return 0.0;
-  std::sort(value_weight.begin(), value_weight.end());
-  double total = 0.0;
-  for (const auto& vw : value_weight)
-    total += vw.second;
-  double cumulative = 0.0;
-  for (const auto& [value, weight] : value_weight) {
-    cumulative += weight;
-    if (cumulative >= p * total)
-      return value;
-  }
-  return value_weight.back().first;
-}
-
-ErrorStats error_stats(std::vector<double> distances, double diagonal) {
-  ErrorStats stats;
-  stats.samples = distances.size();
-  if (distances.empty() || !(diagonal > 0.0))
-    return stats;
-  std::sort(distances.begin(), distances.end());
-  const double scale = 100.0 / diagonal;
-  double sum = 0.0;
-  for (double d : distances)
-    sum += d;
-  stats.mean = sum / double(distances.size()) * scale;
-  const auto percentile = [&](double p) {
-    const size_t k = size_t(std::ceil(p * double(distances.size()))) - 1;
-    return distances[std::min(k, distances.size() - 1)] * scale;
-  };
-  stats.p98 = percentile(0.98);
-  stats.p99 = percentile(0.99);
-  stats.max = distances.back() * scale;
-  return stats;
 }
 
 /// Parameterises one component into a chart; fills the route fields of `chart_report`.
@@ -280,24 +242,6 @@ bool chart_pieces(const TriangleMesh& mesh, Component c, size_t index, int depth
 }
 
 }  // namespace
-
-TriangleMesh geometry_image_surface(const GeometryImage& image) {
-  TriangleMesh surface;
-  const int n = image.size;
-  surface.positions.resize(image.position.size());
-  for (size_t t = 0; t < image.position.size(); ++t)
-    surface.positions[t] = image.position[t];
-  auto covered = [&](int i, int j) { return image.coverage[texel_index(image, i, j)] > 0.0f; };
-  for (int j = 0; j + 1 < n; ++j)
-    for (int i = 0; i + 1 < n; ++i) {
-      if (!covered(i, j) || !covered(i + 1, j) || !covered(i, j + 1) || !covered(i + 1, j + 1))
-        continue;
-      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-      surface.triangles.push_back({a, b, d});
-      surface.triangles.push_back({a, d, c});
-    }
-  return surface;
-}
 
 namespace {
 
@@ -495,102 +439,6 @@ std::string route_summary(const std::vector<ChartReport>& charts) {
   return summary;
 }
 
-/// Conformal distortion (ratio of the map's singular values) of face f of the map surface ->
-/// image uv, and its surface and uv areas; the ratio is -1 for a degenerate surface face.
-double face_distortion(const ParameterizedMesh& parameterized, size_t f, double& surface_area,
-                       double& uv_area) {
-  const TriangleMesh& pm = parameterized.mesh;
-  const glm::ivec3& t = pm.triangles[f];
-  const glm::dvec3 e1 = pm.positions[t[1]] - pm.positions[t[0]];
-  const glm::dvec3 e2 = pm.positions[t[2]] - pm.positions[t[0]];
-  const glm::dvec2 u0 = parameterized.corner_uv[3 * f], u1 = parameterized.corner_uv[3 * f + 1],
-                   u2 = parameterized.corner_uv[3 * f + 2];
-  surface_area = 0.5 * glm::length(glm::cross(e1, e2));
-  uv_area = 0.5 * std::abs((u1.x - u0.x) * (u2.y - u0.y) - (u1.y - u0.y) * (u2.x - u0.x));
-  const double l1 = glm::length(e1);
-  if (!(surface_area > 0.0) || !(l1 > 0.0))
-    return -1.0;
-  // Local frame of the surface triangle; J maps it onto the uv triangle.
-  const glm::dvec2 q1(l1, 0.0), q2(glm::dot(e2, e1) / l1, 2.0 * surface_area / l1);
-  const glm::dmat2 surface_edges(q1, q2), uv_edges(u1 - u0, u2 - u0);
-  const glm::dmat2 j = uv_edges * glm::inverse(surface_edges);
-  // Singular values of a 2x2 matrix.
-  const double a = j[0][0], b = j[1][0], c = j[0][1], d = j[1][1];
-  const double s1 = std::hypot(a + d, c - b) / 2.0, s2 = std::hypot(a - d, c + b) / 2.0;
-  const double sigma1 = s1 + s2, sigma2 = std::abs(s1 - s2);
-  return sigma2 > 0.0 ? sigma1 / sigma2 : 1e30;
-}
-
-/// Area-weighted conformal distortion and area-ratio percentiles of the map into `report`.
-void measure_distortion(const ParameterizedMesh& parameterized, GeometryImageReport& report) {
-  const size_t faces = parameterized.mesh.triangles.size();
-  std::vector<double> surface_area(faces), uv_area(faces), sigma_ratio(faces);
-  double surface_total = 0.0, uv_total = 0.0;
-  for (size_t f = 0; f < faces; ++f) {
-    sigma_ratio[f] = face_distortion(parameterized, f, surface_area[f], uv_area[f]);
-    surface_total += surface_area[f];
-    uv_total += uv_area[f];
-  }
-  // Degenerate uv faces (counted apart) are left out of the conformal distortion.
-  std::vector<std::pair<double, double>> conformal, area_ratio;
-  for (size_t f = 0; f < faces; ++f) {
-    if (sigma_ratio[f] >= 1.0 && uv_area[f] > 1e-12 * uv_total)
-      conformal.push_back({sigma_ratio[f], surface_area[f]});
-    if (surface_area[f] > 0.0 && uv_total > 0.0)
-      area_ratio.push_back(
-          {(uv_area[f] / uv_total) / (surface_area[f] / surface_total), surface_area[f]});
-  }
-  double weighted = 0.0, weight = 0.0;
-  for (const auto& [value, w] : conformal) {
-    weighted += value * w;
-    weight += w;
-  }
-  report.conformal_mean = weight > 0.0 ? weighted / weight : 0.0;
-  report.conformal_p95 = weighted_percentile(conformal, 0.95);
-  report.area_p5 = weighted_percentile(area_ratio, 0.05);
-  report.area_p50 = weighted_percentile(area_ratio, 0.50);
-  report.area_p95 = weighted_percentile(area_ratio, 0.95);
-}
-
-/// Bounding-box diagonal of `mesh` (mesh units).
-double bounds_diagonal(const TriangleMesh& mesh) {
-  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (const glm::dvec3& p : mesh.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  return glm::length(hi - lo);
-}
-
-/// With options.measure or an automatic size (which chooses by it): the mesh -> image distance
-/// and the ray offset into `report` (report.diagonal set).
-void measure_mesh_to_image(const TriangleMesh& input, const GeometryImage& image,
-                           const GeometryImageOptions& options, GeometryImageReport& report) {
-  if (!options.measure && options.size != kAutoImageSize)
-    return;
-  report.mesh_to_image =
-      error_stats(distances_to_surface(sample_surface(input, options.error_samples, options.seed),
-                                       geometry_image_surface(image)),
-                  report.diagonal);
-  const double box_diagonal = double(diagonal(image.box));
-  if (box_diagonal > 0.0)
-    report.ray_offset =
-        std::clamp(report.mesh_to_image.p98 / 100.0 * report.diagonal / box_diagonal,
-                   double(kMinRayOffset), double(kMaxRayOffset));
-}
-
-/// The distortion and the image -> mesh distance of the image kept into `report`.
-void measure_image_to_mesh(const TriangleMesh& input, const GeometryImage& image,
-                           const ParameterizedMesh& parameterized,
-                           const GeometryImageOptions& options, GeometryImageReport& report) {
-  measure_distortion(parameterized, report);
-  report.image_to_mesh = error_stats(
-      distances_to_surface(
-          sample_surface(geometry_image_surface(image), options.error_samples, options.seed + 1),
-          input),
-      report.diagonal);
-}
-
 /// The charts packed and rasterised at `size` texels per side (`parameterized` rebuilt), their
 /// mesh -> image distance measured (measure_mesh_to_image), the stage times added to `report`.
 bool image_at_size(const TriangleMesh& input, const RepairedMesh& repaired,
@@ -768,154 +616,6 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
   }
   report.seconds.total = watch.seconds();
   return true;
-}
-
-nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
-  using nlohmann::json;
-  auto stats = [](const ErrorStats& s) {
-    return json{{"mean_percent", s.mean},
-                {"p98_percent", s.p98},
-                {"p99_percent", s.p99},
-                {"max_percent", s.max},
-                {"samples", s.samples}};
-  };
-  json charts = json::array();
-  for (const ChartReport& c : r.charts)
-    charts.push_back({{"faces", c.faces},
-                      {"vertices", c.vertices},
-                      {"genus", c.genus},
-                      {"boundary_loops", c.boundary_loops},
-                      {"route", c.route},
-                      {"weights", c.weights},
-                      {"note", c.note},
-                      {"seam_edges", c.seam_edges},
-                      {"flipped_faces", c.flipped},
-                      {"degenerate_faces", c.degenerate},
-                      {"area", c.area},
-                      {"rect", {c.rect.x, c.rect.y, c.rect.size}}});
-  json trials = json::array();
-  for (const SizeTrial& t : r.size_trials)
-    trials.push_back({{"size", t.size}, {"mesh_to_image_mean_percent", t.mesh_to_image_mean}});
-  const RepairReport& rep = r.repair;
-  return json{
-      {"automatic_size", r.size_trials.empty() ? json(nullptr)
-                                               : json{{"max_mean_error_percent", r.max_mean_error},
-                                                      {"trials", trials}}},
-      {"route", r.route},
-      {"proxy", r.proxy.faces > 0 ? json{{"used", r.proxy.used},
-                                         {"input_faces", r.proxy.input_faces},
-                                         {"faces", r.proxy.faces},
-                                         {"error_percent", r.proxy.error_percent},
-                                         {"mesh_to_image_mean_percent", r.proxy.mean_percent},
-                                         {"genus", r.proxy.genus},
-                                         {"mesh_genus", r.proxy.input_genus},
-                                         {"rejected", r.proxy.rejected}}
-                                  : json(nullptr)},
-      {"components", r.components},
-      {"dropped_components", r.dropped_components},
-      {"dropped_faces", r.dropped_faces},
-      {"charts", charts},
-      {"repair",
-       {{"welded_positions", rep.welded_positions},
-        {"unreferenced_positions", rep.unreferenced_positions},
-        {"degenerate_faces", rep.degenerate_faces},
-        {"duplicate_faces", rep.duplicate_faces},
-        {"split_vertices", rep.split_vertices},
-        {"reversed_components", rep.reversed_components},
-        {"holes_found", rep.holes_found},
-        {"holes_filled", rep.holes_filled},
-        {"holes_fair_failed", rep.holes_fair_failed},
-        {"filled_faces", rep.filled_faces},
-        {"filled_area", rep.filled_area},
-        {"filled_area_percent", rep.area > 0.0 ? 100.0 * rep.filled_area / rep.area : 0.0}}},
-      {"flipped_faces", r.flipped},
-      {"degenerate_uv_faces", r.degenerate},
-      {"coverage", r.coverage},
-      {"albedo", r.albedo},
-      {"conformal_distortion", {{"mean", r.conformal_mean}, {"p95", r.conformal_p95}}},
-      {"area_distortion", {{"p5", r.area_p5}, {"p50", r.area_p50}, {"p95", r.area_p95}}},
-      {"reconstruction_error",
-       {{"mesh_to_image", stats(r.mesh_to_image)},
-        {"image_to_mesh", stats(r.image_to_mesh)},
-        {"diagonal", r.diagonal}}},
-      {"ray_offset", r.ray_offset},
-      {"seconds",
-       {{"proxy", r.seconds.proxy},
-        {"repair", r.seconds.repair},
-        {"parameterize", r.seconds.parameterize},
-        {"pack", r.seconds.pack},
-        {"rasterize", r.seconds.rasterize},
-        {"measure", r.seconds.measure},
-        {"total", r.seconds.total}}}};
-}
-
-std::string geometry_image_report_to_text(const GeometryImageReport& r) {
-  std::string text;
-  char line[512];
-  auto add = [&](const char* format, auto... values) {
-    std::snprintf(line, sizeof(line), format, values...);
-    text += line;
-    text += '\n';
-  };
-  if (!r.size_trials.empty()) {
-    std::string trials;
-    for (const SizeTrial& t : r.size_trials) {
-      std::snprintf(line, sizeof(line), "%s%d^2: %.4f%%", trials.empty() ? "" : ", ", t.size,
-                    t.mesh_to_image_mean);
-      trials += line;
-    }
-    const SizeTrial& kept = r.size_trials.back();
-    add("size: %d^2, automatic (mean mesh -> image distance %s; target %.4f%%%s)", kept.size,
-        trials.c_str(), r.max_mean_error,
-        kept.mesh_to_image_mean > r.max_mean_error ? ", not reached at the largest size" : "");
-  }
-  if (r.proxy.used)
-    add("proxy: %zu faces charted for %zu (meshoptimizer, error bound %.4f%% of the diagonal); "
-        "texels projected onto the full surface",
-        r.proxy.faces, r.proxy.input_faces, r.proxy.error_percent);
-  else if (r.proxy.faces > 0)
-    add("proxy: %zu faces tried for %zu and rejected (%s); built from the full mesh", r.proxy.faces,
-        r.proxy.input_faces, r.proxy.rejected.c_str());
-  add("route: %s", r.route.c_str());
-  for (size_t c = 0; c < r.charts.size(); ++c) {
-    const ChartReport& chart = r.charts[c];
-    add("chart %zu: %zu faces, genus %ld, %zu boundary loops, %s (%s weights), %zu seam edges, "
-        "%zu flipped, %zu degenerate, %dx%d texels at (%d, %d)%s%s",
-        c, chart.faces, chart.genus, chart.boundary_loops, chart.route.c_str(),
-        chart.weights.c_str(), chart.seam_edges, chart.flipped, chart.degenerate, chart.rect.size,
-        chart.rect.size, chart.rect.x, chart.rect.y, chart.note.empty() ? "" : "; ",
-        chart.note.c_str());
-  }
-  if (r.dropped_components)
-    add("dropped: %zu smaller components (%zu faces) (--components largest)", r.dropped_components,
-        r.dropped_faces);
-  const RepairReport& rep = r.repair;
-  add("repair: %zu positions welded, %zu degenerate and %zu duplicate faces dropped, %zu vertices "
-      "split, %zu components turned outward",
-      rep.welded_positions, rep.degenerate_faces, rep.duplicate_faces, rep.split_vertices,
-      rep.reversed_components);
-  add("holes: %zu found, %zu filled (%zu faces, area %.6g = %.3f%% of the surface)%s",
-      rep.holes_found, rep.holes_filled, rep.filled_faces, rep.filled_area,
-      rep.area > 0.0 ? 100.0 * rep.filled_area / rep.area : 0.0,
-      rep.holes_fair_failed ? ", some unfaired" : "");
-  add("uv faces: %zu flipped, %zu degenerate", r.flipped, r.degenerate);
-  add("coverage: %.2f%% of the texels", 100.0 * r.coverage);
-  add("albedo: %s", r.albedo.c_str());
-  add("conformal distortion (sigma1/sigma2): mean %.3f, p95 %.3f", r.conformal_mean,
-      r.conformal_p95);
-  add("area distortion (uv share / surface share): p5 %.3g, p50 %.3g, p95 %.3g", r.area_p5,
-      r.area_p50, r.area_p95);
-  add("reconstruction error, mesh -> image (%% of diagonal %.4g): mean %.4f, p99 %.4f, max %.4f",
-      r.diagonal, r.mesh_to_image.mean, r.mesh_to_image.p99, r.mesh_to_image.max);
-  add("reconstruction error, image -> mesh: mean %.4f, p99 %.4f, max %.4f", r.image_to_mesh.mean,
-      r.image_to_mesh.p99, r.image_to_mesh.max);
-  add("ray offset: %.3g of the box diagonal (mesh -> image p98, at least %.0e)", r.ray_offset,
-      double(kMinRayOffset));
-  add("seconds: proxy %.3f, repair %.3f, parameterize %.3f, pack %.3f, rasterize %.3f, measure "
-      "%.3f, total %.3f",
-      r.seconds.proxy, r.seconds.repair, r.seconds.parameterize, r.seconds.pack,
-      r.seconds.rasterize, r.seconds.measure, r.seconds.total);
-  return text;
 }
 
 }  // namespace gfield
