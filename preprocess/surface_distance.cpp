@@ -8,14 +8,12 @@
 #include <random>
 
 #include "preprocess/closest_point.hpp"
+#include "preprocess/portable_random.hpp"
 
 namespace gfield {
 namespace {
 
-/// Uniform double in [0, 1) from 53 random bits.
-double unit(std::mt19937_64& rng) {
-  return double(rng() >> 11) * 0x1.0p-53;
-}
+const UnitUniform unit;
 
 }  // namespace
 

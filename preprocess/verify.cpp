@@ -18,6 +18,7 @@
 #include "gfield/gpu_storage.hpp"
 #include "gfield/printable.hpp"
 #include "gfield/stopwatch.hpp"
+#include "preprocess/portable_random.hpp"
 
 namespace gfield {
 namespace {
@@ -154,7 +155,7 @@ AccuracyStats compare(const std::vector<Answer>& answers, const std::vector<Answ
 
 /// Uniform point on face `face` of the unit cube.
 glm::vec3 random_face_point(std::mt19937_64& rng, int face) {
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const UnitUniformFloat unit;
   const float s = unit(rng);
   const float t = unit(rng);
   return face_point(face, glm::vec2(s, t));
@@ -177,7 +178,7 @@ struct Family {
 
 /// Unit vector uniform on the sphere.
 glm::vec3 random_direction(std::mt19937_64& rng) {
-  std::normal_distribution<float> gauss(0.0f, 1.0f);
+  const StandardNormal gauss;
   glm::vec3 g(gauss(rng), gauss(rng), gauss(rng));
   while (glm::dot(g, g) < 1e-12f) {
     g = glm::vec3(gauss(rng), gauss(rng), gauss(rng));
@@ -220,8 +221,8 @@ nlohmann::json accuracy_to_json(const AccuracyStats& s) {
 
 std::vector<Ray> random_box_rays(const Box& box, size_t count, uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> face(0, 5);
-  std::uniform_int_distribution<int> other(1, 5);
+  const UniformInt face{0, 5};
+  const UniformInt other{1, 5};
   std::vector<Ray> rays(count);
   for (Ray& ray : rays) {
     const int entry_face = face(rng);
@@ -238,8 +239,8 @@ std::vector<Ray> random_box_rays(const Box& box, size_t count, uint64_t seed) {
 
 std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::normal_distribution<float> gauss(0.0f, 1.0f);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const StandardNormal gauss;
+  const UnitUniformFloat unit;
   const glm::vec3 centre = 0.5f * (box.min + box.max);
   const float radius = diagonal(box);
   std::vector<Ray> rays(count);
@@ -275,7 +276,7 @@ SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, SurfaceO
   }
   const float outward = float(outward_orientation(mesh));
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const UnitUniform unit;
   SurfaceRays out;
   out.self_t_min = 2.0f * offsets.self;
   for (size_t i = 0; i < count && area > 0.0; ++i) {
@@ -347,7 +348,7 @@ AccuracyStats verify_table(const GeometryField& field, const GeometryImage& imag
   const Exact exact(embree, mesh);
   const int n = field.samples_per_side;
   std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> sample(0, sample_count(n) - 1);
+  const UniformInt sample{0, sample_count(n) - 1};
   std::vector<glm::ivec2> chosen(pairs);
   for (glm::ivec2& pair : chosen) {
     do {
