@@ -17,11 +17,12 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <map>
 #include <numeric>
 #include <unordered_map>
 #include <unordered_set>
+
+#include "preprocess/mesh_proxy.hpp"
 
 namespace gfield {
 namespace {
@@ -31,18 +32,6 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point3 = Kernel::Point_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point3>;
 
-struct PositionHash {
-  size_t operator()(const glm::dvec3& p) const {
-    uint64_t h = 1469598103934665603ull;
-    for (int k = 0; k < 3; ++k) {
-      uint64_t bits;
-      const double v = p[k] == 0.0 ? 0.0 : p[k];  // -0 and +0 weld
-      std::memcpy(&bits, &v, sizeof(bits));
-      h = (h ^ bits) * 1099511628211ull;
-    }
-    return size_t(h);
-  }
-};
 struct FaceHash {
   size_t operator()(const std::array<int, 3>& f) const {
     uint64_t h = 1469598103934665603ull;
@@ -50,9 +39,6 @@ struct FaceHash {
       h = (h ^ uint64_t(uint32_t(v))) * 1099511628211ull;
     return size_t(h ^ (h >> 29));
   }
-};
-struct PositionEqual {
-  bool operator()(const glm::dvec3& a, const glm::dvec3& b) const { return a == b; }
 };
 
 double triangle_area(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
@@ -114,34 +100,20 @@ std::vector<int> face_components(const TriangleMesh& mesh) {
   return component;
 }
 
-bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out,
-                 std::string& error) {
-  out = {};
-  RepairReport& report = out.report;
+namespace {
 
-  // Weld exactly coincident positions.
-  std::unordered_map<glm::dvec3, int, PositionHash, PositionEqual> index;
-  index.reserve(input.positions.size());
-  std::vector<int> welded(input.positions.size());
-  std::vector<glm::dvec3> positions;
-  for (size_t v = 0; v < input.positions.size(); ++v) {
-    auto [it, inserted] = index.emplace(input.positions[v], int(positions.size()));
-    if (inserted)
-      positions.push_back(input.positions[v]);
-    welded[v] = it->second;
-  }
-  report.welded_positions = input.positions.size() - positions.size();
-
-  // Drop degenerate and duplicate faces.
-  std::vector<std::array<int, 3>> faces;
-  std::vector<int> kept;  // the input face of each of `faces`
+/// The faces of `welded` with a positive area, each vertex triple once (as `faces`), and the
+/// input face of each (`kept`); the others counted into `report`.
+void proper_faces(const TriangleMesh& welded, std::vector<std::array<int, 3>>& faces,
+                  std::vector<int>& kept, RepairReport& report) {
   std::unordered_set<std::array<int, 3>, FaceHash> seen;
-  seen.reserve(input.triangles.size());
-  for (size_t input_face = 0; input_face < input.triangles.size(); ++input_face) {
-    const glm::ivec3& t = input.triangles[input_face];
-    const std::array<int, 3> f{welded[t[0]], welded[t[1]], welded[t[2]]};
+  seen.reserve(welded.triangles.size());
+  for (size_t input_face = 0; input_face < welded.triangles.size(); ++input_face) {
+    const glm::ivec3& t = welded.triangles[input_face];
+    const std::array<int, 3> f{t[0], t[1], t[2]};
+    const std::vector<glm::dvec3>& p = welded.positions;
     if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] ||
-        triangle_area(positions[f[0]], positions[f[1]], positions[f[2]]) == 0.0) {
+        triangle_area(p[f[0]], p[f[1]], p[f[2]]) == 0.0) {
       ++report.degenerate_faces;
       continue;
     }
@@ -154,15 +126,14 @@ bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out
     faces.push_back(f);
     kept.push_back(int(input_face));
   }
-  if (faces.empty()) {
-    error = "no face with a positive area (the mesh is degenerate: zero area or collinear points)";
-    return false;
-  }
+}
 
-  // Compact: drop unreferenced positions.
+/// `faces` over `positions` as CGAL's soup of the positions they use (the others counted as
+/// unreferenced).
+void make_soup(const std::vector<glm::dvec3>& positions,
+               const std::vector<std::array<int, 3>>& faces, std::vector<Point3>& points,
+               std::vector<std::vector<std::size_t>>& polygons, RepairReport& report) {
   std::vector<int> compact(positions.size(), -1);
-  std::vector<Point3> points;
-  std::vector<std::vector<std::size_t>> polygons;
   polygons.reserve(faces.size());
   for (const auto& f : faces) {
     std::vector<std::size_t> polygon(3);
@@ -177,7 +148,84 @@ bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out
     polygons.push_back(std::move(polygon));
   }
   report.unreferenced_positions = positions.size() - points.size();
+}
 
+/// The surface mesh's vertices and faces (in their order).
+TriangleMesh triangle_mesh(const SurfaceMesh& sm) {
+  TriangleMesh mesh;
+  mesh.positions.reserve(sm.number_of_vertices());
+  for (const auto& v : sm.vertices()) {
+    const Point3& p = sm.point(v);
+    mesh.positions.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (const auto& f : sm.faces()) {
+    glm::ivec3 t;
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm))
+      t[k++] = int(v);
+    mesh.triangles.push_back(t);
+  }
+  return mesh;
+}
+
+/// Fills the boundary loops of `sm` that `holes` asks for (all, or all but the longest of each
+/// component), counted into `report`.
+void fill_holes(SurfaceMesh& sm, HoleFilling holes, RepairReport& report) {
+  std::vector<SurfaceMesh::Halfedge_index> cycles;  // one halfedge per boundary cycle
+  PMP::extract_boundary_cycles(sm, std::back_inserter(cycles));
+  report.holes_found = cycles.size();
+  if (holes == HoleFilling::kNone || cycles.empty())
+    return;
+  const std::vector<int> component = face_components(triangle_mesh(sm));
+  std::vector<double> length(cycles.size(), 0.0);
+  std::vector<int> cycle_component(cycles.size());
+  std::map<int, size_t> longest;  // component -> cycle
+  for (size_t c = 0; c < cycles.size(); ++c) {
+    for (auto h : CGAL::halfedges_around_face(cycles[c], sm))
+      length[c] +=
+          std::sqrt(CGAL::squared_distance(sm.point(sm.source(h)), sm.point(sm.target(h))));
+    cycle_component[c] = component[size_t(sm.face(sm.opposite(cycles[c])))];
+    auto it = longest.find(cycle_component[c]);
+    if (it == longest.end() || length[c] > length[it->second])
+      longest[cycle_component[c]] = c;
+  }
+  for (size_t c = 0; c < cycles.size(); ++c) {
+    if (holes == HoleFilling::kAllButLongest && longest[cycle_component[c]] == c)
+      continue;
+    std::vector<SurfaceMesh::Face_index> patch;
+    const bool faired = std::get<0>(PMP::triangulate_refine_and_fair_hole(
+        sm, cycles[c], std::back_inserter(patch), CGAL::Emptyset_iterator()));
+    if (patch.empty())
+      continue;
+    ++report.holes_filled;
+    report.holes_fair_failed += !faired;
+    report.filled_faces += patch.size();
+    for (auto f : patch) {
+      auto h = sm.halfedge(f);
+      report.filled_area += std::sqrt(CGAL::squared_area(
+          sm.point(sm.source(h)), sm.point(sm.target(h)), sm.point(sm.target(sm.next(h)))));
+    }
+  }
+}
+
+}  // namespace
+
+bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out,
+                 std::string& error) {
+  out = {};
+  RepairReport& report = out.report;
+  const TriangleMesh welded = weld_positions(input);
+  report.welded_positions = input.positions.size() - welded.positions.size();
+  std::vector<std::array<int, 3>> faces;
+  std::vector<int> kept;  // the input face of each of `faces`
+  proper_faces(welded, faces, kept, report);
+  if (faces.empty()) {
+    error = "no face with a positive area (the mesh is degenerate: zero area or collinear points)";
+    return false;
+  }
+  std::vector<Point3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  make_soup(welded.positions, faces, points, polygons, report);
   // Split non-manifold vertices and orient each component consistently.
   const size_t before = points.size();
   PMP::orient_polygon_soup(points, polygons);
@@ -193,69 +241,9 @@ bool repair_mesh(const TriangleMesh& input, HoleFilling holes, RepairedMesh& out
     return false;
   }
   out.input_faces = sm.number_of_faces();
-
-  // Holes: one halfedge per boundary cycle, grouped by component.
-  std::vector<SurfaceMesh::Halfedge_index> cycles;
-  PMP::extract_boundary_cycles(sm, std::back_inserter(cycles));
-  report.holes_found = cycles.size();
-  if (holes != HoleFilling::kNone && !cycles.empty()) {
-    TriangleMesh soup;
-    for (const auto& v : sm.vertices()) {
-      const Point3& p = sm.point(v);
-      soup.positions.emplace_back(p.x(), p.y(), p.z());
-    }
-    for (const auto& f : sm.faces()) {
-      glm::ivec3 t;
-      int k = 0;
-      for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm))
-        t[k++] = int(v);
-      soup.triangles.push_back(t);
-    }
-    const std::vector<int> component = face_components(soup);
-    std::vector<double> length(cycles.size(), 0.0);
-    std::vector<int> cycle_component(cycles.size());
-    std::map<int, size_t> longest;  // component -> cycle
-    for (size_t c = 0; c < cycles.size(); ++c) {
-      for (auto h : CGAL::halfedges_around_face(cycles[c], sm))
-        length[c] +=
-            std::sqrt(CGAL::squared_distance(sm.point(sm.source(h)), sm.point(sm.target(h))));
-      cycle_component[c] = component[size_t(sm.face(sm.opposite(cycles[c])))];
-      auto it = longest.find(cycle_component[c]);
-      if (it == longest.end() || length[c] > length[it->second])
-        longest[cycle_component[c]] = c;
-    }
-    for (size_t c = 0; c < cycles.size(); ++c) {
-      if (holes == HoleFilling::kAllButLongest && longest[cycle_component[c]] == c)
-        continue;
-      std::vector<SurfaceMesh::Face_index> patch;
-      const bool faired = std::get<0>(PMP::triangulate_refine_and_fair_hole(
-          sm, cycles[c], std::back_inserter(patch), CGAL::Emptyset_iterator()));
-      if (patch.empty())
-        continue;
-      ++report.holes_filled;
-      report.holes_fair_failed += !faired;
-      report.filled_faces += patch.size();
-      for (auto f : patch) {
-        auto h = sm.halfedge(f);
-        report.filled_area += std::sqrt(CGAL::squared_area(
-            sm.point(sm.source(h)), sm.point(sm.target(h)), sm.point(sm.target(sm.next(h)))));
-      }
-    }
-  }
-
+  fill_holes(sm, holes, report);
+  out.mesh = triangle_mesh(sm);
   TriangleMesh& mesh = out.mesh;
-  mesh.positions.reserve(sm.number_of_vertices());
-  for (const auto& v : sm.vertices()) {
-    const Point3& p = sm.point(v);
-    mesh.positions.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (const auto& f : sm.faces()) {
-    glm::ivec3 t;
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm))
-      t[k++] = int(v);
-    mesh.triangles.push_back(t);
-  }
   // Surface_mesh keeps the soup's faces in their order and appends the hole fillings.
   out.source_face.assign(mesh.triangles.size(), -1);
   std::copy_n(kept.begin(), std::min(kept.size(), out.input_faces), out.source_face.begin());
