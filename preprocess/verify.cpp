@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -153,14 +152,6 @@ AccuracyStats compare(const std::vector<Answer>& answers, const std::vector<Answ
   return s;
 }
 
-/// Uniform point on face `face` of the unit cube.
-glm::vec3 random_face_point(std::mt19937_64& rng, int face) {
-  const UnitUniformFloat unit;
-  const float s = unit(rng);
-  const float t = unit(rng);
-  return face_point(face, glm::vec2(s, t));
-}
-
 /// Lookups and exact casts of one ray family against the reference meshes.
 struct Family {
   std::string name;
@@ -176,171 +167,7 @@ struct Family {
   SurfaceRays leaving = {};
 };
 
-/// Unit vector uniform on the sphere.
-glm::vec3 random_direction(std::mt19937_64& rng) {
-  const StandardNormal gauss;
-  glm::vec3 g(gauss(rng), gauss(rng), gauss(rng));
-  while (glm::dot(g, g) < 1e-12f) {
-    g = glm::vec3(gauss(rng), gauss(rng), gauss(rng));
-  }
-  return glm::normalize(g);
-}
-
-/// Unit normal of triangle f as wound.
-glm::vec3 face_normal(const TriangleMesh& mesh, int f) {
-  const glm::ivec3 t = mesh.triangles[size_t(f)];
-  const glm::dvec3 n = glm::cross(mesh.positions[size_t(t[1])] - mesh.positions[size_t(t[0])],
-                                  mesh.positions[size_t(t[2])] - mesh.positions[size_t(t[0])]);
-  return glm::length(n) > 0.0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0.0f);
-}
-
 }  // namespace
-
-glm::dvec2 agreement_interval(size_t agree, size_t rays) {
-  if (rays == 0)
-    return {0.0, 1.0};
-  const double z = 1.959963984540054, n = double(rays), p = double(agree) / n;
-  const double centre = (p + z * z / (2.0 * n)) / (1.0 + z * z / n);
-  const double half = z * std::sqrt(p * (1.0 - p) / n + z * z / (4.0 * n * n)) / (1.0 + z * z / n);
-  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
-}
-
-nlohmann::json accuracy_to_json(const AccuracyStats& s) {
-  const glm::dvec2 interval = agreement_interval(s.agree, s.rays);
-  return {{"rays", s.rays},
-          {"hit_agreement", s.hit_agreement()},
-          {"hit_agreement_ci95", {interval.x, interval.y}},
-          {"exact_hits", s.exact_hits},
-          {"answer_hits", s.answer_hits},
-          {"both_hit", s.both_hit},
-          {"position_error_percent_of_diagonal",
-           {{"median", s.position_median}, {"p95", s.position_p95}, {"p99", s.position_p99}}},
-          {"normal_error_degrees", {{"median", s.normal_median}, {"p95", s.normal_p95}}},
-          {"seconds", s.seconds}};
-}
-
-std::vector<Ray> random_box_rays(const Box& box, size_t count, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  const UniformInt face{0, 5};
-  const UniformInt other{1, 5};
-  std::vector<Ray> rays(count);
-  for (Ray& ray : rays) {
-    const int entry_face = face(rng);
-    const int exit_face = (entry_face + other(rng)) % 6;
-    const glm::vec3 entry = from_unit_cube(box, random_face_point(rng, entry_face));
-    const glm::vec3 exit = from_unit_cube(box, random_face_point(rng, exit_face));
-    ray.origin = entry;
-    ray.direction = exit - entry;
-    ray.t_min = 0.0f;
-    ray.t_max = 1.0f;
-  }
-  return rays;
-}
-
-std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  const StandardNormal gauss;
-  const UnitUniformFloat unit;
-  const glm::vec3 centre = 0.5f * (box.min + box.max);
-  const float radius = diagonal(box);
-  std::vector<Ray> rays(count);
-  for (Ray& ray : rays) {
-    glm::vec3 g(gauss(rng), gauss(rng), gauss(rng));
-    while (glm::dot(g, g) < 1e-12f) {
-      g = glm::vec3(gauss(rng), gauss(rng), gauss(rng));
-    }
-    const glm::vec3 eye = centre + radius * glm::normalize(g);
-    const glm::vec3 target = from_unit_cube(box, glm::vec3(unit(rng), unit(rng), unit(rng)));
-    ray.origin = eye;
-    ray.direction = glm::normalize(target - eye);
-    ray.t_min = 0.0f;
-    ray.t_max = 3.0e38f;
-  }
-  return rays;
-}
-
-SurfaceOffsets surface_offsets(const GeometryImage& image, const Box& box) {
-  return {kMinRayOffset * diagonal(box), image.ray_offset * diagonal(box)};
-}
-
-SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, SurfaceOffsets offsets,
-                                uint64_t seed) {
-  std::vector<double> cumulative(mesh.triangles.size());
-  double area = 0.0;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const glm::ivec3 t = mesh.triangles[f];
-    area +=
-        0.5 * glm::length(glm::cross(mesh.positions[size_t(t[1])] - mesh.positions[size_t(t[0])],
-                                     mesh.positions[size_t(t[2])] - mesh.positions[size_t(t[0])]));
-    cumulative[f] = area;
-  }
-  const float outward = float(outward_orientation(mesh));
-  std::mt19937_64 rng(seed);
-  const UnitUniform unit;
-  SurfaceRays out;
-  out.self_t_min = 2.0f * offsets.self;
-  for (size_t i = 0; i < count && area > 0.0; ++i) {
-    const size_t f =
-        size_t(std::upper_bound(cumulative.begin(), cumulative.end(), unit(rng) * area) -
-               cumulative.begin());
-    const int face = int(std::min(f, cumulative.size() - 1));
-    const glm::ivec3 t = mesh.triangles[size_t(face)];
-    const double r = std::sqrt(unit(rng));
-    const double b = unit(rng);
-    const glm::dvec3 p = (1.0 - r) * mesh.positions[size_t(t[0])] +
-                         r * (1.0 - b) * mesh.positions[size_t(t[1])] +
-                         r * b * mesh.positions[size_t(t[2])];
-    glm::vec3 d = random_direction(rng);
-    const glm::vec3 g = outward * face_normal(mesh, face);
-    if (glm::dot(d, g) < 0.0f) {
-      d = -d;
-    }
-    out.rays.push_back({glm::vec3(p) + offsets.path * g, d, 2.0f * offsets.path, 3.0e38f});
-    out.self_origins.push_back(glm::vec3(p) + offsets.self * g);
-    out.facing.push_back(outward);
-    out.triangles.push_back(face);
-  }
-  return out;
-}
-
-SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
-                                size_t count, SurfaceOffsets offsets, uint64_t seed) {
-  const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
-  const std::vector<Ray> view = random_view_rays(box, 4 * count, seed);
-  std::vector<RayHit> hits(view.size());
-  tbb::parallel_for(size_t(0), view.size(), [&](size_t i) {
-    hits[i] = intersect(embree, view[i].origin, view[i].direction, 0.0f, view[i].t_max);
-  });
-  SurfaceRays out;
-  out.self_t_min = 2.0f * offsets.self;
-  for (size_t i = 0; i < view.size() && out.rays.size() < count; ++i) {
-    const RayHit& h = hits[i];
-    const glm::vec3 origin = view[i].origin + h.t * view[i].direction;
-    if (!h.hit ||
-        !std::isfinite(origin.x + origin.y + origin.z)) {  // t overflows at the 1e15 limit
-      continue;
-    }
-    const glm::vec3 d = view[i].direction;
-    const glm::ivec3 t = mesh.triangles[size_t(h.triangle)];
-    const glm::dvec3 smooth = (1.0 - h.u - h.v) * normals[size_t(t[0])] +
-                              double(h.u) * normals[size_t(t[1])] +
-                              double(h.v) * normals[size_t(t[2])];
-    glm::vec3 g = face_normal(mesh, h.triangle);
-    g = glm::dot(d, g) < 0.0f ? g : -g;
-    glm::vec3 n = glm::length(smooth) > 0.0 ? glm::vec3(glm::normalize(smooth)) : g;
-    n = glm::dot(d, n) < 0.0f ? n : -n;
-    glm::vec3 r = glm::reflect(d, n);
-    if (glm::dot(r, g) <= 0.0f) {
-      r = glm::reflect(d, g);
-    }
-    r = glm::normalize(r);
-    out.rays.push_back({origin + offsets.path * g, r, 2.0f * offsets.path, 3.0e38f});
-    out.self_origins.push_back(origin + offsets.self * g);
-    out.facing.push_back(glm::dot(face_normal(mesh, h.triangle), g) >= 0.0f ? 1.0f : -1.0f);
-    out.triangles.push_back(h.triangle);
-  }
-  return out;
-}
 
 AccuracyStats verify_table(const GeometryField& field, const GeometryImage& image,
                            const EmbreeMesh& embree, const TriangleMesh& mesh, size_t pairs,
@@ -691,68 +518,6 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   if (!check_field_sees_mesh(report["references"][0]["table"], shown.field, error))
     return false;
   return true;
-}
-
-const nlohmann::json& described_reference(const nlohmann::json& report) {
-  const nlohmann::json& references = report["references"];
-  return report.value("proxy", false) && references.size() > 1 ? references[1] : references[0];
-}
-
-std::string verify_report_to_text(const nlohmann::json& report) {
-  std::ostringstream out;
-  out << "verify " << report["name"].get<std::string>() << ": N = " << report["samples_per_side"]
-      << ", K = " << report["layers"] << ", uv bits " << report["field_bits"] << ", image "
-      << report["image_size"] << "^2, " << report["rays_per_family"] << " rays per family, seed "
-      << report["seed"] << "\n";
-  if (report.contains("ray_offset")) {
-    out << "surface rays leave the surface " << report["ray_offset"].get<float>()
-        << " of the box diagonal off it (the geometry image's ray offset)\n";
-  }
-  out << "position error in % of the box diagonal, normal error in degrees\n";
-  char line[256];
-  for (const nlohmann::json& r : report["references"]) {
-    out << "against the " << r["mesh"].get<std::string>() << " mesh ("
-        << r["path"].get<std::string>() << "):\n";
-    std::snprintf(line, sizeof(line), "  %-24s %9s %8s %8s %8s %8s %8s %9s\n", "test", "hit/miss",
-                  "median", "p95", "p99", "n.med", "n.p95", "Mrays/s");
-    out << line;
-    const auto row = [&](const std::string& label, const nlohmann::json& s) {
-      const nlohmann::json& p = s["position_error_percent_of_diagonal"];
-      const nlohmann::json& nrm = s["normal_error_degrees"];
-      const double seconds = s["seconds"].get<double>();
-      const double rate = seconds > 0.0 ? s["rays"].get<double>() / seconds / 1e6 : 0.0;
-      std::snprintf(line, sizeof(line), "  %-24s %8.3f%% %8.4f %8.4f %8.4f %8.3f %8.3f %9.2f\n",
-                    label.c_str(), 100.0 * s["hit_agreement"].get<double>(),
-                    p["median"].get<double>(), p["p95"].get<double>(), p["p99"].get<double>(),
-                    nrm["median"].get<double>(), nrm["p95"].get<double>(), rate);
-      out << line;
-    };
-    row("table", r["table"]);
-    for (const std::string prefix : {"box_rays", "view_rays", "surface_rays", "mirror_rays"}) {
-      for (const auto& [family, modes] : r.items()) {
-        if (family.rfind(prefix, 0) != 0) {
-          continue;
-        }
-        for (const auto& [mode, s] : modes.items()) {
-          row(family + " " + mode, s);
-        }
-      }
-    }
-    if (r.contains("near_hits")) {
-      out << "  rays leaving the surface whose exact hit lies within 2 ray offsets (told from "
-             "their start surface by facing only):";
-      for (const auto& [family, share] : r["near_hits"].items()) {
-        std::snprintf(line, sizeof(line), " %s %.3f%%", family.c_str(),
-                      100.0 * share.get<double>());
-        out << line;
-      }
-      out << "\n";
-    }
-  }
-  if (report.contains("original_note")) {
-    out << report["original_note"].get<std::string>() << "\n";
-  }
-  return out.str();
 }
 
 }  // namespace gfield
