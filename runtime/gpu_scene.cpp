@@ -132,7 +132,7 @@ void GpuScene::bind() const {
 }
 
 void GpuScene::set_uniforms(const ShaderProgram& program) const {
-  const auto u = [&](const char* name) { return program.uniform(name); };
+  const auto u = [&](const char* name) { return program.uniform_if_declared(name); };
   glUniform1i(u("u_object_count"), int(scene_.objects.size()));
   glUniform1i(u("u_light_count"), int(scene_.lights.size()));
   glUniform3fv(u("u_ambient"), 1, &scene_.ambient.x);
@@ -144,7 +144,7 @@ void GpuScene::set_uniforms(const ShaderProgram& program) const {
 
 void GpuScene::set_object_uniforms(const ShaderProgram& program, int object) const {
   const SceneObject& o = scene_.objects[size_t(object)];
-  const auto u = [&](const char* name) { return program.uniform(name); };
+  const auto u = [&](const char* name) { return program.uniform_if_declared(name); };
   const glm::dmat4 to_world_d = object_to_world(o.transform);
   const glm::mat4 to_world(to_world_d), to_object(glm::inverse(to_world_d));
   const glm::mat3 normal_to_world(glm::transpose(glm::inverse(glm::dmat3(to_world_d))));
@@ -200,8 +200,8 @@ void GpuScene::object_local_bounds(int object, glm::vec3& lo, glm::vec3& hi) con
 void GpuScene::object_world_bounds(int object, glm::vec3& lo, glm::vec3& hi) const {
   glm::vec3 olo, ohi;
   object_local_bounds(object, olo, ohi);
-  lo = glm::vec3(3.0e38f);
-  hi = glm::vec3(-3.0e38f);
+  lo = glm::vec3(gpu::GF_FAR);
+  hi = glm::vec3(-gpu::GF_FAR);
   grow_world_bounds(glm::mat4(object_to_world(scene_.objects[size_t(object)].transform)), olo, ohi,
                     lo, hi);
 }
@@ -224,13 +224,13 @@ void set_camera_uniforms(const ShaderProgram& program, const Camera& camera, int
   const glm::vec3 up = glm::cross(right, forward);
   const float tan_half = std::tan(glm::radians(camera.fov_degrees) * 0.5f);
   const float aspect = float(width) / float(height);
-  glUniform3fv(program.uniform("u_camera_position"), 1, &camera.position.x);
-  glUniform3fv(program.uniform("u_camera_forward"), 1, &forward.x);
-  glUniform3fv(program.uniform("u_camera_right"), 1, &right.x);
-  glUniform3fv(program.uniform("u_camera_up"), 1, &up.x);
-  glUniform2f(program.uniform("u_tan_half"), tan_half * aspect, tan_half);
-  glUniform2f(program.uniform("u_image_size"), float(width), float(height));
-  glUniform2f(program.uniform("u_jitter"), jitter.x, jitter.y);
+  glUniform3fv(program.uniform_if_declared("u_camera_position"), 1, &camera.position.x);
+  glUniform3fv(program.uniform_if_declared("u_camera_forward"), 1, &forward.x);
+  glUniform3fv(program.uniform_if_declared("u_camera_right"), 1, &right.x);
+  glUniform3fv(program.uniform_if_declared("u_camera_up"), 1, &up.x);
+  glUniform2f(program.uniform_if_declared("u_tan_half"), tan_half * aspect, tan_half);
+  glUniform2f(program.uniform_if_declared("u_image_size"), float(width), float(height));
+  glUniform2f(program.uniform_if_declared("u_jitter"), jitter.x, jitter.y);
 }
 
 glm::vec2 depth_range(glm::vec3 eye, const GpuScene& scene, float edge_cosine, int skip) {

@@ -2,10 +2,13 @@
 
 #include <cmath>
 
+#include "gfield/gpu_contract.hpp"
+
 // shaders/lib/glass_displacement.glsl compiled as C++ (outside namespace gfield, whose own
 // refract/reflect would hide GLM's).
 namespace gfield_glass_glsl {
-using namespace glm;  // the GLSL vocabulary of glass_displacement.glsl
+using namespace glm;          // the GLSL vocabulary of glass_displacement.glsl
+using namespace gfield::gpu;  // and the contract's GF_FAR
 #include "../../shaders/lib/glass_displacement.glsl"
 }  // namespace gfield_glass_glsl
 

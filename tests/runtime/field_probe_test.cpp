@@ -28,7 +28,7 @@ std::vector<Ray> test_rays() {
   for (int j = 0; j < 96; ++j) {
     for (int i = 0; i < 96; ++i) {
       const glm::vec2 p = (glm::vec2(i, j) + 0.5f) / 96.0f * 2.0f - 1.0f;
-      rays.push_back({eye, forward + 0.32f * (p.x * right + p.y * up), 0.0f, 3.0e38f});
+      rays.push_back({eye, forward + 0.32f * (p.x * right + p.y * up), 0.0f});
     }
   }
   std::mt19937 rng(7);
@@ -42,7 +42,7 @@ std::vector<Ray> test_rays() {
   for (int k = 0; k < 4096; ++k) {
     const glm::vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
     const glm::vec3 origin = k % 2 == 0 ? a : glm::normalize(a);
-    rays.push_back({origin, b - a, 1e-3f, 3.0e38f});
+    rays.push_back({origin, b - a, 1e-3f});
   }
   return rays;
 }

@@ -126,5 +126,27 @@ TEST_F(GlTest, RendersIntoFramebufferAndReadsBack) {
   EXPECT_EQ(covered, 32 * 24);  // the left half, 8 bottom rows excepted (z = 0.375 there)
 }
 
+// Uniform locations come from the table made at link time: a dropped (unused) uniform is -1 as
+// GL's own look-up, and a name the program does not declare stops it, naming both.
+TEST_F(GlTest, UniformsAreLookedUpAtLinkAndAMisspeltOneStopsTheProgram) {
+  write_file(dir_ / "u.vert",
+             "#version 450\nuniform vec2 u_offsets[2];\nuniform float u_unused;\n"
+             "void main() { gl_Position = vec4(u_offsets[gl_VertexID % 2], 0.5, 1); }\n");
+  write_file(dir_ / "u.frag",
+             "#version 450\nlayout(location = 0) uniform vec3 u_color;\n"
+             "layout(location = 0) out vec4 o;\nvoid main() { o = vec4(u_color, 1); }\n");
+  ShaderProgram program;
+  std::string error;
+  ASSERT_TRUE(program.build(dir_, {"u.vert", "u.frag"}, "", error)) << error;
+  EXPECT_EQ(program.uniform("u_color"), 0);
+  EXPECT_EQ(program.uniform("u_offsets"), glGetUniformLocation(program.id(), "u_offsets"));
+  EXPECT_GE(program.uniform("u_offsets"), 0);
+  EXPECT_EQ(program.uniform("u_offsets[0]"), program.uniform("u_offsets"));
+  EXPECT_EQ(program.uniform("u_unused"), -1);
+  EXPECT_EQ(program.uniform_if_declared("u_colour"), -1);
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_DEATH(program.uniform("u_colour"), "u.vert \\+ u.frag has no uniform \"u_colour\"");
+}
+
 }  // namespace
 }  // namespace gfield
