@@ -1,11 +1,12 @@
 #include "runtime/shader_program.hpp"
 
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
+
+#include "gfield/check.hpp"
 
 namespace gfield {
 namespace fs = std::filesystem;
@@ -224,11 +225,8 @@ bool ShaderProgram::rebuild(std::string& error) {
 
 GLint ShaderProgram::uniform(const char* name) const {
   const auto found = uniforms_.locations.find(name);
-  if (found == uniforms_.locations.end()) {
-    std::fprintf(stderr, "gfield: the shader program %s has no uniform \"%s\"\n",
-                 uniforms_.program.c_str(), name);
-    std::abort();
-  }
+  GF_CHECK(found != uniforms_.locations.end(),
+           "the shader program " + uniforms_.program + " has no uniform \"" + name + "\"");
   return found->second;
 }
 

@@ -117,7 +117,7 @@ void GlassMethod::update_geometry() {
   for (const SceneObject& o : scene.objects) {
     const glm::mat4 to_world(object_to_world(o.transform));
     if (o.shape.type == ShapeType::kMesh) {
-      const Box& b = scene_->assets().assets()[size_t(o.shape.mesh)].mesh_bounds;
+      const Box& b = scene_->assets().asset(o.shape.mesh).mesh_bounds;
       grow_world_bounds(to_world, b.min, b.max, lo_, hi_);
     } else {
       glm::dvec3 olo, ohi;
@@ -157,9 +157,8 @@ long long GlassMethod::vertex_count() const {
     const SceneObject& o = scene.objects[k];
     if (int(k) == glass_object_)
       continue;
-    n += o.shape.type == ShapeType::kMesh
-             ? scene_->assets().assets()[size_t(o.shape.mesh)].source.vertex_count
-             : tessellated_[k].vertex_count;
+    n += o.shape.type == ShapeType::kMesh ? scene_->assets().asset(o.shape.mesh).source.vertex_count
+                                          : tessellated_[k].vertex_count;
   }
   return n;
 }
@@ -261,7 +260,7 @@ void GlassMethod::peel(const glm::mat4& view_projection, int width, int height) 
 }
 
 void GlassMethod::set_class_uniforms(int refraction_class) {
-  const SceneObject& glass = scene_->scene().objects[size_t(glass_object_)];
+  const SceneObject& glass = scene_->scene_object(glass_object_);
   const auto u = [&](const char* name) { return scene_program_.uniform(name); };
   int kind = 0;
   if (refraction_class >= 1 && refraction_class <= 3) {
@@ -279,7 +278,7 @@ void GlassMethod::set_class_uniforms(int refraction_class) {
 
 void GlassMethod::draw_class_images(const Camera& camera, const std::vector<int>& classes,
                                     const glm::mat4& view_projection, int layer_of_class[]) {
-  const SceneObject& glass = scene_->scene().objects[size_t(glass_object_)];
+  const SceneObject& glass = scene_->scene_object(glass_object_);
   const int width = class_images_.width, height = class_images_.height;
   const auto u = [&](const char* name) { return scene_program_.uniform(name); };
   glUseProgram(scene_program_.id());
@@ -326,7 +325,7 @@ void GlassMethod::draw_class_images(const Camera& camera, const std::vector<int>
 
 void GlassMethod::composite(const Camera& camera, Framebuffer& target, glm::vec2 jitter,
                             const CameraFrustum& frustum, const int layer_of_class[]) {
-  const SceneObject& glass = scene_->scene().objects[size_t(glass_object_)];
+  const SceneObject& glass = scene_->scene_object(glass_object_);
   target.bind();
   glDisable(GL_DEPTH_TEST);
   const ShaderProgram& p = composite_program_;
@@ -367,7 +366,7 @@ void GlassMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 ji
   const Stopwatch clock;
   timed_ = stats != nullptr;
   const int width = target.width(), height = target.height();
-  const SceneObject& glass = scene_->scene().objects[size_t(glass_object_)];
+  const SceneObject& glass = scene_->scene_object(glass_object_);
   const std::vector<int> classes =
       classes_present(glass, camera, float(width) / float(height), settings_.trace_verge);
   class_images_.ensure(width, height, int(classes.size()));
