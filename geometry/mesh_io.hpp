@@ -46,7 +46,7 @@ struct MeshSource {
   bool texture_pixels = true;
 };
 
-/// Reads `filename` (.obj, .ply, .off, .stl, .gltf, .glb; case-insensitive extension). False
+/// Reads `filename` (.obj, .ply, .off, .stl, .gltf, .glb: mesh_formats.hpp; any case). False
 /// with a one-line error "FILE[:LINE]: problem" for a missing/unreadable/empty file or one above
 /// kMaxMeshFileBytes, an unknown extension, a malformed or truncated file, a header whose counts
 /// the file cannot hold, a face with fewer than 3 or more than kMaxPolygonCorners corners, a file

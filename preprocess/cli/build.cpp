@@ -25,7 +25,7 @@ void add_build_command(CLI::App& app) {
   auto threads = std::make_shared<int>(0);
   auto part = std::make_shared<std::string>();
   auto args = std::make_shared<AssetArguments>();
-  cmd->add_option("MESH", *mesh, "mesh file (.obj, .ply, .off, .stl, .gltf, .glb)")->required();
+  cmd->add_option("MESH", *mesh, mesh_file_help())->required();
   cmd->add_option("--mesh", *part,
                   "glTF: the mesh NAME (or #INDEX) to build (default: every primitive of the "
                   "file's scene, placed by its nodes, as one mesh)");
