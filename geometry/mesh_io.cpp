@@ -1,13 +1,11 @@
 #include "geometry/mesh_io.hpp"
 
 #include <filesystem>
-#include <sstream>
 
 #include "geometry/gltf_mesh.hpp"
 #include "geometry/mesh_appearance.hpp"
 #include "geometry/mesh_formats.hpp"
 #include "geometry/mesh_readers.hpp"
-#include "gfield/atomic_file.hpp"
 #include "gfield/file_extension.hpp"
 #include "gfield/file_read.hpp"
 #include "gfield/limits.hpp"
@@ -107,18 +105,6 @@ bool load_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* app
     *stats = soup.stats;
   }
   return true;
-}
-
-bool save_obj(const std::string& filename, const TriangleMesh& mesh, std::string& error) {
-  std::ostringstream out;
-  out.precision(9);
-  for (const glm::dvec3& p : mesh.positions) {
-    out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-  }
-  for (const glm::ivec3& t : mesh.triangles) {
-    out << "f " << t.x + 1 << ' ' << t.y + 1 << ' ' << t.z + 1 << '\n';
-  }
-  return write_text_file(filename, out.str(), error);
 }
 
 }  // namespace gfield

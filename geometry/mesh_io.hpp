@@ -66,7 +66,4 @@ bool load_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* app
 /// True for the extensions of glTF files (.gltf, .glb, any case).
 bool is_gltf_file(const std::string& filename);
 
-/// Writes an OBJ file (atomically). For debugging and for generated test meshes.
-bool save_obj(const std::string& filename, const TriangleMesh& mesh, std::string& error);
-
 }  // namespace gfield

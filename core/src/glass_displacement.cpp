@@ -24,22 +24,6 @@ glm::vec3 plate_displace(const GlassPlate& plate, glm::vec3 eye, glm::vec3 verte
                                  plate.thickness, plate.ior);
 }
 
-CylinderPathPoints cylinder_path(const GlassCylinder& cylinder, CylinderPath path, glm::vec3 eye,
-                                 glm::vec3 vertex) {
-  const glsl::GdPath p =
-      glsl::gd_solve(glsl::gd_cylinder_glass(int(path), cylinder.outer_radius,
-                                             cylinder.inner_radius, cylinder.ior),
-                     eye, vertex);
-  CylinderPathPoints out;
-  out.valid = p.valid;
-  out.count = p.count;
-  for (int k = 0; k < 4; ++k)
-    out.points[size_t(k)] = p.point[k];
-  for (int k = 0; k < 5; ++k)
-    out.directions[size_t(k)] = p.dir[k];
-  return out;
-}
-
 bool cylinder_displace(const GlassCylinder& cylinder, CylinderPath path, glm::vec3 eye,
                        glm::vec3 vertex, glm::vec3& seen) {
   bool ok = false;
