@@ -9,6 +9,7 @@
 #include "runtime/framebuffer.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/shader_program.hpp"
+#include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
@@ -19,25 +20,10 @@ void write_file(const fs::path& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
-class GlTest : public ::testing::Test {
+class GlTest : public test::GlSuite {
  protected:
-  static void SetUpTestSuite() {
-    std::string error;
-    context_ = GlContext::create_headless(error).release();
-    ASSERT_NE(context_, nullptr) << error;
-    ready_ = true;
-  }
-  /// A failed suite set-up fails every test instead of letting it use what is missing.
-  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  static inline bool ready_ = false;
-  static GlContext* context_;
   fs::path dir_ = fs::path(GFIELD_TEST_TMP) / "gl_context_test";
 };
-GlContext* GlTest::context_ = nullptr;
 
 TEST_F(GlTest, ContextIsOpenGl45Core) {
   ASSERT_NE(context_, nullptr);
