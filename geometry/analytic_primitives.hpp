@@ -1,7 +1,8 @@
 #pragma once
 // Exact ray intersections with the analytic shapes of a scene (sphere, quad, box, cylinder,
-// slab, hollow cylinder) in their object space, in double precision. Shapes as in
-// gfield/scene.hpp: centred on the origin, cylinders along Y, quads and slabs facing +Z.
+// slab, hollow cylinder) in their object space, in double precision: the shaders' own
+// shaders/lib/shapes.glsl compiled in double. Shapes as in gfield/scene.hpp: centred on the
+// origin, cylinders along Y, quads and slabs facing +Z.
 
 #include <glm/glm.hpp>
 

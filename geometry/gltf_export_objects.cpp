@@ -6,6 +6,7 @@
 #include "geometry/mesh_appearance.hpp"
 #include "geometry/mesh_io.hpp"
 #include "geometry/shape_tessellation.hpp"
+#include "gfield/gpu_contract.hpp"
 
 namespace gfield {
 namespace {
@@ -85,7 +86,7 @@ ExportedMesh exported_mesh(const TriangleMesh& mesh, const MeshAppearance& a, bo
 
 /// The smallest side of the box of `positions`.
 double smallest_side(const std::vector<glm::vec3>& positions) {
-  glm::vec3 lo(3e38f), hi(-3e38f);
+  glm::vec3 lo(gpu::GF_FAR), hi(-gpu::GF_FAR);
   for (const glm::vec3& p : positions) {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
@@ -98,7 +99,7 @@ double smallest_side(const std::vector<glm::vec3>& positions) {
 json vertex_attributes(GlbBuilder& b, const ExportedMesh& m, bool textured) {
   json attributes;
   attributes["POSITION"] = b.add_accessor(m.positions, "VEC3", kArrayBuffer);
-  glm::vec3 lo(3e38f), hi(-3e38f);
+  glm::vec3 lo(gpu::GF_FAR), hi(-gpu::GF_FAR);
   for (const glm::vec3& p : m.positions) {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);

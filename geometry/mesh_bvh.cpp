@@ -4,6 +4,8 @@
 #include <array>
 #include <limits>
 
+#include "gfield/gpu_contract.hpp"
+
 namespace gfield {
 namespace {
 

@@ -1,27 +1,18 @@
 #include "geometry/mesh_io.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
-#include <sstream>
 
 #include "geometry/gltf_mesh.hpp"
 #include "geometry/mesh_appearance.hpp"
+#include "geometry/mesh_formats.hpp"
 #include "geometry/mesh_readers.hpp"
-#include "gfield/atomic_file.hpp"
+#include "gfield/file_extension.hpp"
 #include "gfield/file_read.hpp"
 #include "gfield/limits.hpp"
 
 namespace gfield {
 
 namespace {
-
-std::string lower_extension(const std::string& filename) {
-  std::string ext = std::filesystem::path(filename).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 /// The appearance of what a reader of `source` read: corner uvs from their indices, the
 /// materials with their libraries (OBJ) or the file's texture (PLY), the textures decoded (or
@@ -61,8 +52,8 @@ bool soup_appearance(const MeshSource& source, MeshSoup& soup, MeshAppearance& a
 }  // namespace
 
 bool is_gltf_file(const std::string& filename) {
-  const std::string ext = lower_extension(filename);
-  return ext == ".gltf" || ext == ".glb";
+  const MeshFormat* format = find_mesh_format(filename);
+  return format != nullptr && format->read == nullptr;
 }
 
 bool load_mesh(const std::string& filename, TriangleMesh& mesh, std::string& error,
@@ -74,23 +65,17 @@ bool load_mesh(const std::string& filename, TriangleMesh& mesh, std::string& err
 bool load_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* appearance,
                std::vector<std::string>& warnings, std::string& error, MeshLoadStats* stats) {
   const std::string& filename = source.file;
-  if (is_gltf_file(filename)) {
+  const MeshFormat* format = find_mesh_format(filename);
+  if (format != nullptr && format->read == nullptr) {
     return load_gltf_mesh(source, mesh, appearance, warnings, error, stats);
   }
   if (!source.part.empty()) {
     error = filename + ": --mesh " + source.part + " applies to glTF files only";
     return false;
   }
-  const std::string ext = lower_extension(filename);
-  using Reader = bool (*)(std::string_view, MeshSoup&, ReadFailure&);
-  const Reader reader = ext == ".obj"   ? read_obj
-                        : ext == ".ply" ? read_ply
-                        : ext == ".off" ? read_off
-                        : ext == ".stl" ? read_stl
-                                        : nullptr;
-  if (reader == nullptr) {
-    error = filename + ": unknown mesh extension '" + ext +
-            "' (expected .obj, .ply, .off, .stl, .gltf, .glb)";
+  if (format == nullptr) {
+    error = filename + ": unknown mesh extension '" + lower_extension(filename) + "' (expected " +
+            mesh_extension_list() + ")";
     return false;
   }
   std::string data;
@@ -99,7 +84,7 @@ bool load_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* app
   }
   MeshSoup soup;
   ReadFailure failure;
-  if (!reader(data, soup, failure)) {
+  if (!format->read(data, soup, failure)) {
     error = filename;
     if (failure.line > 0) {
       error += ':' + std::to_string(failure.line);
@@ -120,18 +105,6 @@ bool load_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* app
     *stats = soup.stats;
   }
   return true;
-}
-
-bool save_obj(const std::string& filename, const TriangleMesh& mesh, std::string& error) {
-  std::ostringstream out;
-  out.precision(9);
-  for (const glm::dvec3& p : mesh.positions) {
-    out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-  }
-  for (const glm::ivec3& t : mesh.triangles) {
-    out << "f " << t.x + 1 << ' ' << t.y + 1 << ' ' << t.z + 1 << '\n';
-  }
-  return write_text_file(filename, out.str(), error);
 }
 
 }  // namespace gfield

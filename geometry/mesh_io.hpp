@@ -46,7 +46,7 @@ struct MeshSource {
   bool texture_pixels = true;
 };
 
-/// Reads `filename` (.obj, .ply, .off, .stl, .gltf, .glb; case-insensitive extension). False
+/// Reads `filename` (.obj, .ply, .off, .stl, .gltf, .glb: mesh_formats.hpp; any case). False
 /// with a one-line error "FILE[:LINE]: problem" for a missing/unreadable/empty file or one above
 /// kMaxMeshFileBytes, an unknown extension, a malformed or truncated file, a header whose counts
 /// the file cannot hold, a face with fewer than 3 or more than kMaxPolygonCorners corners, a file
@@ -65,8 +65,5 @@ bool load_mesh(const MeshSource& source, TriangleMesh& mesh, MeshAppearance* app
 
 /// True for the extensions of glTF files (.gltf, .glb, any case).
 bool is_gltf_file(const std::string& filename);
-
-/// Writes an OBJ file (atomically). For debugging and for generated test meshes.
-bool save_obj(const std::string& filename, const TriangleMesh& mesh, std::string& error);
 
 }  // namespace gfield

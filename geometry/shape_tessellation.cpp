@@ -2,10 +2,10 @@
 
 #include <cmath>
 
+#include <glm/gtc/constants.hpp>
+
 namespace gfield {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Appends a vertex; its index.
 int vertex(TessellatedShape& s, glm::dvec3 p) {
@@ -23,7 +23,7 @@ void triangle(TessellatedShape& s, int a, int b, int c, glm::dvec2 ua, glm::dvec
 /// The point at azimuth index j of `n` (u = j / n: azimuth 2 pi (u - 0.5) from +Z towards +X, as
 /// u = atan2(x, z) / 2 pi + 0.5), radius `r`, height `y`.
 glm::dvec3 ring_point(int j, int n, double r, double y) {
-  const double phi = 2.0 * kPi * (double(j) / n - 0.5);
+  const double phi = 2.0 * glm::pi<double>() * (double(j) / n - 0.5);
   return {r * std::sin(phi), y, r * std::cos(phi)};
 }
 
@@ -35,7 +35,7 @@ void sphere(TessellatedShape& s, double r, int n) {
   vertex(s, {0.0, -r, 0.0});
   vertex(s, {0.0, r, 0.0});
   for (int i = 1; i < rings; ++i) {
-    const double latitude = kPi * (double(i) / rings - 0.5);
+    const double latitude = glm::pi<double>() * (double(i) / rings - 0.5);
     for (int j = 0; j < n; ++j)
       vertex(s, ring_point(j, n, r * std::cos(latitude), r * std::sin(latitude)));
   }

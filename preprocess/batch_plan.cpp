@@ -12,6 +12,7 @@
 #include <map>
 #include <set>
 
+#include "geometry/mesh_formats.hpp"
 #include "gfield/file_read.hpp"
 
 namespace gfield {
@@ -19,11 +20,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool is_mesh_file(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".obj" || ext == ".ply" || ext == ".off" || ext == ".stl";
+/// A file of a format `gfield batch` takes from a folder (geometry/mesh_formats.hpp).
+bool is_batch_mesh_file(const fs::path& path) {
+  const MeshFormat* format = find_mesh_format(path.string());
+  return format != nullptr && format->batch;
 }
 
 bool parse_int(std::string_view text, int& value) {
@@ -39,7 +39,7 @@ std::vector<std::string> folder_meshes(const std::string& folder,
   std::error_code ec;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec)) {
     const std::string file = entry.path().filename().string();
-    if (!is_mesh_file(entry.path()) || file.find(".gimage.") != std::string::npos)
+    if (!is_batch_mesh_file(entry.path()) || file.find(".gimage.") != std::string::npos)
       continue;
     if (const std::string why = file_problem(entry.path().string()); !why.empty())
       skipped.push_back(entry.path().string() + ": " + why);

@@ -24,16 +24,12 @@ struct BuildInputs {
   std::string build_id;  ///< the first kBuildIdDigits hex digits of SHA-256(record.dump())
 };
 
-/// The texture files a mesh names, as paths relative to the working folder: for an OBJ, its
-/// mtllib files and the maps (map_Kd, bump, ...) they name; for a glTF file, its external
-/// buffers and images; for a PLY, its "comment TextureFile" files; none for OFF and STL. Files that
-/// do not exist are listed too (their appearance changes the build); files outside the mesh's
-/// folder only when `outside` is kAllowed (the build refuses them otherwise: confined_path.hpp).
-std::vector<std::string> mesh_texture_files(const std::string& mesh_path, OutsidePaths outside);
-
 /// Hashes the inputs of building `mesh_path` with `options` (an object of every output-changing
-/// option), reading the files it names as mesh_texture_files lists them. False with an error
-/// "FILE: problem" when the mesh cannot be read.
+/// option), its textures being the files it names beside itself as mesh_side_files lists them
+/// (geometry/mesh_formats.hpp: an OBJ's mtllib files and the maps they name, a PLY's "comment
+/// TextureFile" files, a glTF file's external buffers and images; none for OFF and STL; files
+/// that do not exist too, outside the mesh's folder only when `outside` is kAllowed). False with
+/// an error "FILE: problem" when the mesh cannot be read.
 bool hash_build_inputs(const std::string& mesh_path, const nlohmann::json& options,
                        OutsidePaths outside, BuildInputs& inputs, std::string& error);
 

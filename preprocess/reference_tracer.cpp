@@ -18,6 +18,7 @@
 #include "geometry/mesh_io.hpp"
 #include "geometry/outward_normals.hpp"
 #include "gfield/environment.hpp"
+#include "gfield/gpu_contract.hpp"
 #include "gfield/limits.hpp"
 #include "gfield/optics.hpp"
 #include "gfield/stopwatch.hpp"
@@ -385,7 +386,7 @@ struct ReferenceTracer::Impl {
     if (!instance_to_object.empty()) {
       RTCRayHit rh;
       init_rayhit(rh, glm::vec3(ray.origin), glm::vec3(ray.direction), 0.0f,
-                  float(std::min(t_max, 3.0e38)));
+                  float(std::min(t_max, double(gpu::GF_FAR))));
       rh.ray.mask = mask;
       RTCIntersectContext context;
       rtcInitIntersectContext(&context);

@@ -46,7 +46,7 @@ bool read_rays(const std::string& file, std::vector<Ray>& rays) {
   std::ifstream in(file, std::ios::binary);
   float row[7];
   while (in.read(reinterpret_cast<char*>(row), sizeof(row))) {
-    rays.push_back(Ray{{row[0], row[1], row[2]}, {row[3], row[4], row[5]}, row[6], 3.0e38f});
+    rays.push_back(Ray{{row[0], row[1], row[2]}, {row[3], row[4], row[5]}, row[6]});
   }
   return in.eof() && in.gcount() == 0;
 }

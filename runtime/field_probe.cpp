@@ -14,7 +14,7 @@ bool probe_field_gpu(const GpuAssets& assets, int asset, const std::vector<Ray>&
     error = "probe: no asset " + std::to_string(asset);
     return false;
   }
-  const GpuAsset& a = assets.assets()[size_t(asset)];
+  const GpuAsset& a = assets.asset(asset);
   ShaderProgram program;
   if (!program.build(shader_dir, {"fullscreen.vert", "field_probe.frag"}, "", error))
     return false;

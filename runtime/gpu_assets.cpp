@@ -11,6 +11,7 @@
 #include "geometry/outward_normals.hpp"
 #include "gfield/exr_io.hpp"
 #include "gfield/field_lookup.hpp"
+#include "gfield/gpu_contract.hpp"
 #include "gfield/gpu_storage.hpp"
 #include "runtime/image_atlas.hpp"
 
@@ -412,7 +413,7 @@ bool GpuAssets::load_source_meshes(const Scene& scene, std::string& error) {
     for (const MeshTexture& texture : appearances[m].textures)
       textures.push_back(&texture.image);
     assets_[m].source.upload(vertices, indices);
-    Box bounds{glm::vec3(3e38f), glm::vec3(-3e38f)};
+    Box bounds{glm::vec3(gpu::GF_FAR), glm::vec3(-gpu::GF_FAR)};
     for (const GpuVertex& v : vertices) {
       bounds.min = glm::min(bounds.min, v.position);
       bounds.max = glm::max(bounds.max, v.position);

@@ -35,6 +35,7 @@
 
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/box.hpp"
+#include "gfield/check.hpp"
 #include "gfield/geometry_field.hpp"
 #include "gfield/geometry_image.hpp"
 #include "gfield/scene.hpp"
@@ -115,6 +116,11 @@ class GpuAssets {
               const std::vector<const GeometryField*>& fields, int field_bits, std::string& error);
 
   const std::vector<GpuAsset>& assets() const { return assets_; }
+  /// The asset of the scene's mesh `mesh` (Shape::mesh; GF_DCHECK: loaded).
+  const GpuAsset& asset(int mesh) const {
+    GF_DCHECK(mesh >= 0 && size_t(mesh) < assets_.size(), "a mesh without a GPU asset");
+    return assets_[size_t(mesh)];
+  }
   GLuint positions() const { return positions_.id(); }
   GLuint normals() const { return normals_.id(); }
   GLuint fields() const { return fields_.id(); }

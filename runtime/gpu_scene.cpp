@@ -40,7 +40,7 @@ void make_proxy_cube(GpuMesh& cube) {
 
 /// The contract's GpuObject of object k.
 gpu::GpuObject gpu_object(const GpuScene& gpu_scene, int k) {
-  const SceneObject& o = gpu_scene.scene().objects[size_t(k)];
+  const SceneObject& o = gpu_scene.scene_object(k);
   gpu::GpuObject g{};
   const glm::dmat4 to_world = object_to_world(o.transform);
   g.to_world = glm::mat4(to_world);
@@ -58,7 +58,7 @@ gpu::GpuObject gpu_object(const GpuScene& gpu_scene, int k) {
   g.box_min = glm::vec4(lo, 0.0f);
   g.box_max = glm::vec4(hi, 0.0f);
   if (o.shape.type == ShapeType::kMesh) {
-    const GpuAsset& asset = gpu_scene.assets().assets()[size_t(o.shape.mesh)];
+    const GpuAsset& asset = gpu_scene.assets().asset(o.shape.mesh);
     g.box_min.w = asset.ray_offset;
     g.asset =
         glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, asset.albedo ? 1 : 0);
@@ -132,7 +132,7 @@ void GpuScene::bind() const {
 }
 
 void GpuScene::set_uniforms(const ShaderProgram& program) const {
-  const auto u = [&](const char* name) { return program.uniform(name); };
+  const auto u = [&](const char* name) { return program.uniform_if_declared(name); };
   glUniform1i(u("u_object_count"), int(scene_.objects.size()));
   glUniform1i(u("u_light_count"), int(scene_.lights.size()));
   glUniform3fv(u("u_ambient"), 1, &scene_.ambient.x);
@@ -143,8 +143,8 @@ void GpuScene::set_uniforms(const ShaderProgram& program) const {
 }
 
 void GpuScene::set_object_uniforms(const ShaderProgram& program, int object) const {
-  const SceneObject& o = scene_.objects[size_t(object)];
-  const auto u = [&](const char* name) { return program.uniform(name); };
+  const SceneObject& o = scene_object(object);
+  const auto u = [&](const char* name) { return program.uniform_if_declared(name); };
   const glm::dmat4 to_world_d = object_to_world(o.transform);
   const glm::mat4 to_world(to_world_d), to_object(glm::inverse(to_world_d));
   const glm::mat3 normal_to_world(glm::transpose(glm::inverse(glm::dmat3(to_world_d))));
@@ -157,7 +157,7 @@ void GpuScene::set_object_uniforms(const ShaderProgram& program, int object) con
   glUniform3fv(u("u_shape_size"), 1, &o.shape.size.x);
   if (o.shape.type == ShapeType::kMesh) {
     glUniform3f(u("u_proxy_half"), 1.0f, 1.0f, 1.0f);
-    glUniform1i(u("u_gi_size"), assets_.assets()[size_t(o.shape.mesh)].image_size);
+    glUniform1i(u("u_gi_size"), assets_.asset(o.shape.mesh).image_size);
     return;
   }
   // A slightly grown box: the exact shape is found per fragment.
@@ -169,12 +169,12 @@ void GpuScene::set_object_uniforms(const ShaderProgram& program, int object) con
 
 void GpuScene::draw_object(const ShaderProgram& program, int object, RasterMesh raster) const {
   set_object_uniforms(program, object);
-  const Shape& shape = scene_.objects[size_t(object)].shape;
+  const Shape& shape = scene_object(object).shape;
   if (shape.type != ShapeType::kMesh) {
     proxy_.draw();
     return;
   }
-  const GpuAsset& asset = assets_.assets()[size_t(shape.mesh)];
+  const GpuAsset& asset = assets_.asset(shape.mesh);
   (raster == RasterMesh::kSource ? asset.source : asset.parameterized).draw();
 }
 
@@ -184,9 +184,9 @@ void GpuScene::draw_fullscreen() const {
 }
 
 void GpuScene::object_local_bounds(int object, glm::vec3& lo, glm::vec3& hi) const {
-  const SceneObject& o = scene_.objects[size_t(object)];
+  const SceneObject& o = scene_object(object);
   if (o.shape.type == ShapeType::kMesh) {
-    const Box& box = assets_.assets()[size_t(o.shape.mesh)].box;
+    const Box& box = assets_.asset(o.shape.mesh).box;
     lo = box.min;
     hi = box.max;
     return;
@@ -200,10 +200,9 @@ void GpuScene::object_local_bounds(int object, glm::vec3& lo, glm::vec3& hi) con
 void GpuScene::object_world_bounds(int object, glm::vec3& lo, glm::vec3& hi) const {
   glm::vec3 olo, ohi;
   object_local_bounds(object, olo, ohi);
-  lo = glm::vec3(3.0e38f);
-  hi = glm::vec3(-3.0e38f);
-  grow_world_bounds(glm::mat4(object_to_world(scene_.objects[size_t(object)].transform)), olo, ohi,
-                    lo, hi);
+  lo = glm::vec3(gpu::GF_FAR);
+  hi = glm::vec3(-gpu::GF_FAR);
+  grow_world_bounds(glm::mat4(object_to_world(scene_object(object).transform)), olo, ohi, lo, hi);
 }
 
 void grow_world_bounds(const glm::mat4& to_world, glm::vec3 box_lo, glm::vec3 box_hi, glm::vec3& lo,
@@ -224,13 +223,13 @@ void set_camera_uniforms(const ShaderProgram& program, const Camera& camera, int
   const glm::vec3 up = glm::cross(right, forward);
   const float tan_half = std::tan(glm::radians(camera.fov_degrees) * 0.5f);
   const float aspect = float(width) / float(height);
-  glUniform3fv(program.uniform("u_camera_position"), 1, &camera.position.x);
-  glUniform3fv(program.uniform("u_camera_forward"), 1, &forward.x);
-  glUniform3fv(program.uniform("u_camera_right"), 1, &right.x);
-  glUniform3fv(program.uniform("u_camera_up"), 1, &up.x);
-  glUniform2f(program.uniform("u_tan_half"), tan_half * aspect, tan_half);
-  glUniform2f(program.uniform("u_image_size"), float(width), float(height));
-  glUniform2f(program.uniform("u_jitter"), jitter.x, jitter.y);
+  glUniform3fv(program.uniform_if_declared("u_camera_position"), 1, &camera.position.x);
+  glUniform3fv(program.uniform_if_declared("u_camera_forward"), 1, &forward.x);
+  glUniform3fv(program.uniform_if_declared("u_camera_right"), 1, &right.x);
+  glUniform3fv(program.uniform_if_declared("u_camera_up"), 1, &up.x);
+  glUniform2f(program.uniform_if_declared("u_tan_half"), tan_half * aspect, tan_half);
+  glUniform2f(program.uniform_if_declared("u_image_size"), float(width), float(height));
+  glUniform2f(program.uniform_if_declared("u_jitter"), jitter.x, jitter.y);
 }
 
 glm::vec2 depth_range(glm::vec3 eye, const GpuScene& scene, float edge_cosine, int skip) {

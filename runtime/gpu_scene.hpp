@@ -10,6 +10,7 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
+#include "gfield/check.hpp"
 #include "gfield/scene.hpp"
 #include "runtime/gl_object.hpp"
 #include "runtime/gpu_assets.hpp"
@@ -31,6 +32,11 @@ class GpuScene {
   /// The scene drawn; after changing objects, materials or lights call update().
   Scene& scene() { return scene_; }
   const Scene& scene() const { return scene_; }
+  /// Object k of scene() (GF_DCHECK: one of its objects).
+  const SceneObject& scene_object(int k) const {
+    GF_DCHECK(k >= 0 && size_t(k) < scene_.objects.size(), "an object outside the scene");
+    return scene_.objects[size_t(k)];
+  }
   /// Refills the objects and lights buffers from scene() (the assets stay).
   void update();
 

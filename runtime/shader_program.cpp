@@ -6,6 +6,8 @@
 #include <set>
 #include <sstream>
 
+#include "gfield/check.hpp"
+
 namespace gfield {
 namespace fs = std::filesystem;
 
@@ -165,6 +167,7 @@ bool ShaderProgram::rebuild(std::string& error) {
       glDeleteShader(shader);
   };
   std::string messages;
+  std::vector<std::string> texts;
   for (const std::string& stage : stages_) {
     const GLenum type = stage_type(stage);
     if (type == 0) {
@@ -183,6 +186,7 @@ bool ShaderProgram::rebuild(std::string& error) {
     }
     const GLuint shader = glCreateShader(type);
     shaders.push_back(shader);
+    texts.push_back(source.text);
     const char* text = source.text.c_str();
     glShaderSource(shader, 1, &text, nullptr);
     glCompileShader(shader);
@@ -204,10 +208,10 @@ bool ShaderProgram::rebuild(std::string& error) {
   cleanup();
   GLint ok = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  std::string names;
+  for (const std::string& stage : stages_)
+    names += (names.empty() ? "" : " + ") + stage;
   if (ok != GL_TRUE) {
-    std::string names;
-    for (const std::string& stage : stages_)
-      names += (names.empty() ? "" : " + ") + stage;
     error = (dir_ / names).string() + ": link failed:\n" + program_log(program);
     glDeleteProgram(program);
     return false;
@@ -215,7 +219,20 @@ bool ShaderProgram::rebuild(std::string& error) {
   if (program_ != 0)
     glDeleteProgram(program_);
   program_ = program;
+  uniforms_ = uniform_table(program, (dir_ / names).string(), texts);
   return true;
+}
+
+GLint ShaderProgram::uniform(const char* name) const {
+  const auto found = uniforms_.locations.find(name);
+  GF_CHECK(found != uniforms_.locations.end(),
+           "the shader program " + uniforms_.program + " has no uniform \"" + name + "\"");
+  return found->second;
+}
+
+GLint ShaderProgram::uniform_if_declared(const char* name) const {
+  const auto found = uniforms_.locations.find(name);
+  return found == uniforms_.locations.end() ? -1 : found->second;
 }
 
 bool ShaderProgram::reload_if_changed(std::string& error) {

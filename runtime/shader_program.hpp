@@ -2,13 +2,16 @@
 // GLSL programs built from files in shaders/: `#include "lib/x.glsl"` lines are resolved
 // against the shader folder (recursively, each file once), `#line` directives keep the
 // compiler's line numbers, and compile/link logs are rewritten to FILE:LINE. Programs can be
-// rebuilt at run time when their files change (a failed rebuild keeps the old program).
+// rebuilt at run time when their files change (a failed rebuild keeps the old program). Uniform
+// locations are looked up once, when a program links (runtime/uniform_table.hpp).
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include <epoxy/gl.h>
+
+#include "runtime/uniform_table.hpp"
 
 namespace gfield {
 
@@ -54,7 +57,13 @@ class ShaderProgram {
   bool rebuild(std::string& error);
 
   GLuint id() const { return program_; }
-  GLint uniform(const char* name) const { return glGetUniformLocation(program_, name); }
+  /// The location of uniform `name`: -1 for one a stage declares but the compiler dropped. A
+  /// name no stage declares (a typo) stops the program with a message naming the program's
+  /// stages and the uniform.
+  GLint uniform(const char* name) const;
+  /// As uniform(), but -1 for a name no stage declares: for the setters that serve every program
+  /// (GpuScene::set_uniforms, set_camera_uniforms, ...), each setting the uniforms it has.
+  GLint uniform_if_declared(const char* name) const;
 
  private:
   std::filesystem::path dir_;
@@ -62,6 +71,7 @@ class ShaderProgram {
   std::string defines_;
   std::vector<std::pair<std::filesystem::path, std::filesystem::file_time_type>> watched_;
   GLuint program_ = 0;
+  UniformTable uniforms_;
 };
 
 }  // namespace gfield

@@ -9,6 +9,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "gfield/gpu_contract.hpp"
 #include "runtime/viewer.hpp"
 #include "runtime/viewer_state.hpp"
 
@@ -52,11 +53,11 @@ std::optional<MethodOption> option_named(ViewSession& session, const std::string
 /// The object whose world bounds the ray enters first (a cheap pick), or -1.
 int pick(const GpuScene& scene, glm::vec3 origin, glm::vec3 direction) {
   int best = -1;
-  float best_t = 3.0e38f;
+  float best_t = gpu::GF_FAR;
   for (int k = 0; k < int(scene.scene().objects.size()); ++k) {
     glm::vec3 lo, hi;
     scene.object_world_bounds(k, lo, hi);
-    float t0 = 0.0f, t1 = 3.0e38f;
+    float t0 = 0.0f, t1 = gpu::GF_FAR;
     bool hit = true;
     for (int a = 0; a < 3 && hit; ++a) {
       const float inv = 1.0f / direction[a];

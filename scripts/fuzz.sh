@@ -20,8 +20,8 @@ cmake -S . -B build-fuzz -G Ninja -DGFIELD_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDeb
 cmake --build build-fuzz -j "${GFIELD_JOBS:-2}"
 
 targets=("$@")
-if [ ${#targets[@]} -eq 0 ]; then
-  targets=(mesh_obj mesh_ply mesh_off mesh_stl mesh_gltf mesh_glb scene gimage gfield gimage_obj)
+if [ ${#targets[@]} -eq 0 ]; then  # every target: one per seed folder (tests/fuzz/CMakeLists.txt)
+  mapfile -t targets < <(ls tests/fuzz/corpus)
 fi
 corpus_root=${GFIELD_FUZZ_CORPUS:-}
 if [ -z "$corpus_root" ]; then

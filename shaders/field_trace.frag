@@ -59,7 +59,7 @@ void push_ray(SceneHit hit, vec3 g, vec3 direction, vec3 weight, int depth, int 
   r.origin = hit.position + object_epsilon(hit.object, false, hit.position) * g;
   r.direction = normalize(direction);
   r.weight = weight;
-  r.t_max = 3.0e38f;
+  r.t_max = GF_FAR;
   r.shadow = false;
   r.depth = depth;
   r.inside = inside;
@@ -134,7 +134,7 @@ void main() {
   camera.origin = u_camera_position;
   camera.direction = camera_direction();
   camera.weight = vec3(1.0f);
-  camera.t_max = 3.0e38f;
+  camera.t_max = GF_FAR;
   camera.shadow = false;
   camera.depth = 0;
   camera.inside = -1;

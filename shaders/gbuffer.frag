@@ -42,7 +42,7 @@ void main() {
     vec3 d = normalize(v_position - u_camera_position);
     vec3 lo = (u_to_object * vec4(u_camera_position, 1.0f)).xyz;
     vec3 ld = (u_to_object * vec4(d, 0.0f)).xyz;
-    ShapeHit h = intersect_shape(u_shape, u_shape_params, u_shape_size, lo, ld, 0.0f, 3.0e38f);
+    ShapeHit h = intersect_shape(u_shape, u_shape_params, u_shape_size, lo, ld, 0.0f, GF_FAR);
     if (!h.hit) discard;
     position = u_camera_position + h.t * d;
     normal = normalize(transpose(mat3(u_to_object)) * h.normal);

@@ -13,14 +13,9 @@
 #include "lib/glass_shading.glsl"
 #include "lib/camera.glsl"
 
-#define GLASS_LAYERS 4
-#define GLASS_CLASSES 8
-
-// Peeled layers: x code (-1: none), y depth.
-layout(binding = UNIT_PEEL_LAYERS + 0) uniform sampler2D u_layer0;
-layout(binding = UNIT_PEEL_LAYERS + 1) uniform sampler2D u_layer1;
-layout(binding = UNIT_PEEL_LAYERS + 2) uniform sampler2D u_layer2;
-layout(binding = UNIT_PEEL_LAYERS + 3) uniform sampler2D u_layer3;
+// Peeled layers (GLASS_LAYERS of the contract, in units UNIT_PEEL_LAYERS + k): x code (-1:
+// none), y depth.
+layout(binding = UNIT_PEEL_LAYERS) uniform sampler2D u_layers[GLASS_LAYERS];
 // rgb radiance, a depth (2: none)
 layout(binding = UNIT_CLASS_IMAGES) uniform sampler2DArray u_class_images;
 
@@ -96,7 +91,7 @@ bool path_matches(int cls, int in_front, vec3 o, vec3 d) {
     vec3 lo = (u_glass_to_object * vec4(o, 1.0f)).xyz;
     vec3 ld = (u_glass_to_object * vec4(d, 0.0f)).xyz;
     ShapeHit h = intersect_shape(u_glass_shape, u_glass_params, u_glass_size, lo, ld, u_epsilon,
-                                 3.0e38f);
+                                 GF_FAR);
     if (!h.hit) return false;
     vec3 p = o + h.t * d;
     vec3 n = normalize(transpose(mat3(u_glass_to_object)) * h.normal);
@@ -281,10 +276,10 @@ vec3 glass_exit_radiance(vec3 origin, vec3 direction, bool inside_glass, int dep
     vec3 lo = (u_glass_to_object * vec4(o, 1.0f)).xyz;
     vec3 ld = (u_glass_to_object * vec4(d, 0.0f)).xyz;
     ShapeHit h = intersect_shape(u_glass_shape, u_glass_params, u_glass_size, lo, ld, u_epsilon,
-                                 3.0e38f);
+                                 GF_FAR);
     float t_hit;
     vec3 hit_radiance;
-    if (scene_hit(o, d, h.hit ? h.t : 3.0e38f, inside, t_hit, hit_radiance)) {
+    if (scene_hit(o, d, h.hit ? h.t : GF_FAR, inside, t_hit, hit_radiance)) {
       if (inside) tint *= exp(-u_absorption * t_hit);
       sum += tint * hit_radiance;
       continue;
@@ -328,13 +323,10 @@ vec3 glass_exit_radiance(vec3 origin, vec3 direction, bool inside_glass, int dep
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 layers[GLASS_LAYERS];
-  layers[0] = texelFetch(u_layer0, pixel, 0);
-  layers[1] = texelFetch(u_layer1, pixel, 0);
-  layers[2] = texelFetch(u_layer2, pixel, 0);
-  layers[3] = texelFetch(u_layer3, pixel, 0);
   int codes[GLASS_LAYERS];
   int count = 0;
   for (int k = 0; k < GLASS_LAYERS; k++) {
+    layers[k] = texelFetch(u_layers[k], pixel, 0);
     codes[k] = int(layers[k].x + 0.5f);
     if (layers[k].x >= 0.0f && count == k) count++;
   }
@@ -369,12 +361,12 @@ void main() {
     vec3 lo = (u_glass_to_object * vec4(o, 1.0f)).xyz;
     vec3 ld = (u_glass_to_object * vec4(d, 0.0f)).xyz;
     ShapeHit h = intersect_shape(u_glass_shape, u_glass_params, u_glass_size, lo, ld, u_epsilon,
-                                 3.0e38f);
+                                 GF_FAR);
     if (traced) {
       // An opaque shape before the next glass surface ends the traced path.
       float t_hit;
       vec3 hit_radiance;
-      if (scene_hit(o, d, h.hit ? h.t : 3.0e38f, inside, t_hit, hit_radiance)) {
+      if (scene_hit(o, d, h.hit ? h.t : GF_FAR, inside, t_hit, hit_radiance)) {
         if (inside) transmittance *= exp(-u_absorption * t_hit);
         ended = transmittance * hit_radiance;
         inside = false;

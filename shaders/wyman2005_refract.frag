@@ -38,7 +38,7 @@ void main() {
   }
   float d_n = v_thickness;
   if (objects[k].kind.x != SHAPE_MESH) {
-    ShapeHit h = is_intersect_analytic(k, s.position, -n1, u_offset, 3.0e38f);
+    ShapeHit h = is_intersect_analytic(k, s.position, -n1, u_offset, GF_FAR);
     d_n = h.hit ? h.t : 0.0f;
   }
   ivec2 size = textureSize(u_back, 0);

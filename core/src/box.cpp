@@ -38,10 +38,6 @@ glm::vec3 direction_to_unit_cube(const Box& box, glm::vec3 d) {
   return d / extent(box);
 }
 
-glm::vec3 direction_from_unit_cube(const Box& box, glm::vec3 d) {
-  return d * extent(box);
-}
-
 float diagonal(const Box& box) {
   return glm::length(extent(box));
 }

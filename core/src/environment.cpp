@@ -7,6 +7,7 @@
 namespace gfield {
 namespace glsl {
 using namespace glm;
+using namespace gfield::gpu;  // GF_PI
 #include "../../shaders/lib/environment.glsl"
 }  // namespace glsl
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "gfield/check.hpp"
 #include "gfield/gpu_contract.hpp"
 
 namespace gfield {
@@ -16,10 +17,16 @@ struct GlslFieldLines {
   const GeometryField& field;
   int gf_samples_per_side() const { return field.samples_per_side; }
   vec2 gf_field_nearest_texel(int entry, int column) const {
-    return field.nearest[size_t(entry) * size_t(field_columns(field)) + size_t(column)];
+    return field.nearest[field_nearest_index(field, entry, column)];
   }
-  uint gf_field_word(int i) const { return field.lines[size_t(i)]; }
-  vec2 gf_field_interior_texel(int i) const { return field.interior[size_t(i)]; }
+  uint gf_field_word(int i) const {
+    GF_DCHECK(i >= 0 && size_t(i) < field.lines.size(), "word outside the line table");
+    return field.lines[size_t(i)];
+  }
+  vec2 gf_field_interior_texel(int i) const {
+    GF_DCHECK(i >= 0 && size_t(i) < field.interior.size(), "interior hit outside the field's");
+    return field.interior[size_t(i)];
+  }
 #include "../../shaders/lib/field_lines.glsl"
 };
 
@@ -51,6 +58,8 @@ struct TileRecord {
 
 /// The 16-bit entry of a line: its count and its interior hits' offset within the tile.
 uint32_t line_entry(int count, uint32_t offset) {
+  // A tile's 64 lines hold at most 64 * (kMaxLineHits - 2) interior hits: 12 bits of offset.
+  GF_CHECK(count >= 1 && count <= kMaxLineHits && offset < 4096u, "a line entry out of its bits");
   return uint32_t(count) | (offset << 4);
 }
 
@@ -175,6 +184,9 @@ bool check_record(const GeometryField& field, int tile, size_t w, uint32_t entri
 
 glm::vec2 field_uv(const GeometryField& field, int entry, int exit, int layer) {
   const int n = field.samples_per_side;
+  GF_DCHECK(entry >= 0 && entry < field_side(field) && exit >= 0 && exit < field_side(field) &&
+                layer >= 0,
+            "entry or exit outside the field, or a negative layer");
   if (face_of(n, entry) == face_of(n, exit)) {
     return glm::vec2(kFieldNoRay);
   }
@@ -197,11 +209,10 @@ void reset_field_tables(GeometryField& field) {
 void store_line(GeometryField& field, int low, int high, const LineHits& hits,
                 std::vector<TableLine>& table_lines) {
   const int n = field.samples_per_side;
-  const size_t columns = size_t(field_columns(field));
   const int column = field_column(n, low, high);
   const bool hit = hits.count > 0;
-  field.nearest[size_t(low) * columns + size_t(column)] = hit ? hits.uv[0] : glm::vec2(kFieldMiss);
-  field.nearest[size_t(high) * columns + size_t(field_column(n, high, low))] =
+  field.nearest[field_nearest_index(field, low, column)] = hit ? hits.uv[0] : glm::vec2(kFieldMiss);
+  field.nearest[field_nearest_index(field, high, field_column(n, high, low))] =
       hit ? hits.uv[size_t(hits.count - 1)] : glm::vec2(kFieldMiss);
   if (hits.count == 0 || hits.count == 2) {
     return;
@@ -342,7 +353,6 @@ bool check_field_tables(const GeometryField& field, std::string& why) {
 void compact_layered_table(const std::vector<glm::vec2>& table, int layers, GeometryField& field) {
   const int n = field.samples_per_side;
   const size_t side = size_t(sample_count(n));
-  const size_t columns = size_t(field_columns(field));
   reset_field_tables(field);
   std::vector<TableLine> table_lines;
   for (size_t low = 0; low < side; ++low) {
@@ -355,9 +365,9 @@ void compact_layered_table(const std::vector<glm::vec2>& table, int layers, Geom
       store_line(field, int(low), int(high), hits, table_lines);
       // The nearest hits as the table holds them (a line may hit from one end only).
       const glm::vec2 a = table[low * side + high], b = table[high * side + low];
-      field.nearest[low * columns + size_t(field_column(n, int(low), int(high)))] =
+      field.nearest[field_nearest_index(field, int(low), field_column(n, int(low), int(high)))] =
           a.x < 0.0f ? glm::vec2(kFieldMiss) : a;
-      field.nearest[high * columns + size_t(field_column(n, int(high), int(low)))] =
+      field.nearest[field_nearest_index(field, int(high), field_column(n, int(high), int(low)))] =
           b.x < 0.0f ? glm::vec2(kFieldMiss) : b;
     }
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "gfield/build_id.hpp"
+#include "gfield/check.hpp"
 #include "gfield/gpu_contract.hpp"
 #include "gfield/printable.hpp"
 
@@ -23,10 +24,16 @@ struct GlslFieldLookup {
   int gf_samples_per_side() const { return field.samples_per_side; }
   int gf_field_layers() const { return layers; }
   vec2 gf_field_nearest_texel(int entry, int column) const {
-    return field.nearest[size_t(entry) * size_t(field_columns(field)) + size_t(column)];
+    return field.nearest[field_nearest_index(field, entry, column)];
   }
-  uint gf_field_word(int i) const { return field.lines[size_t(i)]; }
-  vec2 gf_field_interior_texel(int i) const { return field.interior[size_t(i)]; }
+  uint gf_field_word(int i) const {
+    GF_DCHECK(i >= 0 && size_t(i) < field.lines.size(), "word outside the line table");
+    return field.lines[size_t(i)];
+  }
+  vec2 gf_field_interior_texel(int i) const {
+    GF_DCHECK(i >= 0 && size_t(i) < field.interior.size(), "interior hit outside the field's");
+    return field.interior[size_t(i)];
+  }
   int gf_image_size() const { return image.size; }
   vec3 gf_image_position_texel(int i, int j) const {
     return image.position[texel_index(image, i, j)];

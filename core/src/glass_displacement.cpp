@@ -2,10 +2,13 @@
 
 #include <cmath>
 
+#include "gfield/gpu_contract.hpp"
+
 // shaders/lib/glass_displacement.glsl compiled as C++ (outside namespace gfield, whose own
 // refract/reflect would hide GLM's).
 namespace gfield_glass_glsl {
-using namespace glm;  // the GLSL vocabulary of glass_displacement.glsl
+using namespace glm;          // the GLSL vocabulary of glass_displacement.glsl
+using namespace gfield::gpu;  // and the contract's GF_FAR
 #include "../../shaders/lib/glass_displacement.glsl"
 }  // namespace gfield_glass_glsl
 
@@ -19,22 +22,6 @@ float plate_incidence_sine(float x, float y, float thickness, float ior) {
 glm::vec3 plate_displace(const GlassPlate& plate, glm::vec3 eye, glm::vec3 vertex) {
   return glsl::gd_plate_displace(eye, vertex, plate.centre, glm::normalize(plate.normal),
                                  plate.thickness, plate.ior);
-}
-
-CylinderPathPoints cylinder_path(const GlassCylinder& cylinder, CylinderPath path, glm::vec3 eye,
-                                 glm::vec3 vertex) {
-  const glsl::GdPath p =
-      glsl::gd_solve(glsl::gd_cylinder_glass(int(path), cylinder.outer_radius,
-                                             cylinder.inner_radius, cylinder.ior),
-                     eye, vertex);
-  CylinderPathPoints out;
-  out.valid = p.valid;
-  out.count = p.count;
-  for (int k = 0; k < 4; ++k)
-    out.points[size_t(k)] = p.point[k];
-  for (int k = 0; k < 5; ++k)
-    out.directions[size_t(k)] = p.dir[k];
-  return out;
 }
 
 bool cylinder_displace(const GlassCylinder& cylinder, CylinderPath path, glm::vec3 eye,

@@ -16,12 +16,12 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
-#include <filesystem>
 #include <limits>
 #include <memory>
 
 #include "exr_input.hpp"
 #include "gfield/atomic_file.hpp"
+#include "gfield/file_extension.hpp"
 #include "gfield/file_read.hpp"
 #include "gfield/image.hpp"
 #include "gfield/limits.hpp"
@@ -39,13 +39,6 @@ bool check_pixel_count(const std::string& filename, int width, int height, std::
     return false;
   }
   return true;
-}
-
-std::string lower_extension(const std::string& filename) {
-  std::string ext = std::filesystem::path(filename).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext;
 }
 
 /// The data window's size of an EXR picture, checked as load_exr checks it.

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <utility>
+
+#include "gfield/file_extension.hpp"
 
 namespace gfield {
 namespace {
@@ -79,9 +79,7 @@ Image clamped_to_display(Image image) {
 }
 
 bool is_display_image_file(const std::string& filename) {
-  std::string ext = std::filesystem::path(filename).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = lower_extension(filename);
   return ext == ".png" || ext == ".jpg" || ext == ".jpeg";
 }
 

@@ -7,6 +7,10 @@
 #include <string>
 
 namespace gfield {
+namespace glsl {
+using namespace glm;  // the GLSL vocabulary of optics.glsl
+#include "../../shaders/lib/optics.glsl"
+}  // namespace glsl
 
 glm::vec3 reflect(glm::vec3 incident, glm::vec3 normal) {
   return incident - 2.0f * glm::dot(normal, incident) * normal;
@@ -35,16 +39,7 @@ bool total_internal_reflection(float cos_i, float n1, float n2) {
 }
 
 float fresnel_dielectric(float cos_i, float n1, float n2) {
-  cos_i = std::clamp(cos_i, 0.0f, 1.0f);
-  const float eta = n1 / n2;
-  const float sin2_t = eta * eta * (1.0f - cos_i * cos_i);
-  if (sin2_t >= 1.0f) {
-    return 1.0f;
-  }
-  const float cos_t = std::sqrt(1.0f - sin2_t);
-  const float rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
-  const float rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
-  return 0.5f * (rs * rs + rp * rp);
+  return glsl::fresnel_dielectric(cos_i, n1, n2);
 }
 
 float fresnel_schlick(float cos_i, float n1, float n2) {

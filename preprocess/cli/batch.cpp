@@ -236,7 +236,8 @@ void add_batch_command(CLI::App& app) {
       "DIR/manifest-I-of-N.jsonl, and exits with an error listing the failed meshes at the end.\n"
       "--summary DIR merges the manifests of all tasks into one table.");
   auto args = std::make_shared<BatchArguments>();
-  cmd->add_option("INPUT", args->inputs, "folders, mesh files or .txt lists");
+  cmd->add_option("INPUT", args->inputs,
+                  "folders (their " + batch_extension_list() + " files), mesh files or .txt lists");
   cmd->add_option("-o,--output", args->dir, "output folder");
   cmd->add_option("--shard", args->shard, "build only shard I of N (0 <= I < N), e.g. 2/8");
   cmd->add_option("--threads", args->threads, "threads of this task (0: all cores)")

@@ -26,7 +26,7 @@ void add_build_command(CLI::App& app) {
   auto part = std::make_shared<std::string>();
   auto args = std::make_shared<AssetArguments>();
   auto json = std::make_shared<bool>(false);
-  cmd->add_option("MESH", *mesh, "mesh file (.obj, .ply, .off, .stl, .gltf, .glb)")->required();
+  cmd->add_option("MESH", *mesh, mesh_file_help())->required();
   cmd->add_option("--mesh", *part,
                   "glTF: the mesh NAME (or #INDEX) to build (default: every primitive of the "
                   "file's scene, placed by its nodes, as one mesh)");

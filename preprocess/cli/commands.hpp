@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/mesh_formats.hpp"
 #include "gfield/printable.hpp"
 
 namespace CLI {
@@ -25,6 +26,12 @@ inline void print_warnings(const std::vector<std::string>& warnings) {
   for (const std::string& w : warnings) {
     std::fprintf(stderr, "gfield: warning: %s\n", printable(w).c_str());
   }
+}
+
+/// The help of a MESH argument: "mesh file (.obj, .ply, ...)", every format
+/// (geometry/mesh_formats.hpp).
+inline std::string mesh_file_help() {
+  return "mesh file (" + mesh_extension_list() + ")";
 }
 
 void add_info_command(CLI::App& app);

@@ -34,8 +34,7 @@ struct ImageArguments {
 
 /// The options of `gfield image`, bound to `args`.
 void add_image_options(CLI::App* cmd, const std::shared_ptr<ImageArguments>& args) {
-  cmd->add_option("MESH", args->mesh, "mesh file (.obj, .ply, .off, .stl, .gltf, .glb)")
-      ->required();
+  cmd->add_option("MESH", args->mesh, mesh_file_help())->required();
   cmd->add_option("--mesh", args->part,
                   "glTF: the mesh NAME (or #INDEX) (default: every primitive of the file's "
                   "scene, placed by its nodes, as one mesh)");

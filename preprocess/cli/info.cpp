@@ -39,8 +39,7 @@ void add_info_command(CLI::App& app) {
   auto part = std::make_shared<std::string>();
   auto as_json = std::make_shared<bool>(false);
   auto allow_outside = std::make_shared<bool>(false);
-  cmd->add_option("MESH", *mesh_path, "mesh file (.obj, .ply, .off, .stl, .gltf, .glb)")
-      ->required();
+  cmd->add_option("MESH", *mesh_path, mesh_file_help())->required();
   cmd->add_option("--mesh", *part, "glTF: the mesh NAME (or #INDEX) (default: the whole scene)");
   cmd->add_flag("--json", *as_json, "print the report as JSON on stdout");
   add_outside_paths_option(cmd, *allow_outside);

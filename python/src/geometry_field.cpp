@@ -99,8 +99,8 @@ py::dict lookup_rays(const FieldAsset& asset, const py::object& origins,
   float* uv_out = uv.mutable_data();
   const FieldLookup& lookup = asset.lookup;
   for_each_ray(rays.count, [&](size_t i) {
-    const FieldHit h = lookup_first_hit(
-        lookup, Ray{rays.origin(i), rays.direction(i), rays.start(i), 3.0e38f}, mode);
+    const FieldHit h =
+        lookup_first_hit(lookup, Ray{rays.origin(i), rays.direction(i), rays.start(i)}, mode);
     hit_out[i] = h.hit;
     t_out[i] = h.t;
     distance_out[i] = h.distance;

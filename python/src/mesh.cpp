@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "geometry/mesh_appearance.hpp"
+#include "geometry/mesh_formats.hpp"
 #include "geometry/mesh_io.hpp"
 #include "gfield/field_lookup.hpp"
 #include "gfield/printable.hpp"
@@ -219,14 +220,17 @@ void bind_mesh_class(py::module_& m) {
 
 void bind_mesh(py::module_& m) {
   bind_mesh_class(m);
+  // The formats of geometry/mesh_formats.hpp (static: the docstring outlives this call).
+  static const std::string load_mesh_doc =
+      "Reads a mesh file (" + mesh_extension_list() +
+      ") as `gfield info` reads it.\n\n"
+      "mesh: glTF only, the mesh NAME or #INDEX ('' : every primitive of the file's scene,\n"
+      "placed by its nodes). allow_outside_paths: read files the mesh names outside its\n"
+      "folder (material libraries, glTF buffers and images). Textures are checked through\n"
+      "their headers, not decoded. Raises gfield.Error with the reader's one-line message\n"
+      "(FILE[:LINE]: problem) for bad input.";
   m.def("load_mesh", &load, py::arg("path"), py::kw_only(), py::arg("mesh") = "",
-        py::arg("allow_outside_paths") = false,
-        "Reads a mesh file (.obj, .ply, .off, .stl, .gltf, .glb) as `gfield info` reads it.\n\n"
-        "mesh: glTF only, the mesh NAME or #INDEX ('' : every primitive of the file's scene,\n"
-        "placed by its nodes). allow_outside_paths: read files the mesh names outside its\n"
-        "folder (material libraries, glTF buffers and images). Textures are checked through\n"
-        "their headers, not decoded. Raises gfield.Error with the reader's one-line message\n"
-        "(FILE[:LINE]: problem) for bad input.");
+        py::arg("allow_outside_paths") = false, load_mesh_doc.c_str());
   m.def("info", &info, py::arg("path"), py::kw_only(), py::arg("mesh") = "",
         py::arg("allow_outside_paths") = false,
         "The topology report of a mesh file: the dict `gfield info --json` prints (vertices,\n"

@@ -35,7 +35,7 @@ bool CubeMapMethod::load(GpuScene& scene, const std::filesystem::path& shader_di
 }
 
 bool CubeMapMethod::uses_cube(int object) const {
-  const Material& m = passes_.scene().scene().objects[size_t(object)].material;
+  const Material& m = passes_.scene().scene_object(object).material;
   return m.type == MaterialType::kDielectric || m.type == MaterialType::kMirror;
 }
 

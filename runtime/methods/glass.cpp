@@ -12,11 +12,6 @@
 #include "gfield/stopwatch.hpp"
 
 namespace gfield {
-namespace {
-
-constexpr int kShadowedLights = 4;  // GLASS_SHADOWED_LIGHTS of shaders/lib/glass_shading.glsl
-
-}  // namespace
 
 MethodInfo GlassMethod::info() const {
   return {"glass", "glass by vertex displacement (Mukai et al. 2013)"};
@@ -99,7 +94,7 @@ bool GlassMethod::load(GpuScene& scene, const std::filesystem::path& shader_dir,
       !shadow_program_.build(shader_dir, {"glass_shadow.vert", "glass_shadow.frag"}, "", error) ||
       !composite_program_.build(shader_dir, {"fullscreen.vert", "glass_composite.frag"}, "", error))
     return false;
-  const int lights = std::max(1, std::min(int(s.lights.size()), kShadowedLights));
+  const int lights = std::max(1, std::min(int(s.lights.size()), gpu::GLASS_SHADOWED_LIGHTS));
   shadow_maps_.make(GL_TEXTURE_2D_ARRAY);
   const GLuint maps = shadow_maps_.id();
   glTextureStorage3D(maps, 1, GL_DEPTH_COMPONENT32F, settings_.shadow_map_size,
@@ -122,7 +117,7 @@ void GlassMethod::update_geometry() {
   for (const SceneObject& o : scene.objects) {
     const glm::mat4 to_world(object_to_world(o.transform));
     if (o.shape.type == ShapeType::kMesh) {
-      const Box& b = scene_->assets().assets()[size_t(o.shape.mesh)].mesh_bounds;
+      const Box& b = scene_->assets().asset(o.shape.mesh).mesh_bounds;
       grow_world_bounds(to_world, b.min, b.max, lo_, hi_);
     } else {
       glm::dvec3 olo, ohi;
@@ -162,9 +157,8 @@ long long GlassMethod::vertex_count() const {
     const SceneObject& o = scene.objects[k];
     if (int(k) == glass_object_)
       continue;
-    n += o.shape.type == ShapeType::kMesh
-             ? scene_->assets().assets()[size_t(o.shape.mesh)].source.vertex_count
-             : tessellated_[k].vertex_count;
+    n += o.shape.type == ShapeType::kMesh ? scene_->assets().asset(o.shape.mesh).source.vertex_count
+                                          : tessellated_[k].vertex_count;
   }
   return n;
 }
@@ -175,7 +169,7 @@ void GlassMethod::draw_opaque(const ShaderProgram& program) const {
     if (k == glass_object_)
       continue;
     const SceneObject& o = scene.objects[size_t(k)];
-    glUniform1i(program.uniform("u_smooth"),
+    glUniform1i(program.uniform_if_declared("u_smooth"),  // the scene pass's, not the shadows'
                 o.shape.type != ShapeType::kMesh || o.shape.smooth_normals ? 1 : 0);
     if (o.shape.type == ShapeType::kMesh) {
       scene_->draw_object(program, k, RasterMesh::kSource);
@@ -187,7 +181,7 @@ void GlassMethod::draw_opaque(const ShaderProgram& program) const {
 }
 
 void GlassMethod::render_shadow_maps() {
-  light_view_projection_.assign(kShadowedLights, glm::mat4(1.0f));
+  light_view_projection_.assign(gpu::GLASS_SHADOWED_LIGHTS, glm::mat4(1.0f));
   const glm::vec3 centre = 0.5f * (lo_ + hi_);
   const float radius = 0.5f * glm::length(hi_ - lo_) + 1e-3f;
   glBindFramebuffer(GL_FRAMEBUFFER, shadow_framebuffer_.id());
@@ -200,7 +194,7 @@ void GlassMethod::render_shadow_maps() {
   glPolygonOffset(2.0f, 4.0f);
   glUseProgram(shadow_program_.id());
   const Scene& scene = scene_->scene();
-  for (size_t i = 0; i < scene.lights.size() && i < size_t(kShadowedLights); ++i) {
+  for (size_t i = 0; i < scene.lights.size() && i < size_t(gpu::GLASS_SHADOWED_LIGHTS); ++i) {
     const Light& light = scene.lights[i];
     if (light.type != LightType::kDirectional)
       continue;
@@ -222,8 +216,8 @@ void GlassMethod::render_shadow_maps() {
 
 void GlassMethod::set_light_uniforms(const ShaderProgram& program) const {
   scene_->set_uniforms(program);
-  glUniformMatrix4fv(program.uniform("u_light_view_projection"), kShadowedLights, GL_FALSE,
-                     glm::value_ptr(light_view_projection_[0]));
+  glUniformMatrix4fv(program.uniform("u_light_view_projection"), gpu::GLASS_SHADOWED_LIGHTS,
+                     GL_FALSE, glm::value_ptr(light_view_projection_[0]));
   glBindTextureUnit(gpu::UNIT_SHADOW_MAPS, shadow_maps_.id());
 }
 
@@ -251,7 +245,7 @@ void GlassMethod::peel(const glm::mat4& view_projection, int width, int height) 
   glBindVertexArray(glass_vertex_array_.id());
   glBindTextureUnit(gpu::UNIT_CLASS_IMAGES, class_images_.images.id());
   const float no_layer[4] = {-1.0f, 2.0f, 0.0f, 0.0f};
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < gpu::GLASS_LAYERS; ++k) {
     layers_[k].resize(width, height, {GL_RGBA32F}, GL_DEPTH_COMPONENT32F);
     layers_[k].bind();
     glClearBufferfv(GL_COLOR, 0, no_layer);
@@ -266,7 +260,7 @@ void GlassMethod::peel(const glm::mat4& view_projection, int width, int height) 
 }
 
 void GlassMethod::set_class_uniforms(int refraction_class) {
-  const SceneObject& glass = scene_->scene().objects[size_t(glass_object_)];
+  const SceneObject& glass = scene_->scene_object(glass_object_);
   const auto u = [&](const char* name) { return scene_program_.uniform(name); };
   int kind = 0;
   if (refraction_class >= 1 && refraction_class <= 3) {
@@ -284,7 +278,7 @@ void GlassMethod::set_class_uniforms(int refraction_class) {
 
 void GlassMethod::draw_class_images(const Camera& camera, const std::vector<int>& classes,
                                     const glm::mat4& view_projection, int layer_of_class[]) {
-  const SceneObject& glass = scene_->scene().objects[size_t(glass_object_)];
+  const SceneObject& glass = scene_->scene_object(glass_object_);
   const int width = class_images_.width, height = class_images_.height;
   const auto u = [&](const char* name) { return scene_program_.uniform(name); };
   glUseProgram(scene_program_.id());
@@ -331,13 +325,13 @@ void GlassMethod::draw_class_images(const Camera& camera, const std::vector<int>
 
 void GlassMethod::composite(const Camera& camera, Framebuffer& target, glm::vec2 jitter,
                             const CameraFrustum& frustum, const int layer_of_class[]) {
-  const SceneObject& glass = scene_->scene().objects[size_t(glass_object_)];
+  const SceneObject& glass = scene_->scene_object(glass_object_);
   target.bind();
   glDisable(GL_DEPTH_TEST);
   const ShaderProgram& p = composite_program_;
   glUseProgram(p.id());
   const auto u = [&](const char* name) { return p.uniform(name); };
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < gpu::GLASS_LAYERS; ++k)
     glBindTextureUnit(GLuint(gpu::UNIT_PEEL_LAYERS + k), layers_[k].texture(0));
   glBindTextureUnit(gpu::UNIT_CLASS_IMAGES, class_images_.images.id());
   scene_->bind();
@@ -372,7 +366,7 @@ void GlassMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 ji
   const Stopwatch clock;
   timed_ = stats != nullptr;
   const int width = target.width(), height = target.height();
-  const SceneObject& glass = scene_->scene().objects[size_t(glass_object_)];
+  const SceneObject& glass = scene_->scene_object(glass_object_);
   const std::vector<int> classes =
       classes_present(glass, camera, float(width) / float(height), settings_.trace_verge);
   class_images_.ensure(width, height, int(classes.size()));

@@ -18,6 +18,7 @@
 
 #include <glm/glm.hpp>
 
+#include "gfield/gpu_contract.hpp"
 #include "runtime/method.hpp"
 #include "runtime/methods/glass_geometry.hpp"
 #include "runtime/render_target.hpp"
@@ -93,7 +94,7 @@ class GlassMethod : public Method {
   ShaderProgram scene_program_;
   ShaderProgram shadow_program_;
   ShaderProgram composite_program_;
-  RenderTarget layers_[4];
+  RenderTarget layers_[gpu::GLASS_LAYERS];  ///< the peeled glass surfaces
   ClassImages class_images_;
   bool timed_ = false;    ///< the frame being drawn is timed (glFinish between passes)
   double peel_ms_ = 0.0;  ///< of the last timed frame

@@ -5,11 +5,10 @@
 #include <set>
 
 #include "geometry/analytic_primitives.hpp"
+#include "gfield/gpu_contract.hpp"
 
 namespace gfield {
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 int segments(float length, float max_edge) {
   return std::clamp(int(std::ceil(length / max_edge)), 1, 2048);
@@ -70,9 +69,9 @@ bool tessellate(const Shape& shape, float max_edge, TriangleSoup& soup) {
       return true;
     case ShapeType::kSphere: {
       const float r = shape.radius;
-      add_grid(soup, segments(2.0f * kPi * r, max_edge), segments(kPi * r, max_edge),
+      add_grid(soup, segments(2.0f * gpu::GF_PI * r, max_edge), segments(gpu::GF_PI * r, max_edge),
                [&](float u, float v) {
-                 const float a = 2.0f * kPi * (u - 0.5f), e = kPi * (v - 0.5f);
+                 const float a = 2.0f * gpu::GF_PI * (u - 0.5f), e = gpu::GF_PI * (v - 0.5f);
                  const glm::vec3 n(std::cos(e) * std::sin(a), std::sin(e),
                                    std::cos(e) * std::cos(a));
                  return GpuVertex{r * n, n, {u, v}};
@@ -81,16 +80,16 @@ bool tessellate(const Shape& shape, float max_edge, TriangleSoup& soup) {
     }
     case ShapeType::kCylinder: {
       const float r = shape.radius, h = shape.height;
-      add_grid(soup, segments(2.0f * kPi * r, max_edge), segments(h, max_edge),
+      add_grid(soup, segments(2.0f * gpu::GF_PI * r, max_edge), segments(h, max_edge),
                [&](float u, float v) {
-                 const float a = 2.0f * kPi * (u - 0.5f);
+                 const float a = 2.0f * gpu::GF_PI * (u - 0.5f);
                  const glm::vec3 n(std::sin(a), 0.0f, std::cos(a));
                  return GpuVertex{{r * n.x, (v - 0.5f) * h, r * n.z}, n, {u, v}};
                });
       for (const float side : {-1.0f, 1.0f}) {
-        add_grid(soup, segments(2.0f * kPi * r, max_edge), segments(r, max_edge),
+        add_grid(soup, segments(2.0f * gpu::GF_PI * r, max_edge), segments(r, max_edge),
                  [&](float u, float v) {
-                   const float a = 2.0f * kPi * (u - 0.5f);
+                   const float a = 2.0f * gpu::GF_PI * (u - 0.5f);
                    const glm::vec3 p(v * r * std::sin(a), side * 0.5f * h, v * r * std::cos(a));
                    return GpuVertex{
                        p, {0.0f, side, 0.0f}, {p.x / (2.0f * r) + 0.5f, p.z / (2.0f * r) + 0.5f}};
@@ -145,7 +144,8 @@ GlassSoup glass_triangles(const SceneObject& object) {
   const int n = 256;
   const float outer = s.radius, inner = s.radius - s.thickness, h = 0.5f * s.height;
   for (int i = 0; i < n; ++i) {
-    const float a0 = 2.0f * kPi * float(i) / float(n), a1 = 2.0f * kPi * float(i + 1) / float(n);
+    const float a0 = 2.0f * gpu::GF_PI * float(i) / float(n),
+                a1 = 2.0f * gpu::GF_PI * float(i + 1) / float(n);
     const glm::vec3 r0(std::sin(a0), 0.0f, std::cos(a0)), r1(std::sin(a1), 0.0f, std::cos(a1));
     const glm::vec3 mid = normal_to_world * glm::normalize(r0 + r1);
     for (int wall = 0; wall < 2; ++wall) {

@@ -8,14 +8,16 @@
 #include <glm/glm.hpp>
 
 #include "gfield/glass_displacement.hpp"
+#include "gfield/gpu_contract.hpp"
 #include "gfield/scene.hpp"
 #include "runtime/gpu_assets.hpp"
 
 namespace gfield {
 
 /// Refraction classes: 0 none; slab: 1 + the face pair (Z, X, Y) the line enters; hollow
-/// cylinder: 4 + GD_PATH_* (both walls, verge, front wall, back wall).
-inline constexpr int kGlassClasses = 8;
+/// cylinder: 4 + GD_PATH_* (both walls, verge, front wall, back wall). The contract's
+/// GLASS_CLASSES.
+inline constexpr int kGlassClasses = gpu::GLASS_CLASSES;
 
 /// Triangles in object space.
 struct TriangleSoup {

@@ -71,7 +71,7 @@ bool ImageSpacePasses::check_thickness_maps(std::string& error) const {
 
 glm::vec2 ImageSpacePasses::eye_depth_range(const ImageSpaceView& view, bool dielectrics) const {
   const Scene& scene = scene_->scene();
-  glm::vec2 range(3.0e38f, -3.0e38f);
+  glm::vec2 range(gpu::GF_FAR, -gpu::GF_FAR);
   for (int k = 0; k < int(scene.objects.size()); ++k) {
     if ((scene.objects[size_t(k)].material.type == MaterialType::kDielectric) != dielectrics)
       continue;
@@ -112,7 +112,8 @@ ImageSpaceView ImageSpacePasses::camera_view(const Camera& camera, int width, in
 }
 
 void ImageSpacePasses::begin(const ShaderProgram& program, const ImageSpaceView& view) const {
-  const auto u = [&](const char* name) { return program.uniform(name); };
+  // Every image-space program starts here: each has the uniforms it needs of these.
+  const auto u = [&](const char* name) { return program.uniform_if_declared(name); };
   glUseProgram(program.id());
   scene_->bind();
   glBindTextureUnit(gpu::UNIT_THICKNESS, thickness_.id());
@@ -136,10 +137,10 @@ void ImageSpacePasses::begin(const ShaderProgram& program, const ImageSpaceView&
 void ImageSpacePasses::draw_object(const ShaderProgram& program, int object) const {
   const SceneObject& o = scene_->scene().objects[size_t(object)];
   const bool refractor = o.material.type == MaterialType::kDielectric;
-  glUniform1f(program.uniform("u_alpha"), o.material.ior);
-  glUniform1i(program.uniform("u_thickness_layer"), o.shape.type == ShapeType::kMesh && refractor
-                                                        ? thickness_layer_[size_t(o.shape.mesh)]
-                                                        : -1);
+  glUniform1f(program.uniform_if_declared("u_alpha"), o.material.ior);
+  glUniform1i(
+      program.uniform_if_declared("u_thickness_layer"),
+      o.shape.type == ShapeType::kMesh && refractor ? thickness_layer_[size_t(o.shape.mesh)] : -1);
   scene_->draw_object(program, object,
                       refractor ? RasterMesh::kParameterized : RasterMesh::kSource);
 }

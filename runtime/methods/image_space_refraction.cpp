@@ -10,8 +10,6 @@
 namespace gfield {
 namespace {
 
-constexpr float kFar = 1.0e30f;  // IS_FAR of shaders/lib/image_space.glsl
-
 bool is_dielectric(const GpuScene& scene, int object) {
   return scene.scene().objects[size_t(object)].material.type == MaterialType::kDielectric;
 }
@@ -71,7 +69,7 @@ void ImageSpaceRefractionMethod::render_surface_map(RenderTarget& map, const Ima
                                                     int facing) {
   map.resize(view.width, view.height, {GL_RGBA32F}, GL_DEPTH_COMPONENT32F);
   map.bind();
-  const float clear[4] = {0.0f, 0.0f, 0.0f, kFar};
+  const float clear[4] = {0.0f, 0.0f, 0.0f, gpu::IS_FAR};
   glClearBufferfv(GL_COLOR, 0, clear);
   glClear(GL_DEPTH_BUFFER_BIT);
   passes_.begin(surfaces_program_, view);
@@ -84,7 +82,7 @@ void ImageSpaceRefractionMethod::render_surface_map(RenderTarget& map, const Ima
 void ImageSpaceRefractionMethod::render_nearby_map(RenderTarget& map, const ImageSpaceView& view) {
   map.resize(view.width, view.height, {GL_RGBA32F}, GL_DEPTH_COMPONENT32F);
   map.bind();
-  const float clear[4] = {0.0f, 0.0f, 0.0f, kFar};
+  const float clear[4] = {0.0f, 0.0f, 0.0f, gpu::IS_FAR};
   glClearBufferfv(GL_COLOR, 0, clear);
   glClear(GL_DEPTH_BUFFER_BIT);
   passes_.begin(passes_.forward(), view);
@@ -112,11 +110,13 @@ void ImageSpaceRefractionMethod::set_refraction_uniforms() const {
   const auto u = [&](const char* name) { return refract_program_.uniform(name); };
   const ImageSpaceRefractionSettings& s = settings_;
   glUniform1i(u("u_facing"), 1);
-  glUniform1i(u("u_bounces"), std::max(0, s.bounces));
-  glUniform1i(u("u_iterations_first"), std::max(0, s.iterations_first));
-  glUniform1i(u("u_iterations_later"), std::max(0, s.iterations_later));
+  if (davis_wyman_) {  // its searches of the two maps (wyman2005 reads the back faces once)
+    glUniform1i(u("u_bounces"), std::max(0, s.bounces));
+    glUniform1i(u("u_iterations_first"), std::max(0, s.iterations_first));
+    glUniform1i(u("u_iterations_later"), std::max(0, s.iterations_later));
+    glUniform1i(u("u_back_only_later"), s.back_only_later ? 1 : 0);
+  }
   glUniform1i(u("u_exit_iterations"), std::max(0, s.exit_iterations));
-  glUniform1i(u("u_back_only_later"), s.back_only_later ? 1 : 0);
   glUniform1i(u("u_background"), int(s.background));
   glUniform1f(u("u_min_alignment"), s.min_alignment);
   glUniform1f(u("u_offset"), 1e-3f * passes_.scene().extent());

@@ -15,12 +15,9 @@
 // Rays are origin + t * direction (mesh coordinates), t in [t_min, t_max]; t is along the given
 // direction.
 
-#ifdef __cplusplus
-#define GB_OUT(T) T&
-#define GB_INOUT(T) T&
-#else
-#define GB_OUT(T) out T
-#define GB_INOUT(T) inout T
+// GF_OUT, GF_INOUT (parameter qualifiers for both languages): contract.glsl.
+#ifndef __cplusplus
+#include "lib/contract.glsl"
 #endif
 
 // Pending far children at most: the builder keeps the tree shallower than this.
@@ -37,7 +34,7 @@ struct GbHit {
 
 // Whether the ray enters the box [lo, hi] within [t_min, t_max]; t_near: where.
 bool gb_box(vec3 lo, vec3 hi, vec3 o, vec3 inv_d, float t_min, float t_max,
-            GB_OUT(float) t_near) {
+            GF_OUT(float) t_near) {
   vec3 ta = (lo - o) * inv_d;
   vec3 tb = (hi - o) * inv_d;
   vec3 t_lo = min(ta, tb);
@@ -48,7 +45,7 @@ bool gb_box(vec3 lo, vec3 hi, vec3 o, vec3 inv_d, float t_min, float t_max,
 }
 
 // Moller-Trumbore: the ray against the triangle in slot s, keeping the nearest hit in h.
-void gb_triangle(int s, vec3 o, vec3 d, float t_min, GB_INOUT(GbHit) h) {
+void gb_triangle(int s, vec3 o, vec3 d, float t_min, GF_INOUT(GbHit) h) {
   h.triangles++;
   vec3 e1 = gb_triangle_e1(s);
   vec3 e2 = gb_triangle_e2(s);

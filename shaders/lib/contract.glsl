@@ -1,8 +1,9 @@
 // The contract between the C++ runtime and the shaders, written once. This file is valid GLSL
 // 4.50 and valid C++ with GLM: the shaders include it, and core/include/gfield/gpu_contract.hpp
 // includes it into namespace gfield::gpu. It holds the codes both sides use (shapes, materials,
-// textures, environments), the binding slots of storage buffers and texture units, the std430
-// layouts of the scene buffers, and the camera ray. Keep to the common subset: `GF_CONST int`
+// textures, environments), the numbers both sides use (pi, the far sentinels, the glass method's
+// layers), the binding slots of storage buffers and texture units, the std430 layouts of the scene
+// buffers, and the camera ray. Keep to the common subset: `GF_CONST int` and `GF_CONST float`
 // constants, GF_INLINE functions, structs of vec4 / ivec4 / mat4 members only (their std430
 // layout is the C++ layout), float literals with an f suffix.
 
@@ -13,6 +14,28 @@
 #define GF_CONST const
 #define GF_INLINE
 #endif
+
+// Parameter qualifiers for both languages, for the files compiled by both (field_lines.glsl,
+// field_lookup.glsl, shapes.glsl, bvh_trace.glsl, glass_displacement.glsl): a struct passed in (a
+// const reference in C++), an output and an in-out parameter.
+#ifdef __cplusplus
+#define GF_IN(T) const T&
+#define GF_OUT(T) T&
+#define GF_INOUT(T) T&
+#else
+#define GF_IN(T) in T
+#define GF_OUT(T) out T
+#define GF_INOUT(T) inout T
+#endif
+
+// pi, as a float.
+GF_CONST float GF_PI = 3.14159265358979f;
+// A distance beyond every hit (scene units or along a ray): the t_max of a ray without one, the
+// t of a miss, the corners of empty bounds (-GF_FAR, GF_FAR).
+GF_CONST float GF_FAR = 3.0e38f;
+// The image-space methods' eye depth of a texel where nothing was drawn (shaders/lib/
+// image_space.glsl; runtime/methods/image_space_refraction.cpp clears its maps to it).
+GF_CONST float IS_FAR = 1.0e30f;
 
 // Shapes (gfield::ShapeType).
 GF_CONST int SHAPE_MESH = 0;
@@ -66,6 +89,13 @@ GF_CONST int WORK_BVH_TRIANGLES = 6;     // triangles tested
 GF_CONST int WORK_RAYS = 7;              // secondary rays traced (the field method's stack)
 GF_CONST int WORK_COUNT = 8;
 
+// The glass method (runtime/methods/glass.*, shaders/glass_*): the glass surfaces depth peeling
+// keeps per pixel (units UNIT_PEEL_LAYERS + k), the refraction classes (a scene image each at
+// most), and the directional lights with a shadow map.
+GF_CONST int GLASS_LAYERS = 4;
+GF_CONST int GLASS_CLASSES = 8;
+GF_CONST int GLASS_SHADOWED_LIGHTS = 4;
+
 // Texture units. Every program of the runtime draws from this one table, so a unit means the
 // same texture in every pass.
 GF_CONST int UNIT_GI_POSITIONS = 0;   // 2D array RGBA32F: P (mesh coordinates), coverage A in w
@@ -84,14 +114,18 @@ GF_CONST int UNIT_BACK = 11;          // back faces of the refractors: normal, e
 GF_CONST int UNIT_FRONT = 12;         // front faces of the refractors: normal, eye depth
 GF_CONST int UNIT_NEARBY = 13;        // nearby geometry: colour, eye depth
 GF_CONST int UNIT_PEEL_PREVIOUS = 14;  // glass, while peeling: the layer peeled before
-GF_CONST int UNIT_PEEL_LAYERS = 15;    // glass: peeled layers 0..3 in units 15..18
-GF_CONST int UNIT_CLASS_IMAGES = 19;   // glass: 2D array, one scene image per refraction class
+GF_CONST int UNIT_PEEL_LAYERS = 15;    // glass: peeled layer k in unit 15 + k, k < GLASS_LAYERS
+GF_CONST int UNIT_CLASS_IMAGES = UNIT_PEEL_LAYERS + GLASS_LAYERS;  // 19: glass: 2D array, one
+                                                                  // scene image per class
 GF_CONST int UNIT_SHADOW_MAPS = 20;    // glass: 2D array shadow maps, layer = light
 GF_CONST int UNIT_FRAME = 21;          // the presented frame (viewer)
 GF_CONST int UNIT_GI_ALBEDO = 22;      // 2D array RGBA16F: geometry-image albedo (linear rgb)
 GF_CONST int UNIT_MESH_TEXTURES = 23;  // 2D array RGBA16F: the meshes' own textures (linear
                                        // rgb, row 0 at v = 0), bilinear, repeating
 GF_CONST int UNIT_GBUFFER_ALBEDO = 24;  // rgb albedo of the first hit (diffuse surfaces)
+// Units in all: every unit above is below it, and no two are the same (tests/core/
+// gpu_contract_test.cpp checks both at compile time).
+GF_CONST int UNIT_COUNT = 25;
 
 // Geometry-field texels on the GPU (runtime/gpu_assets): each uv component as a normalised
 // integer of `bits` bits (8: RG8, 16: RG16; 32: RG32F, the float as is). A uv in [0,1] is the

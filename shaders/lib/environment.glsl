@@ -1,17 +1,20 @@
 // Environment lookups by direction, shared by the CPU reference tracer (core/src/environment.cpp
-// includes this file with GLM in scope) and the GLSL 4.50 shaders. Keep to the common subset of
-// GLSL and GLM: no qualifiers (in/out), float literals with an f suffix, no integer-vector math.
+// includes this file with GLM and the contract in scope) and the GLSL 4.50 shaders. Keep to the
+// common subset of GLSL and GLM: no qualifiers (in/out), float literals with an f suffix, no
+// integer-vector math.
 //
 // Directions are unit vectors in world space, +Y up.
 
-const float GF_ENV_PI = 3.14159265358979f;
+#ifndef __cplusplus
+#include "lib/contract.glsl"
+#endif
 
 // Equirectangular (latitude-longitude) map coordinates in [0,1]^2 of direction d: u = 0.5
 // towards -Z, 0.75 towards +X, 0 and 1 towards +Z (the seam); v = 0 straight up (the top row of
 // the image file), v = 1 straight down.
 vec2 env_equirect_uv(vec3 d) {
-  float u = 0.5f + atan(d.x, -d.z) / (2.0f * GF_ENV_PI);
-  float v = acos(clamp(d.y, -1.0f, 1.0f)) / GF_ENV_PI;
+  float u = 0.5f + atan(d.x, -d.z) / (2.0f * GF_PI);
+  float v = acos(clamp(d.y, -1.0f, 1.0f)) / GF_PI;
   return vec2(u, v);
 }
 
@@ -46,7 +49,7 @@ vec3 env_cube_coords(vec3 d) {
 // 1 inside a rectangle of the sky given by its centre (azimuth az0, elevation el0) and half
 // sizes, all in radians; 0 outside.
 float env_softbox(float az, float el, float az0, float el0, float half_w, float half_h) {
-  float da = abs(mod(az - az0 + GF_ENV_PI, 2.0f * GF_ENV_PI) - GF_ENV_PI);
+  float da = abs(mod(az - az0 + GF_PI, 2.0f * GF_PI) - GF_PI);
   return (da < half_w && abs(el - el0) < half_h) ? 1.0f : 0.0f;
 }
 
@@ -67,12 +70,12 @@ vec3 studio_environment(vec3 d) {
   float el = asin(clamp(d.y, 0.0f, 1.0f));
   vec3 sky = mix(vec3(0.85f, 0.82f, 0.75f), vec3(0.18f, 0.3f, 0.6f), sqrt(d.y));
   if (el < 0.12f) {
-    float h = az / (2.0f * GF_ENV_PI) + 0.5f;
+    float h = az / (2.0f * GF_PI) + 0.5f;
     vec3 hue = clamp(abs(mod(h * 6.0f + vec3(0.0f, 4.0f, 2.0f), 6.0f) - 3.0f) - 1.0f, 0.0f, 1.0f);
     sky = mix(vec3(0.2f, 0.2f, 0.2f), hue, 0.8f);
   }
-  float ga = az / (GF_ENV_PI / 6.0f);
-  float ge = el / (GF_ENV_PI / 12.0f);
+  float ga = az / (GF_PI / 6.0f);
+  float ge = el / (GF_PI / 12.0f);
   float line = min(abs(ga - floor(ga + 0.5f)), abs(ge - floor(ge + 0.5f)));
   if (line < 0.04f) {
     sky = sky * 0.3f;

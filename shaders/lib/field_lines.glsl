@@ -4,22 +4,11 @@
 // ONE source for the CPU and the GPU, like field_lookup.glsl (its rules hold here): valid GLSL
 // 4.50 and valid C++ with GLM, included verbatim by core/src/field_lines.cpp and
 // core/src/field_lookup.cpp (inside structs whose members supply the fetches below) and by the
-// runtime's shaders, before field_lookup.glsl. The includer defines:
+// runtime's shaders, after contract.glsl and before field_lookup.glsl. The includer defines:
 //   int  gf_samples_per_side();                        N of the field
 //   vec2 gf_field_nearest_texel(int entry, int column);  the nearest-hit table's uv (< 0: miss)
 //   uint gf_field_word(int i);                         word i of the line table
 //   vec2 gf_field_interior_texel(int i);               interior hit i (a uv)
-
-// Parameter qualifiers for both languages (field_lookup.glsl uses them too).
-#ifdef __cplusplus
-#define GF_IN(T) const T&
-#define GF_OUT(T) T&
-#define GF_INOUT(T) T&
-#else
-#define GF_IN(T) in T
-#define GF_OUT(T) out T
-#define GF_INOUT(T) inout T
-#endif
 
 // The line through a pair of samples as read from one of them: its hit count and where its
 // interior hits start. count < 0: not read yet (gf_line_unread).

@@ -25,7 +25,7 @@
 // Conventions (docs/geometry-field.md): rays are origin + t * direction in mesh (object)
 // coordinates, t in [t_min, t_max]; a hit's t is along the given (unnormalised) direction.
 
-// GF_IN, GF_OUT, GF_INOUT (parameter qualifiers for both languages): field_lines.glsl.
+// GF_IN, GF_OUT, GF_INOUT (parameter qualifiers for both languages): contract.glsl.
 
 // Work counting (shaders/lib/work.glsl): the includer may define GF_COUNT(kind, n) to count the
 // lookups and the Newton steps; by default it is nothing.
@@ -112,8 +112,8 @@ vec3 gf_image_normal(vec2 uv) {
 // parameters; f0/f1: entry and exit faces (2 * axis, + 1 for the max side: -X, +X, -Y, ...).
 bool gf_clip_unit_cube(vec3 o, vec3 d, GF_OUT(float) t0, GF_OUT(float) t1, GF_OUT(int) f0,
                        GF_OUT(int) f1) {
-  t0 = -3.0e38f;
-  t1 = 3.0e38f;
+  t0 = -GF_FAR;
+  t1 = GF_FAR;
   f0 = -1;
   f1 = -1;
   for (int axis = 0; axis < 3; axis++) {

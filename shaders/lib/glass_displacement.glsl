@@ -6,18 +6,15 @@
 // verbatim by core/src/glass_displacement.cpp (inside a namespace with `using namespace glm`) and
 // by shaders/glass_scene.vert. Keep to the common subset (see shaders/lib/field_lookup.glsl): float
 // literals with an `f` suffix, no swizzles beyond .x/.y/.z/.w, no arrays as parameters, no `const`
-// locals, no builtin names as variable names, callees before callers, GD_OUT/GD_INOUT for output
+// locals, no builtin names as variable names, callees before callers, GF_OUT/GF_INOUT for output
 // parameters. All math is float.
 //
 // Indices are relative: n_rel = n_glass / n_outside (> 0); the outside (air) and the hollow
 // cylinder's interior have index 1 relative to it.
 
-#ifdef __cplusplus
-#define GD_OUT(T) T&
-#define GD_INOUT(T) T&
-#else
-#define GD_OUT(T) out T
-#define GD_INOUT(T) inout T
+// GF_OUT (the parameter qualifier for both languages): contract.glsl.
+#ifndef __cplusplus
+#include "lib/contract.glsl"
 #endif
 
 // Newton iterations of the plate's equation 5 (each keeps the root bracketed), of the cylinder's
@@ -292,7 +289,7 @@ GdPath gd_solve(GdGlass g, vec3 eye, vec3 q) {
     // Start instead from the valid one of a fan of lines across the axis (e1 is horizontal
     // unless the line is nearly vertical) that misses q least; the fan's step is half the wall's
     // apparent width, so no band of valid lines falls between two of them.
-    float best = 3.0e38f;
+    float best = GF_FAR;
     float distance_to_axis = max(sqrt(eye.x * eye.x + eye.z * eye.z), g.outer_radius);
     float span = 2.0f * g.outer_radius / distance_to_axis;
     float fan_step =
@@ -403,7 +400,7 @@ vec3 gd_path_virtual_point(GdPath p, vec3 q) {
 
 // Where vertex q is seen from `eye` through glass g; `ok` false (and q returned) when no path
 // through g reaches q.
-vec3 gd_displace(GdGlass g, vec3 eye, vec3 q, GD_OUT(bool) ok) {
+vec3 gd_displace(GdGlass g, vec3 eye, vec3 q, GF_OUT(bool) ok) {
   GdPath p = gd_solve(g, eye, q);
   ok = p.valid;
   if (!p.valid) return q;
@@ -412,6 +409,6 @@ vec3 gd_displace(GdGlass g, vec3 eye, vec3 q, GD_OUT(bool) ok) {
 
 // Where vertex q (object space of the cylinder) is seen from `eye` along `path`.
 vec3 gd_cylinder_displace(int path, float outer_radius, float inner_radius, float n_rel, vec3 eye,
-                          vec3 q, GD_OUT(bool) ok) {
+                          vec3 q, GF_OUT(bool) ok) {
   return gd_displace(gd_cylinder_glass(path, outer_radius, inner_radius, n_rel), eye, q, ok);
 }

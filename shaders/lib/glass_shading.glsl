@@ -6,9 +6,6 @@
 
 #include "lib/contract.glsl"
 #include "lib/textures.glsl"
-
-#define GLASS_SHADOWED_LIGHTS 4
-
 #include "lib/objects.glsl"
 layout(std430, binding = BUFFER_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
 uniform int u_object_count;

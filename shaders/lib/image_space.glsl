@@ -11,8 +11,6 @@
 #include "lib/optics.glsl"
 #include "lib/camera.glsl"
 
-#define IS_FAR 1.0e30f
-
 uniform vec2 u_near_far;    // eye depths of the near and far planes
 // The search frustums' near and far planes (eye depths): the view frustum with its depth range
 // tightened to the bounds of what a map holds (the refractors, the nearby geometry), so that a
@@ -127,7 +125,7 @@ vec3 is_shade_diffuse(int k, vec3 p, vec3 n, vec3 incoming, vec3 albedo) {
   vec3 light_sum = u_ambient;
   for (int i = 0; i < u_light_count; i++) {
     vec3 l;
-    float distance_to_light = 3.0e38f;
+    float distance_to_light = GF_FAR;
     bool point = lights[i].direction.w > 0.5f;
     if (!point) {
       l = -lights[i].direction.xyz;
@@ -175,7 +173,7 @@ vec3 is_shade_surface(int k, vec3 p, vec3 n, vec3 incoming, vec3 albedo) {
 vec3 is_exit_analytic(vec3 o, vec3 d) {
   int best = -1;
   ShapeHit hit;
-  float t_max = 3.0e38f;
+  float t_max = GF_FAR;
   for (int k = 0; k < u_object_count; k++) {
     if (objects[k].kind.x == SHAPE_MESH || objects[k].kind.y == MATERIAL_DIELECTRIC) continue;
     ShapeHit s = is_intersect_analytic(k, o, d, 0.0f, t_max);

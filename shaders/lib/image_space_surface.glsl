@@ -37,7 +37,7 @@ bool is_resolve_surface(out IsSurface s) {
     gl_FragDepth = gl_FragCoord.z;
   } else {
     vec3 d = normalize(v_position - u_eye);
-    ShapeHit h = is_intersect_analytic(k, u_eye, d, 0.0f, 3.0e38f);
+    ShapeHit h = is_intersect_analytic(k, u_eye, d, 0.0f, GF_FAR);
     if (!h.hit) return false;
     s.front = true;
     if (u_facing < 0) {
@@ -45,7 +45,7 @@ bool is_resolve_surface(out IsSurface s) {
       ShapeHit last = h;
       for (int i = 0; i < 3; i++) {
         ShapeHit next = is_intersect_analytic(k, u_eye, d, last.t + 1.0e-5f * u_scene_extent,
-                                              3.0e38f);
+                                              GF_FAR);
         if (!next.hit) break;
         last = next;
       }

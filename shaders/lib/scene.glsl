@@ -56,7 +56,7 @@ struct SceneHit {
 SceneHit scene_miss() {
   SceneHit h;
   h.hit = false;
-  h.t = 3.0e38f;
+  h.t = GF_FAR;
   h.object = -1;
   h.position = vec3(0.0f);
   h.normal = vec3(0.0f);
@@ -260,7 +260,7 @@ bool light_from(SceneHit hit, vec3 geometric_normal, vec3 incoming, int i, out v
   vec3 g = facing * geometric_normal;
   bool point = lights[i].direction.w > 0.5f;
   vec3 l = -lights[i].direction.xyz;
-  distance = 3.0e38f;
+  distance = GF_FAR;
   if (point) {
     l = lights[i].position.xyz - hit.position;
     distance = length(l);

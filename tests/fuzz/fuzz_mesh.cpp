@@ -1,8 +1,8 @@
 // Fuzz target: one mesh format's reader (load_mesh with the surface's appearance), the format
-// chosen at compile time by GFIELD_FUZZ_EXTENSION (".obj", ".ply", ".off", ".stl", ".gltf",
-// ".glb": all of a glTF file's mesh primitives as one mesh, through gfield's own checks and then
-// tinygltf; its extensions too: KHR_mesh_quantization, KHR_texture_transform, Draco and meshopt
-// compression, the materials' mapping).
+// chosen at compile time by GFIELD_FUZZ_EXTENSION, an extension of geometry/mesh_formats.hpp
+// (".gltf", ".glb": all of a glTF file's mesh primitives as one mesh, through gfield's own checks
+// and then tinygltf; its extensions too: KHR_mesh_quantization, KHR_texture_transform, Draco and
+// meshopt compression, the materials' mapping). A target per folder corpus/mesh_EXT.
 
 #include <cmath>
 

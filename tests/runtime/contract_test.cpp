@@ -10,9 +10,9 @@
 
 #include "gfield/image_metrics.hpp"
 #include "preprocess/reference_tracer.hpp"
-#include "runtime/gl_context.hpp"
 #include "runtime/methods/geometry_field.hpp"
 #include "runtime/shader_program.hpp"
+#include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
@@ -58,10 +58,10 @@ Scene shape_scene(ShapeType type, MaterialType material) {
   return scene;
 }
 
-TEST(Contract, EveryAnalyticShapeAndMaterialMatchesTheCpu) {
+class Contract : public test::GlSuite {};
+
+TEST_F(Contract, EveryAnalyticShapeAndMaterialMatchesTheCpu) {
   std::string error;
-  auto context = GlContext::create_headless(error);
-  ASSERT_NE(context, nullptr) << error;
   for (ShapeType type : {ShapeType::kSphere, ShapeType::kQuad, ShapeType::kBox,
                          ShapeType::kCylinder, ShapeType::kSlab, ShapeType::kHollowCylinder}) {
     for (MaterialType material :

@@ -11,9 +11,9 @@
 #include "gfield/field_lookup.hpp"
 #include "gfield/gpu_storage.hpp"
 #include "runtime/field_probe.hpp"
-#include "runtime/gl_context.hpp"
 #include "runtime/shader_program.hpp"
 #include "synthetic_assets.hpp"
+#include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
@@ -28,7 +28,7 @@ std::vector<Ray> test_rays() {
   for (int j = 0; j < 96; ++j) {
     for (int i = 0; i < 96; ++i) {
       const glm::vec2 p = (glm::vec2(i, j) + 0.5f) / 96.0f * 2.0f - 1.0f;
-      rays.push_back({eye, forward + 0.32f * (p.x * right + p.y * up), 0.0f, 3.0e38f});
+      rays.push_back({eye, forward + 0.32f * (p.x * right + p.y * up), 0.0f});
     }
   }
   std::mt19937 rng(7);
@@ -42,7 +42,7 @@ std::vector<Ray> test_rays() {
   for (int k = 0; k < 4096; ++k) {
     const glm::vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
     const glm::vec3 origin = k % 2 == 0 ? a : glm::normalize(a);
-    rays.push_back({origin, b - a, 1e-3f, 3.0e38f});
+    rays.push_back({origin, b - a, 1e-3f});
   }
   return rays;
 }
@@ -88,10 +88,10 @@ void expect_gpu_agrees(const GpuAssets& assets, const FieldLookup& lookup,
   }
 }
 
-TEST(FieldProbe, GpuLookupAgreesWithCpuLookup) {
+class FieldProbe : public test::GlSuite {};
+
+TEST_F(FieldProbe, GpuLookupAgreesWithCpuLookup) {
   std::string error;
-  auto context = GlContext::create_headless(error);
-  ASSERT_NE(context, nullptr) << error;
   GeometryImage image;
   GeometryField field;
   test::make_sphere_assets(64, 8, image, field);
@@ -123,10 +123,8 @@ void mirror_uv(GeometryImage& image, GeometryField& field) {
 // Geometry images of different sizes share one texture array sized to the largest (--size auto
 // gives 512^2 and 1024^2 images to the meshes of one scene): the smaller ones share a layer, each
 // read from its own square (runtime/image_atlas.hpp).
-TEST(FieldProbe, ImagesOfDifferentSizesShareTheArray) {
+TEST_F(FieldProbe, ImagesOfDifferentSizesShareTheArray) {
   std::string error;
-  auto context = GlContext::create_headless(error);
-  ASSERT_NE(context, nullptr) << error;
   const int sizes[3] = {48, 96, 48};
   GeometryImage images[3];
   GeometryField fields[3];

@@ -9,6 +9,7 @@
 #include "runtime/framebuffer.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/shader_program.hpp"
+#include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
@@ -19,25 +20,10 @@ void write_file(const fs::path& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
-class GlTest : public ::testing::Test {
+class GlTest : public test::GlSuite {
  protected:
-  static void SetUpTestSuite() {
-    std::string error;
-    context_ = GlContext::create_headless(error).release();
-    ASSERT_NE(context_, nullptr) << error;
-    ready_ = true;
-  }
-  /// A failed suite set-up fails every test instead of letting it use what is missing.
-  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  static inline bool ready_ = false;
-  static GlContext* context_;
   fs::path dir_ = fs::path(GFIELD_TEST_TMP) / "gl_context_test";
 };
-GlContext* GlTest::context_ = nullptr;
 
 TEST_F(GlTest, ContextIsOpenGl45Core) {
   ASSERT_NE(context_, nullptr);
@@ -124,6 +110,28 @@ TEST_F(GlTest, RendersIntoFramebufferAndReadsBack) {
   for (const glm::vec4& p : image.pixels)
     covered += p.z > 0.5f ? 1 : 0;
   EXPECT_EQ(covered, 32 * 24);  // the left half, 8 bottom rows excepted (z = 0.375 there)
+}
+
+// Uniform locations come from the table made at link time: a dropped (unused) uniform is -1 as
+// GL's own look-up, and a name the program does not declare stops it, naming both.
+TEST_F(GlTest, UniformsAreLookedUpAtLinkAndAMisspeltOneStopsTheProgram) {
+  write_file(dir_ / "u.vert",
+             "#version 450\nuniform vec2 u_offsets[2];\nuniform float u_unused;\n"
+             "void main() { gl_Position = vec4(u_offsets[gl_VertexID % 2], 0.5, 1); }\n");
+  write_file(dir_ / "u.frag",
+             "#version 450\nlayout(location = 0) uniform vec3 u_color;\n"
+             "layout(location = 0) out vec4 o;\nvoid main() { o = vec4(u_color, 1); }\n");
+  ShaderProgram program;
+  std::string error;
+  ASSERT_TRUE(program.build(dir_, {"u.vert", "u.frag"}, "", error)) << error;
+  EXPECT_EQ(program.uniform("u_color"), 0);
+  EXPECT_EQ(program.uniform("u_offsets"), glGetUniformLocation(program.id(), "u_offsets"));
+  EXPECT_GE(program.uniform("u_offsets"), 0);
+  EXPECT_EQ(program.uniform("u_offsets[0]"), program.uniform("u_offsets"));
+  EXPECT_EQ(program.uniform("u_unused"), -1);
+  EXPECT_EQ(program.uniform_if_declared("u_colour"), -1);
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_DEATH(program.uniform("u_colour"), "u.vert \\+ u.frag has no uniform \"u_colour\"");
 }
 
 }  // namespace

@@ -22,9 +22,9 @@
 #include "gfield/image_metrics.hpp"
 #include "gfield/scene.hpp"
 #include "preprocess/reference_tracer.hpp"
-#include "runtime/gl_context.hpp"
 #include "runtime/methods/glass.hpp"
 #include "runtime/shader_program.hpp"
+#include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
@@ -212,24 +212,7 @@ void compare_scene(const std::string& name, ImageComparison& out, FrameStats* st
   out = compare_images(image, reference, mask);
 }
 
-class GlassTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    std::string error;
-    context_ = GlContext::create_headless(error).release();
-    ASSERT_NE(context_, nullptr) << error;
-    ready_ = true;
-  }
-  /// A failed suite set-up fails every test instead of letting it use what is missing.
-  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  static inline bool ready_ = false;
-  static GlContext* context_;
-};
-GlContext* GlassTest::context_ = nullptr;
+class GlassTest : public test::GlSuite {};
 
 // Thresholds: the target for the plates (30 dB; measured 31.6-36.0 dB at this size).
 // The cylinder measures 34.0 dB with its verge displaced (threshold 33.5) and 38.6 dB with the

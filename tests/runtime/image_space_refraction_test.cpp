@@ -14,11 +14,11 @@
 #include "gfield/image_metrics.hpp"
 #include "gfield/thickness.hpp"
 #include "preprocess/reference_tracer.hpp"
-#include "runtime/gl_context.hpp"
 #include "runtime/methods/cube_map.hpp"
 #include "runtime/methods/image_space_refraction.hpp"
 #include "runtime/shader_program.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
@@ -35,12 +35,11 @@ struct ImageSpaceSettings {
   ExitBackground background = ExitBackground::kDepthMap;
 };
 
-class ImageSpaceTest : public ::testing::Test {
+class ImageSpaceTest : public test::GlSuite {
  protected:
   static void SetUpTestSuite() {
+    ASSERT_TRUE(make_context());
     std::string error;
-    context_ = GlContext::create_headless(error).release();
-    ASSERT_NE(context_, nullptr) << error;
     const fs::path dir = fs::path(GFIELD_TEST_TMP) / "image_space";
     fs::create_directories(dir);
     const std::string mesh = std::string(GFIELD_DATA_DIR) + "/meshes/spot.obj";
@@ -70,17 +69,13 @@ class ImageSpaceTest : public ::testing::Test {
     *reference_ = clamped_to_display(*reference_);
     ready_ = true;
   }
-  /// A failed suite set-up fails every test instead of letting it use what is missing.
-  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
   static void TearDownTestSuite() {
     delete scene_;
     delete reference_;
-    delete context_;
     scene_ = nullptr;
     reference_ = nullptr;
-    context_ = nullptr;
+    GlSuite::TearDownTestSuite();
   }
-  static inline bool ready_ = false;
 
   static Image render(const Scene& scene, const ImageSpaceSettings& settings) {
     GpuScene gpu;
@@ -119,11 +114,9 @@ class ImageSpaceTest : public ::testing::Test {
     return mask_from_image(render(scene, ImageSpaceSettings{}), 0.5f);
   }
 
-  static GlContext* context_;
   static Scene* scene_;
   static Image* reference_;
 };
-GlContext* ImageSpaceTest::context_ = nullptr;
 Scene* ImageSpaceTest::scene_ = nullptr;
 Image* ImageSpaceTest::reference_ = nullptr;
 

@@ -17,10 +17,10 @@
 #include "geometry/scene_file.hpp"
 #include "gfield/image_metrics.hpp"
 #include "preprocess/reference_tracer.hpp"
-#include "runtime/gl_context.hpp"
 #include "runtime/methods/geometry_field.hpp"
 #include "runtime/shader_program.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
@@ -31,19 +31,7 @@ const fs::path kDir = fs::path(GFIELD_TEST_TMP) / "mesh_intersection";
 constexpr int kSize = 128;
 constexpr int kDepth = 4;
 
-class MeshIntersection : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    std::string error;
-    context_ = GlContext::create_headless(error).release();
-    ASSERT_NE(context_, nullptr) << error;
-  }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  static inline GlContext* context_ = nullptr;
-};
+class MeshIntersection : public test::GlSuite {};
 
 /// The reference tracer's picture of `scene` at kSize^2: `spp` jittered samples per pixel, or
 /// (spp = 0) the pixel centres.

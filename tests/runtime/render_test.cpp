@@ -16,10 +16,10 @@
 #include "gfield/image_metrics.hpp"
 #include "gfield/scene.hpp"
 #include "preprocess/reference_tracer.hpp"
-#include "runtime/gl_context.hpp"
 #include "runtime/methods/geometry_field.hpp"
 #include "runtime/shader_program.hpp"
 #include "runtime/work_counters.hpp"
+#include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
@@ -97,9 +97,10 @@ std::vector<TestScene> test_scenes() {
   };
 }
 
-class RenderTest : public ::testing::Test {
+class RenderTest : public test::GlSuite {
  protected:
   static void SetUpTestSuite() {
+    ASSERT_TRUE(make_context());
     fs::create_directories(kDir);
     const std::string command = std::string("\"") + GFIELD_CLI +
                                 "\" build \"" GFIELD_MESH_DIR "/spot.obj\" -o \"" +
@@ -108,21 +109,9 @@ class RenderTest : public ::testing::Test {
                                 "> \"" +
                                 (kDir / "build.log").string() + "\" 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
-    std::string error;
-    context_ = GlContext::create_headless(error).release();
-    ASSERT_NE(context_, nullptr) << error;
     ready_ = true;
   }
-  /// A failed suite set-up fails every test instead of letting it use what is missing.
-  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  static inline bool ready_ = false;
-  static GlContext* context_;
 };
-GlContext* RenderTest::context_ = nullptr;
 
 /// PSNR (nearest, linear, refined; clamped pictures) of the geometry-field renderer against the
 /// reference tracer on the scene `text` (written to kDir/NAME.json), both at size^2 with `spp`

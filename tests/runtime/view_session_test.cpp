@@ -11,11 +11,11 @@
 #include <gtest/gtest.h>
 
 #include "gfield/image_metrics.hpp"
-#include "runtime/gl_context.hpp"
 #include "runtime/method_registry.hpp"
 #include "runtime/shader_program.hpp"
 #include "runtime/view_session.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
@@ -45,27 +45,18 @@ std::string session_scene() {
      "material": {"type": "diffuse", "texture": "checker", "scale": 12}}]})";
 }
 
-class ViewSessionTest : public ::testing::Test {
+class ViewSessionTest : public test::GlSuite {
  protected:
   static void SetUpTestSuite() {
+    ASSERT_TRUE(make_context());
     fs::create_directories(kDir);
     const test::CliRun run =
         test::run_cli("build " GFIELD_MESH_DIR "/spot.obj -o " + (kDir / "spot").string() +
                       " --size 128 --samples 8 --verify-rays 0");
     ASSERT_EQ(run.exit_code, 0) << run.err;
-    std::string error;
-    context_ = GlContext::create_headless(error).release();
-    ASSERT_NE(context_, nullptr) << error;
     std::ofstream(kDir / "scene.json") << session_scene();
     ready_ = true;
   }
-  static void TearDownTestSuite() {
-    delete context_;
-    context_ = nullptr;
-  }
-  void SetUp() override { ASSERT_TRUE(ready_) << "the test suite's set-up failed (see above)"; }
-  static inline bool ready_ = false;
-  static inline GlContext* context_ = nullptr;
 };
 
 /// Finite everywhere and not one flat colour: the method drew something.

@@ -45,9 +45,8 @@ struct CubeCrossing {
 glm::vec3 to_unit_cube(const Box& box, glm::vec3 p);
 /// Unit-cube coordinates -> mesh coordinates.
 glm::vec3 from_unit_cube(const Box& box, glm::vec3 u);
-/// Unit-cube direction -> mesh direction and back (scales per axis, not normalised).
+/// Mesh direction -> unit-cube direction (scales per axis, not normalised).
 glm::vec3 direction_to_unit_cube(const Box& box, glm::vec3 d);
-glm::vec3 direction_from_unit_cube(const Box& box, glm::vec3 d);
 /// Length of the box diagonal in mesh units.
 float diagonal(const Box& box);
 /// Bounds of `points` grown by `relative_padding` of the diagonal on every side (a degenerate

@@ -10,6 +10,7 @@
 
 #include "gfield/geometry_field.hpp"
 #include "gfield/geometry_image.hpp"
+#include "gfield/gpu_contract.hpp"
 
 namespace gfield {
 
@@ -32,7 +33,7 @@ struct Ray {
   glm::vec3 origin{0.0f};
   glm::vec3 direction{0.0f, 0.0f, 1.0f};
   float t_min = 0.0f;
-  float t_max = 3.0e38f;
+  float t_max = gpu::GF_FAR;
 };
 
 /// A lookup's answer. t is along the ray's own direction; distance = t * |direction|.

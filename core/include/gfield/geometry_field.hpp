@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "gfield/box.hpp"
+#include "gfield/check.hpp"
 #include "gfield/uninitialized_allocator.hpp"
 
 namespace gfield {
@@ -54,6 +55,13 @@ inline int field_columns(const GeometryField& field) {
 /// Entries of the nearest-hit table: 6 N^2 * 5 N^2.
 inline size_t field_nearest_size(const GeometryField& field) {
   return size_t(field_side(field)) * size_t(field_columns(field));
+}
+/// Index in GeometryField::nearest of entry sample `entry` (in [0, 6N^2)) at `column` (in [0,
+/// 5N^2): field_column of the exit sample).
+inline size_t field_nearest_index(const GeometryField& field, int entry, int column) {
+  GF_DCHECK(entry >= 0 && entry < field_side(field) && column >= 0 && column < field_columns(field),
+            "entry or column outside the nearest-hit table");
+  return size_t(entry) * size_t(field_columns(field)) + size_t(column);
 }
 /// Stored uv of hit `layer` (0: the nearest to the entry) along the line from the entry sample
 /// towards the exit sample: a uv, kFieldMiss past its last hit, kFieldNoRay for two samples on

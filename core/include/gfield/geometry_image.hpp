@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "gfield/box.hpp"
+#include "gfield/check.hpp"
 #include "gfield/gpu_contract.hpp"
 
 namespace gfield {
@@ -39,8 +40,9 @@ struct GeometryImage {
   float ray_offset = kMinRayOffset;
 };
 
-/// Texel index of column i, scanline j.
+/// Texel index of column i, scanline j (both in [0, n)).
 inline size_t texel_index(const GeometryImage& image, int i, int j) {
+  GF_DCHECK(i >= 0 && i < image.size && j >= 0 && j < image.size, "texel outside the image");
   return size_t(j) * size_t(image.size) + size_t(i);
 }
 

@@ -8,7 +8,6 @@
 // Units: positions in one frame (world for plates, the cylinder's object space for cylinders),
 // lengths in scene units, indices of refraction relative to the outside (air = 1).
 
-#include <array>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -52,20 +51,6 @@ enum class CylinderPath {
   kFrontWall = 2,  ///< outer in, inner in: to a point inside the glass
   kBackWall = 3,   ///< inner out, outer out: from the open top through one wall
 };
-
-/// The refracted path from the eye to a vertex.
-struct CylinderPathPoints {
-  bool valid = false;
-  int count = 0;                          ///< interface points (2 to 4)
-  std::array<glm::vec3, 4> points{};      ///< interface points in path order
-  std::array<glm::vec3, 5> directions{};  ///< unit: [0] from the eye, [k] after interface k
-};
-
-/// The path of type `path` from `eye` to `vertex` (object space), found by Newton's method on the
-/// eye ray's direction; invalid when none converges or the vertex is not beyond the last
-/// interface.
-CylinderPathPoints cylinder_path(const GlassCylinder& cylinder, CylinderPath path, glm::vec3 eye,
-                                 glm::vec3 vertex);
 
 /// Where `vertex` is seen from `eye` through the cylinder along `path` (object space): the path,
 /// then the paper's sequence Q -> Q_D -> Q_C -> Q_B -> Q' of one-interface moves (equations 6-8).
