@@ -79,7 +79,7 @@ std::vector<Ray> random_view_rays(const Box& box, size_t count, uint64_t seed) {
     ray.origin = eye;
     ray.direction = glm::normalize(target - eye);
     ray.t_min = 0.0f;
-    ray.t_max = 3.0e38f;
+    ray.t_max = gpu::GF_FAR;
   }
   return rays;
 }
@@ -120,7 +120,7 @@ SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, SurfaceO
     if (glm::dot(d, g) < 0.0f) {
       d = -d;
     }
-    out.rays.push_back({glm::vec3(p) + offsets.path * g, d, 2.0f * offsets.path, 3.0e38f});
+    out.rays.push_back({glm::vec3(p) + offsets.path * g, d, 2.0f * offsets.path, gpu::GF_FAR});
     out.self_origins.push_back(glm::vec3(p) + offsets.self * g);
     out.facing.push_back(outward);
     out.triangles.push_back(face);
@@ -159,7 +159,7 @@ SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
       r = glm::reflect(d, g);
     }
     r = glm::normalize(r);
-    out.rays.push_back({origin + offsets.path * g, r, 2.0f * offsets.path, 3.0e38f});
+    out.rays.push_back({origin + offsets.path * g, r, 2.0f * offsets.path, gpu::GF_FAR});
     out.self_origins.push_back(origin + offsets.self * g);
     out.facing.push_back(glm::dot(face_normal(mesh, h.triangle), g) >= 0.0f ? 1.0f : -1.0f);
     out.triangles.push_back(h.triangle);
