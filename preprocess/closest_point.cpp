@@ -85,29 +85,32 @@ glm::dvec2 closest_barycentrics(const glm::dvec3& p, const glm::dvec3& a, const 
   return {vb / sum, vc / sum};
 }
 
+ClosestPoint closest_point(const EmbreeMesh& embree, const TriangleMesh& mesh,
+                           const glm::dvec3& point) {
+  if (mesh.triangles.empty())
+    return {};
+  Query query;
+  query.mesh = &mesh;
+  query.point = point;
+  RTCPointQuery q;
+  q.x = float(point.x);
+  q.y = float(point.y);
+  q.z = float(point.z);
+  q.time = 0.0f;
+  q.radius = std::numeric_limits<float>::infinity();
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(embree.scene(), &q, &context, visit_triangle, &query);
+  return query.best;
+}
+
 std::vector<ClosestPoint> closest_points(const EmbreeMesh& embree, const TriangleMesh& mesh,
                                          const std::vector<glm::dvec3>& points) {
   std::vector<ClosestPoint> result(points.size());
-  if (mesh.triangles.empty()) {
-    return result;
-  }
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 256),
                     [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t k = range.begin(); k != range.end(); ++k) {
-                        Query query;
-                        query.mesh = &mesh;
-                        query.point = points[k];
-                        RTCPointQuery q;
-                        q.x = float(points[k].x);
-                        q.y = float(points[k].y);
-                        q.z = float(points[k].z);
-                        q.time = 0.0f;
-                        q.radius = std::numeric_limits<float>::infinity();
-                        RTCPointQueryContext context;
-                        rtcInitPointQueryContext(&context);
-                        rtcPointQuery(embree.scene(), &q, &context, visit_triangle, &query);
-                        result[k] = query.best;
-                      }
+                      for (size_t k = range.begin(); k != range.end(); ++k)
+                        result[k] = closest_point(embree, mesh, points[k]);
                     });
   return result;
 }

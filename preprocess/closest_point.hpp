@@ -27,8 +27,13 @@ struct ClosestPoint {
 glm::dvec2 closest_barycentrics(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
                                 const glm::dvec3& c);
 
-/// The closest point of `mesh` to each of `points` (P in, P out). `embree` holds the BVH of
-/// `mesh` (EmbreeMesh::build); distances are exact in double on the mesh's double positions.
+/// The closest point of `mesh` to `point`; `embree` holds the BVH of `mesh` (none needed when it
+/// has no triangle).
+ClosestPoint closest_point(const EmbreeMesh& embree, const TriangleMesh& mesh,
+                           const glm::dvec3& point);
+
+/// The closest point of `mesh` to each of `points` (P in, P out), in parallel. `embree` holds the
+/// BVH of `mesh` (EmbreeMesh::build); distances are exact in double on the mesh's double positions.
 std::vector<ClosestPoint> closest_points(const EmbreeMesh& embree, const TriangleMesh& mesh,
                                          const std::vector<glm::dvec3>& points);
 

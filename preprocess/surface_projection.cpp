@@ -20,18 +20,14 @@ bool SurfaceProjection::build(const TriangleMesh& input, const MeshAppearance* a
 namespace {
 
 /// The point of the surface that the texel at `p` with the proxy's normal `n` stands for: the
-/// nearest crossing of the line p + t n within |t| <= reach, else the closest point if it lies
-/// within reach; none (triangle -1) when the surface is farther (faces that fill holes).
-ClosestPoint surface_point(const EmbreeMesh& embree, glm::dvec3 p, glm::dvec3 n, double reach,
-                           const ClosestPoint& closest) {
+/// nearest crossing of the line p + t n within |t| <= reach (triangle -1: none).
+ClosestPoint line_crossing(const EmbreeMesh& embree, glm::dvec3 p, glm::dvec3 n, double reach) {
   ClosestPoint best;
   for (const double side : {1.0, -1.0}) {
     const RayHit hit = intersect(embree, glm::vec3(p), glm::vec3(side * n), 0.0f, float(reach));
     if (hit.hit && (best.triangle < 0 || double(hit.t) < best.distance))
       best = {hit.triangle, double(hit.u), double(hit.v), double(hit.t)};
   }
-  if (best.triangle < 0 && closest.distance <= reach)
-    best = closest;
   return best;
 }
 
@@ -44,24 +40,23 @@ glm::vec3 SurfaceProjection::base_color(const ClosestPoint& c) const {
 
 void SurfaceProjection::project(GeometryImage& image) const {
   std::vector<size_t> texels;
-  std::vector<glm::dvec3> points;
-  for (size_t t = 0; t < image.coverage.size(); ++t) {
-    if (image.coverage[t] > 0.0f) {
+  for (size_t t = 0; t < image.coverage.size(); ++t)
+    if (image.coverage[t] > 0.0f)
       texels.push_back(t);
-      points.push_back(glm::dvec3(image.position[t]));
-    }
-  }
-  const std::vector<ClosestPoint> closest = closest_points(embree_, *welded_, points);
   if (appearance_ != nullptr)
     image.albedo.assign(image.coverage.size(), glm::vec3(0.0f));
   tbb::parallel_for(size_t(0), texels.size(), [&](size_t k) {
     const size_t texel = texels[k];
-    if (appearance_ != nullptr && closest[k].triangle >= 0)
-      image.albedo[texel] = base_color(closest[k]);
-    const ClosestPoint c =
-        surface_point(embree_, points[k], glm::dvec3(image.normal[texel]), reach_, closest[k]);
-    if (c.triangle < 0)
-      return;  // keeps the proxy's point
+    const glm::dvec3 point(image.position[texel]);
+    ClosestPoint c = line_crossing(embree_, point, glm::dvec3(image.normal[texel]), reach_);
+    if (c.triangle < 0) {  // else the closest point, where it lies within reach
+      const ClosestPoint closest = closest_point(embree_, *welded_, point);
+      if (appearance_ != nullptr && closest.triangle >= 0)
+        image.albedo[texel] = base_color(closest);
+      if (closest.triangle < 0 || closest.distance > reach_)
+        return;  // keeps the proxy's point (faces that fill holes)
+      c = closest;
+    }
     const glm::ivec3& t = welded_->triangles[size_t(c.triangle)];
     const glm::dvec3 w(1.0 - c.u - c.v, c.u, c.v);
     const std::vector<glm::dvec3>& p = welded_->positions;

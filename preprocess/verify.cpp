@@ -231,21 +231,17 @@ namespace {
 
 /// The original mesh file of asset NAME: the option, the report's "source_path", or the image's
 /// source as a path (as given, or beside the asset). Empty when none exists.
-MeshSource find_original(const std::string& name, const std::string& report_path,
+MeshSource find_original(const std::string& name, const nlohmann::json& report,
                          const VerifyOptions& options, const std::string& source) {
   namespace fs = std::filesystem;
   if (!options.original.empty()) {
     return {options.original, options.original_part, options.original_outside_paths};
   }
-  std::ifstream report_file(report_path);
-  if (report_file) {
-    const nlohmann::json report = nlohmann::json::parse(report_file, nullptr, false);
-    if (report.is_object() && report.contains("source_path") && report["source_path"].is_string() &&
-        fs::exists(report["source_path"].get<std::string>())) {
-      const bool part = report.contains("mesh_part") && report["mesh_part"].is_string();
-      return {report["source_path"].get<std::string>(),
-              part ? report["mesh_part"].get<std::string>() : "", options.original_outside_paths};
-    }
+  if (report.contains("source_path") && report["source_path"].is_string() &&
+      fs::exists(report["source_path"].get<std::string>())) {
+    const bool part = report.contains("mesh_part") && report["mesh_part"].is_string();
+    return {report["source_path"].get<std::string>(),
+            part ? report["mesh_part"].get<std::string>() : "", options.original_outside_paths};
   }
   if (!source.empty()) {
     if (fs::exists(source)) {
@@ -259,15 +255,17 @@ MeshSource find_original(const std::string& name, const std::string& report_path
   return {};
 }
 
-/// Whether the report beside the asset (where there is one) says its image was built through a
-/// proxy (geometry_image.proxy).
-bool report_says_proxy(const std::string& report_path) {
+/// The report beside the asset as JSON: an empty object where there is none or it does not parse.
+nlohmann::json read_report(const std::string& report_path) {
   std::ifstream file(report_path);
-  if (!file)
-    return false;
-  const nlohmann::json report = nlohmann::json::parse(file, nullptr, false);
-  return report.is_object() && report.contains("geometry_image") &&
-         report["geometry_image"].is_object() && report["geometry_image"].contains("proxy") &&
+  nlohmann::json report = file ? nlohmann::json::parse(file, nullptr, false) : nlohmann::json();
+  return report.is_object() ? report : nlohmann::json::object();
+}
+
+/// Whether `report` says its image was built through a proxy (geometry_image.proxy.used).
+bool report_says_proxy(const nlohmann::json& report) {
+  return report.contains("geometry_image") && report["geometry_image"].is_object() &&
+         report["geometry_image"].contains("proxy") &&
          report["geometry_image"]["proxy"].is_object() &&
          report["geometry_image"]["proxy"].value("used", false);
 }
@@ -468,7 +466,8 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   }
   std::vector<Reference> references;
   references.push_back({"built", shown.parameterized_mesh, pm.mesh});
-  const MeshSource original = find_original(name, read.report, options, image.source);
+  const nlohmann::json asset_report = read_report(read.report);
+  const MeshSource original = find_original(name, asset_report, options, image.source);
   if (!original.file.empty()) {
     Reference r{"original", original.file, {}};
     std::vector<std::string> ignored;
@@ -487,7 +486,7 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
     return false;
   }
   // An image built through a proxy describes the original: its rays leave the original's surface.
-  const bool proxy = options.proxy || report_says_proxy(read.report);
+  const bool proxy = options.proxy || report_says_proxy(asset_report);
   const bool from_original = proxy && references.size() > 1;
   const std::vector<Family> families = make_families(
       field, image, from_original ? original_embree : built,

@@ -5,6 +5,7 @@
 
 #include "gfield/check.hpp"
 #include "gfield/gpu_contract.hpp"
+#include "glsl_field_tables.hpp"
 
 namespace gfield {
 namespace {
@@ -13,20 +14,7 @@ using namespace glm;          // the GLSL vocabulary of field_lines.glsl
 using namespace gfield::gpu;  // and the contract's addressing
 
 /// shaders/lib/field_lines.glsl compiled as C++ over the CPU copy of a field.
-struct GlslFieldLines {
-  const GeometryField& field;
-  int gf_samples_per_side() const { return field.samples_per_side; }
-  vec2 gf_field_nearest_texel(int entry, int column) const {
-    return field.nearest[field_nearest_index(field, entry, column)];
-  }
-  uint gf_field_word(int i) const {
-    GF_DCHECK(i >= 0 && size_t(i) < field.lines.size(), "word outside the line table");
-    return field.lines[size_t(i)];
-  }
-  vec2 gf_field_interior_texel(int i) const {
-    GF_DCHECK(i >= 0 && size_t(i) < field.interior.size(), "interior hit outside the field's");
-    return field.interior[size_t(i)];
-  }
+struct GlslFieldLines : GlslFieldTables {
 #include "../../shaders/lib/field_lines.glsl"
 };
 
@@ -190,7 +178,7 @@ glm::vec2 field_uv(const GeometryField& field, int entry, int exit, int layer) {
   if (face_of(n, entry) == face_of(n, exit)) {
     return glm::vec2(kFieldNoRay);
   }
-  GlslFieldLines reader{field};
+  GlslFieldLines reader{{field}};
   GlslFieldLines::GfLineHits line = reader.gf_line_unread();
   return reader.gf_line_hit(entry, exit, layer, line);
 }
@@ -286,7 +274,7 @@ void layered_pair(const GeometryField& field, int entry, int exit, int layers, g
 
 LineHits line_hits(const GeometryField& field, int entry, int exit) {
   LineHits hits;
-  GlslFieldLines reader{field};
+  GlslFieldLines reader{{field}};
   GlslFieldLines::GfLineHits line = reader.gf_line_unread();
   for (int layer = 0; layer < kMaxLineHits; ++layer) {
     const glm::vec2 uv = reader.gf_line_hit(entry, exit, layer, line);

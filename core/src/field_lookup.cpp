@@ -7,6 +7,7 @@
 #include "gfield/check.hpp"
 #include "gfield/gpu_contract.hpp"
 #include "gfield/printable.hpp"
+#include "glsl_field_tables.hpp"
 
 namespace gfield {
 namespace {
@@ -16,24 +17,11 @@ using namespace gfield::gpu;  // and the contract's field addressing (field_line
 
 /// shaders/lib/field_lookup.glsl compiled as C++: its functions become members of this struct,
 /// whose fetch functions read the CPU copies of the textures.
-struct GlslFieldLookup {
-  const GeometryField& field;
+struct GlslFieldLookup : GlslFieldTables {
   const GeometryImage& image;
   int layers;
 
-  int gf_samples_per_side() const { return field.samples_per_side; }
   int gf_field_layers() const { return layers; }
-  vec2 gf_field_nearest_texel(int entry, int column) const {
-    return field.nearest[field_nearest_index(field, entry, column)];
-  }
-  uint gf_field_word(int i) const {
-    GF_DCHECK(i >= 0 && size_t(i) < field.lines.size(), "word outside the line table");
-    return field.lines[size_t(i)];
-  }
-  vec2 gf_field_interior_texel(int i) const {
-    GF_DCHECK(i >= 0 && size_t(i) < field.interior.size(), "interior hit outside the field's");
-    return field.interior[size_t(i)];
-  }
   int gf_image_size() const { return image.size; }
   vec3 gf_image_position_texel(int i, int j) const {
     return image.position[texel_index(image, i, j)];
@@ -59,7 +47,7 @@ bool same_box(const Box& a, const Box& b) {
 GlslFieldLookup glsl_lookup(const FieldLookup& lookup) {
   const int layers =
       lookup.layers > 0 ? std::min(lookup.layers, lookup.field->layers) : lookup.field->layers;
-  return {*lookup.field, *lookup.image, layers};
+  return {{*lookup.field}, *lookup.image, layers};
 }
 
 /// Whether `lookup` can look `ray` up (a miss otherwise).
