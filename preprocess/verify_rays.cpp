@@ -128,8 +128,14 @@ SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, SurfaceO
   return out;
 }
 
-SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
-                                size_t count, SurfaceOffsets offsets, uint64_t seed) {
+namespace {
+
+/// The rays that leave the exact first hits of random_view_rays(box) on `mesh`: reflected about
+/// the smooth normal (angle-weighted vertex normals; about the face's normal where that would
+/// leave below the face), or with `ior` > 0 refracted into the solid (eta = 1 / ior; reflected
+/// where the refraction is total).
+SurfaceRays view_hit_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
+                          size_t count, SurfaceOffsets offsets, uint64_t seed, float ior) {
   const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
   const std::vector<Ray> view = random_view_rays(box, 4 * count, seed);
   std::vector<RayHit> hits(view.size());
@@ -154,9 +160,14 @@ SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
     g = glm::dot(d, g) < 0.0f ? g : -g;
     glm::vec3 n = glm::length(smooth) > 0.0 ? glm::vec3(glm::normalize(smooth)) : g;
     n = glm::dot(d, n) < 0.0f ? n : -n;
-    glm::vec3 r = glm::reflect(d, n);
-    if (glm::dot(r, g) <= 0.0f) {
-      r = glm::reflect(d, g);
+    glm::vec3 r = ior > 0.0f ? glm::refract(d, n, 1.0f / ior) : glm::vec3(0.0f);
+    if (ior > 0.0f && glm::dot(r, r) > 0.0f && glm::dot(r, g) < 0.0f) {
+      g = -g;  // into the solid
+    } else {
+      r = glm::reflect(d, n);
+      if (glm::dot(r, g) <= 0.0f) {
+        r = glm::reflect(d, g);
+      }
     }
     r = glm::normalize(r);
     out.rays.push_back({origin + offsets.path * g, r, 2.0f * offsets.path, gpu::GF_FAR});
@@ -165,6 +176,18 @@ SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
     out.triangles.push_back(h.triangle);
   }
   return out;
+}
+
+}  // namespace
+
+SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
+                                size_t count, SurfaceOffsets offsets, uint64_t seed) {
+  return view_hit_rays(embree, mesh, box, count, offsets, seed, 0.0f);
+}
+
+SurfaceRays glass_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
+                               size_t count, SurfaceOffsets offsets, uint64_t seed, float ior) {
+  return view_hit_rays(embree, mesh, box, count, offsets, seed, ior);
 }
 
 }  // namespace gfield

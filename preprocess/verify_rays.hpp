@@ -52,5 +52,12 @@ SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, SurfaceO
 /// face's normal where that would leave below the face (as the runtime reflects).
 SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
                                 size_t count, SurfaceOffsets offsets, uint64_t seed);
+/// Up to `count` refractions of random_view_rays(box) into the solid at their exact first hits on
+/// `embree`'s mesh `mesh` (about the smooth normal, index of refraction `ior` inside), as the
+/// runtime refracts into glass: rays that start inside the solid (facing -1 on a mesh whose
+/// normals face out), reflected where the refraction is total.
+SurfaceRays glass_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
+                               size_t count, SurfaceOffsets offsets, uint64_t seed,
+                               float ior = 1.5f);
 
 }  // namespace gfield

@@ -4,6 +4,8 @@
 // shaders/lib/field_lookup.glsl, compiled as C++, so that the runtime's GLSL gives the same answers
 // (docs/geometry-field.md).
 
+#include <array>
+#include <cstdint>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -46,11 +48,20 @@ struct FieldHit {
   glm::vec3 normal{0.0f};    ///< unit normal, same coordinates
 };
 
+/// The work of CPU lookups, counted as the shaders count it (shaders/lib/work.glsl): counts[k] for
+/// the contract's WORK_k (lookups, field and image texel fetches, Newton steps), so that a CPU
+/// lookup's cost is the GPU's.
+struct LookupWork {
+  std::array<uint64_t, gpu::WORK_COUNT> counts{};
+};
+
 /// A geometry field with the geometry image it indexes. Holds pointers: both must outlive it.
 struct FieldLookup {
   const GeometryField* field = nullptr;
   const GeometryImage* image = nullptr;
   int layers = 0;  ///< layers looked up: the first min(layers, K); 0: all K
+  /// null, or where the lookups count their work (one thread at a time)
+  LookupWork* work = nullptr;
 };
 
 /// Pairs a field with its image. False with an error when they do not belong together (different
