@@ -23,18 +23,22 @@ struct GlslFieldLookup : GlslFieldTables {
 
   int gf_field_layers() const { return layers; }
   int gf_image_size() const { return image.size; }
-  vec3 gf_image_position_texel(int i, int j) const {
-    return image.position[texel_index(image, i, j)];
+  vec4 gf_image_texel(int i, int j) const {
+    count_work(WORK_IMAGE_FETCHES, 1);
+    const size_t k = texel_index(image, i, j);
+    return vec4(image.position[k], image.coverage[k]);
   }
-  vec3 gf_image_normal_texel(int i, int j) const { return image.normal[texel_index(image, i, j)]; }
-  float gf_image_coverage_texel(int i, int j) const {
-    return image.coverage[texel_index(image, i, j)];
+  vec3 gf_image_normal_texel(int i, int j) const {
+    count_work(WORK_IMAGE_FETCHES, 1);
+    return image.normal[texel_index(image, i, j)];
   }
   vec3 gf_box_min() const { return field.box.min; }
   vec3 gf_box_max() const { return field.box.max; }
 
+#define GF_COUNT(kind, n) count_work(kind, n)
 #include "../../shaders/lib/field_lines.glsl"
 #include "../../shaders/lib/field_lookup.glsl"
+#undef GF_COUNT
 };
 
 bool same_box(const Box& a, const Box& b) {
@@ -47,7 +51,7 @@ bool same_box(const Box& a, const Box& b) {
 GlslFieldLookup glsl_lookup(const FieldLookup& lookup) {
   const int layers =
       lookup.layers > 0 ? std::min(lookup.layers, lookup.field->layers) : lookup.field->layers;
-  return {{*lookup.field}, *lookup.image, layers};
+  return {{*lookup.field, lookup.work}, *lookup.image, layers};
 }
 
 /// Whether `lookup` can look `ray` up (a miss otherwise).

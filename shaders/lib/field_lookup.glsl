@@ -1,5 +1,6 @@
-// Geometry-field lookup (Li et al. 2006, section 3.2 step 1, plus the `refined` mode of issue 4
-// and the layered lookup beyond the ray's origin of issue 15).
+// Geometry-field lookup (Li et al. 2006, section 3.2 step 1), with the `refined` mode (candidates
+// verified against the geometry image by Newton's method) and the lookup beyond a ray's origin
+// over a line's stored hits (docs/geometry-field.md, "Lookup").
 //
 // ONE source for the CPU and the GPU: this file is valid GLSL 4.50 and valid C++ with GLM, and
 // is included verbatim by core/src/field_lookup.cpp (inside a struct whose members supply the
@@ -13,9 +14,9 @@
 // the fetches it needs) and defines, before including this file (GLSL) or as members (C++):
 //   int  gf_field_layers();                 K, the hits looked up per line at most
 //   int  gf_image_size();                    n of the geometry image (n >= 2)
-//   vec3 gf_image_position_texel(int i, int j);  position texel, column i, scanline j (texelFetch)
+//   vec4 gf_image_texel(int i, int j);       position texel, column i, scanline j (texelFetch):
+//                                            xyz P, w coverage A (> 0: surface, 0: padding)
 //   vec3 gf_image_normal_texel(int i, int j);    normal texel (texelFetch)
-//   float gf_image_coverage_texel(int i, int j); coverage A (> 0: on the surface, 0: padding)
 //   vec3 gf_box_min();  vec3 gf_box_max();   the box (mesh coordinates) mapped to the unit cube
 //
 // Bilinear filtering is done here from 4 texelFetches (GL_LINEAR + GL_CLAMP_TO_EDGE semantics,
@@ -57,6 +58,10 @@
 #define GF_UNVERIFIED_MARGIN 0.5f
 // Crossings of the surface a ray leaves that gf_trace_leaving looks beyond at most.
 #define GF_SELF_CROSSINGS 2
+// The refined lookup's candidate groups (uvs within GF_GROUP_TEXELS texels, max norm, of a
+// group's first) and the most groups it searches.
+#define GF_GROUP_TEXELS 16.0f
+#define GF_GROUPS 4
 
 struct GfHit {
   bool hit;       // false: miss (or an invalid ray)
@@ -90,10 +95,17 @@ vec3 gf_image_position(vec2 uv) {
   vec2 x = gf_image_grid(uv, n);
   ivec2 c = gf_image_cell(x, n);
   vec2 f = x - vec2(c);
-  vec3 a = mix(gf_image_position_texel(c.x, c.y), gf_image_position_texel(c.x + 1, c.y), f.x);
-  vec3 b = mix(gf_image_position_texel(c.x, c.y + 1), gf_image_position_texel(c.x + 1, c.y + 1),
-               f.x);
+  vec3 a = mix(vec3(gf_image_texel(c.x, c.y)), vec3(gf_image_texel(c.x + 1, c.y)), f.x);
+  vec3 b = mix(vec3(gf_image_texel(c.x, c.y + 1)), vec3(gf_image_texel(c.x + 1, c.y + 1)), f.x);
   return mix(a, b, f.y);
+}
+
+// The position of the texel nearest to uv: one fetch, within half a texel's size of the
+// bilinear position; enough to place a stored hit along a ray.
+vec3 gf_image_position_nearest(vec2 uv) {
+  int n = gf_image_size();
+  ivec2 c = ivec2(floor(gf_image_grid(uv, n) + 0.5f));
+  return vec3(gf_image_texel(c.x, c.y));
 }
 
 // Bilinear normal at uv, renormalised.
@@ -198,12 +210,12 @@ bool gf_clear_of_start(vec2 uv, vec3 p, vec3 start, float texel) {
   return height * height > GF_SEAM_CLEARANCE * GF_SEAM_CLEARANCE * texel;
 }
 
-// Covered corners (0..4) of the patch with lower-left texel c.
-int gf_patch_coverage(ivec2 c) {
-  int covered = gf_image_coverage_texel(c.x, c.y) > 0.0f ? 1 : 0;
-  covered += gf_image_coverage_texel(c.x + 1, c.y) > 0.0f ? 1 : 0;
-  covered += gf_image_coverage_texel(c.x, c.y + 1) > 0.0f ? 1 : 0;
-  covered += gf_image_coverage_texel(c.x + 1, c.y + 1) > 0.0f ? 1 : 0;
+// Covered corners (0..4) of a patch, from its 4 texels' coverage.
+int gf_patch_coverage(vec4 coverage) {
+  int covered = coverage.x > 0.0f ? 1 : 0;
+  covered += coverage.y > 0.0f ? 1 : 0;
+  covered += coverage.z > 0.0f ? 1 : 0;
+  covered += coverage.w > 0.0f ? 1 : 0;
   return covered;
 }
 
@@ -220,14 +232,27 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
   int n = gf_image_size();
   vec2 x = gf_image_grid(uv, n);
   p = vec3(0.0f);
+  // The patch's 4 texels, fetched when the walk enters it.
+  ivec2 cell = ivec2(-1);
+  vec4 t00 = vec4(0.0f);
+  vec4 t10 = vec4(0.0f);
+  vec4 t01 = vec4(0.0f);
+  vec4 t11 = vec4(0.0f);
   for (int iteration = 0; iteration < GF_NEWTON_ITERATIONS; iteration++) {
     GF_COUNT(WORK_NEWTON_STEPS, 1);
     ivec2 c = gf_image_cell(x, n);
+    if (c != cell) {
+      cell = c;
+      t00 = gf_image_texel(c.x, c.y);
+      t10 = gf_image_texel(c.x + 1, c.y);
+      t01 = gf_image_texel(c.x, c.y + 1);
+      t11 = gf_image_texel(c.x + 1, c.y + 1);
+    }
     vec2 f = x - vec2(c);
-    vec3 p00 = gf_image_position_texel(c.x, c.y);
-    vec3 p10 = gf_image_position_texel(c.x + 1, c.y);
-    vec3 p01 = gf_image_position_texel(c.x, c.y + 1);
-    vec3 p11 = gf_image_position_texel(c.x + 1, c.y + 1);
+    vec3 p00 = vec3(t00);
+    vec3 p10 = vec3(t10);
+    vec3 p01 = vec3(t01);
+    vec3 p11 = vec3(t11);
     vec3 a = mix(p00, p10, f.x);
     vec3 b = mix(p01, p11, f.x);
     p = mix(a, b, f.y);
@@ -236,7 +261,7 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
     vec2 r = vec2(dot(p - o, e1), dot(p - o, e2));
     if (dot(r, r) <= tolerance * tolerance) {
       uv = (x + 0.5f) / float(n);
-      int covered = gf_patch_coverage(c);
+      int covered = gf_patch_coverage(vec4(t00.w, t10.w, t01.w, t11.w));
       return covered == 4 ||
              (covered > 0 && gf_clear_of_start(uv, p, start, max(dot(pu, pu), dot(pv, pv))));
     }
@@ -279,6 +304,11 @@ struct GfLine {
   float t_max;
   bool last;    // the last hit: the table read from the exit side
   bool beyond;  // the range starts inside the box: layers before the origin are skipped
+  // Refined, beyond the origin: the crossings the ray can meet first. The hits of a line
+  // through a closed surface alternate from its entry sample: entering the solid (layers 0, 2,
+  // ...), leaving it (1, 3, ...). A ray starting in the open meets an entering crossing first
+  // (parity 0), one starting inside the solid a leaving one (1); -1: unknown, any layer.
+  int parity;
   float margin;  // GF_UNVERIFIED_MARGIN in units of t
   ivec4 k_entry;
   ivec4 k_exit;
@@ -302,12 +332,37 @@ int gf_layer_beyond(GF_IN(GfLine) line, int layer, int entry, int exit, float ma
     if (!line.beyond || l == gf_field_layers() - 1) {
       return l;
     }
-    float t = dot(gf_image_position(uv) - line.o, line.d) / dot(line.d, line.d);
+    float t = dot(gf_image_position_nearest(uv) - line.o, line.d) / dot(line.d, line.d);
     if (line.last ? t <= line.t_max - margin : t >= line.t_min + margin) {
       return l;
     }
   }
   return -1;
+}
+
+// The first stored hit beyond the origin of the pair (entry, exit) whose first hit is uv (a hit):
+// gf_layer_beyond without a margin, with layer 0 already read; (-1, -1) when none.
+// With a known parity, only the layers of that parity count (the crossings of the surface the
+// ray starts on, whatever their place, have the other one).
+vec2 gf_first_beyond(GF_IN(GfLine) line, int entry, int exit, vec2 uv,
+                     GF_INOUT(GfLineHits) hits) {
+  if (!line.beyond || gf_field_layers() == 1) {
+    return uv;
+  }
+  int step = line.parity < 0 ? 1 : 2;
+  for (int l = max(line.parity, 0); l < gf_field_layers(); l += step) {
+    if (l > 0) {
+      uv = gf_line_hit(entry, exit, l, hits);
+      if (uv.x < 0.0f) {
+        return uv;
+      }
+    }
+    float t = dot(gf_image_position_nearest(uv) - line.o, line.d) / dot(line.d, line.d);
+    if (line.last ? t <= line.t_max : t >= line.t_min) {
+      return uv;
+    }
+  }
+  return vec2(-1.0f);
 }
 
 // GF_MODE_NEAREST: the first stored hit beyond the origin (GF_UNVERIFIED_MARGIN) of the nearest
@@ -343,13 +398,6 @@ GfHit gf_trace_linear(GF_IN(GfLine) line) {
   return gf_hit_at(line.o, line.d, line.t_min, line.t_max, uv_sum / weight);
 }
 
-// GF_MODE_REFINED: for each of the 16 pairs, its stored hits that project beyond t_min in order
-// along the line, each refined with gf_refine against the ray until one is verified in
-// [t_min, t_max]; the nearest (for `last`, the farthest) of the pairs' verified hits. A candidate
-// verified before t_min (the surface the ray starts from, or one behind it) hands over to the
-// pair's next layer; one that fails to verify (the ray passes beside that surface) to the layer
-// after next: crossings of a closed surface alternate between entering and leaving it, and the
-// next one leaves the part the ray missed.
 // An orthonormal basis e1, e2 of the plane orthogonal to d (Duff et al. 2017).
 void gf_orthogonal_basis(vec3 d, GF_OUT(vec3) e1, GF_OUT(vec3) e2) {
   vec3 dn = normalize(d);
@@ -360,66 +408,219 @@ void gf_orthogonal_basis(vec3 d, GF_OUT(vec3) e1, GF_OUT(vec3) e2) {
   e2 = vec3(kb, s + dn.y * dn.y * ka, -dn.y);
 }
 
+// The refined lookup's candidates: the pairs' uvs, grouped. A uv within GF_GROUP_TEXELS texels
+// (max norm) of a group's first uv joins that group; GF_GROUPS groups at most.
+struct GfGroups {
+  vec2 first[GF_GROUPS];
+  vec3 sum[GF_GROUPS];     // xy: the weighted sum of the members' uvs, z: their weight
+  vec3 best[GF_GROUPS];    // xy: the uv of the heaviest member, z: its weight
+  float place[GF_GROUPS];  // where the group lies along the ray (the visiting order); GF_FAR: visited
+  int count;
+  float weight;  // of the pairs whose line hits at all
+  vec2 member[16];   // every candidate, in pair order
+  ivec2 source[16];  // its pair (4 * entry + exit, of the 2 x 2 x 2 x 2) and layer
+  int members;
+};
+
+// Adds candidate uv of weight w to `groups`.
+void gf_group_add(GF_INOUT(GfGroups) groups, vec2 uv, float w, float reach) {
+  int g = 0;
+  while (g < groups.count &&
+         max(abs(uv.x - groups.first[g].x), abs(uv.y - groups.first[g].y)) > reach) {
+    g++;
+  }
+  if (g == GF_GROUPS) {
+    return;
+  }
+  if (g == groups.count) {
+    groups.first[g] = uv;
+    groups.sum[g] = vec3(0.0f);
+    groups.best[g] = vec3(uv, -1.0f);
+    groups.place[g] = 0.0f;
+    groups.count++;
+  }
+  // A pair at a sample itself has weight 0: it still places its group.
+  groups.sum[g] += vec3((w + 1.0e-6f) * uv, w + 1.0e-6f);
+  if (w > groups.best[g].z) {
+    groups.best[g] = vec3(uv, w);
+  }
+}
+
+// The mean uv of group g.
+vec2 gf_group_uv(GF_IN(GfGroups) groups, int g) {
+  return vec2(groups.sum[g].x, groups.sum[g].y) / groups.sum[g].z;
+}
+
+// The 16 pairs' first stored hits beyond the origin, grouped, each group placed along the ray
+// (from the texel nearest to its mean uv; one group needs no place).
+GfGroups gf_gather_groups(GF_IN(GfLine) line) {
+  GfGroups groups;
+  groups.count = 0;
+  groups.weight = 0.0f;
+  groups.members = 0;
+  float reach = GF_GROUP_TEXELS / float(gf_image_size());
+  for (int i = 0; i < 4; i++) {
+    for (int j = 0; j < 4; j++) {
+      GfLineHits hits = gf_line_unread();
+      vec2 uv = gf_line_hit(line.k_entry[i], line.k_exit[j], 0, hits);
+      if (uv.x < 0.0f) {
+        continue;
+      }
+      float w = line.w_entry[i] * line.w_exit[j];
+      groups.weight += w;
+      uv = gf_first_beyond(line, line.k_entry[i], line.k_exit[j], uv, hits);
+      if (uv.x >= 0.0f) {
+        gf_group_add(groups, uv, w, reach);
+        groups.member[groups.members] = uv;
+        groups.source[groups.members] = ivec2(4 * i + j, hits.count < 0 ? 0 : -1);
+        groups.members++;
+      }
+    }
+  }
+  for (int g = 0; g < groups.count && groups.count > 1; g++) {
+    float t = dot(gf_image_position_nearest(gf_group_uv(groups, g)) - line.o, line.d);
+    groups.place[g] = line.last ? -t : t;
+  }
+  return groups;
+}
+
+// The unvisited group nearest along the ray (-1: none), marked visited.
+int gf_next_group(GF_INOUT(GfGroups) groups) {
+  int g = -1;
+  for (int k = 0; k < groups.count; k++) {
+    if (groups.place[k] < GF_FAR && (g < 0 || groups.place[k] < groups.place[g])) {
+      g = k;
+    }
+  }
+  if (g >= 0) {
+    groups.place[g] = GF_FAR;
+  }
+  return g;
+}
+
+// The index (0..3) of the largest of w's components.
+int gf_heaviest(vec4 w) {
+  int k = 0;
+  for (int i = 1; i < 4; i++) {
+    if (w[i] > w[k]) {
+      k = i;
+    }
+  }
+  return k;
+}
+
+// GF_MODE_REFINED: the 16 pairs' first stored hits beyond the origin are candidates, grouped
+// (GfGroups: away from silhouettes and seams the pairs' uvs agree, and one group is the rule);
+// one Newton search (gf_refine) per group from its weighted mean uv, in order along the ray
+// (nearest first; for `last`, farthest first). The first search that verifies a hit in
+// [t_min, t_max] is the answer; none is a miss. A range that starts inside the box first tries
+// the nearest pair alone (its line read past the hits behind the origin costs most there), and
+// gathers the groups only when that candidate does not verify.
 GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
-  GfHit result = gf_miss();
   vec3 e1;
   vec3 e2;
   gf_orthogonal_basis(line.d, e1, e2);
   float tolerance = GF_NEWTON_TOLERANCE * diagonal;
-  // When nearly all of the neighbourhood's lines hit, the surface around the ray is closed and a
-  // chart border there is a seam.
-  float weight = 0.0f;
-  for (int i = 0; i < 4; i++) {
-    for (int j = 0; j < 4; j++) {
-      GfLineHits nearest_only = gf_line_unread();
-      if (gf_line_hit(line.k_entry[i], line.k_exit[j], 0, nearest_only).x >= 0.0f) {
-        weight += line.w_entry[i] * line.w_exit[j];
-      }
-    }
-  }
-  bool seams = weight >= GF_SEAM_WEIGHT;
   vec3 start = line.o + (line.last ? line.t_max : line.t_min) * line.d;
-  for (int i = 0; i < 4; i++) {
-    for (int j = 0; j < 4; j++) {
-      GfLineHits hits = gf_line_unread();
-      // One call of gf_layer_beyond (each call is inlined: see gf_trace_from).
-      for (int next = 0; next < gf_field_layers();) {
-        vec2 uv;
-        int layer = gf_layer_beyond(line, next, line.k_entry[i], line.k_exit[j], 0.0f, uv, hits);
-        if (layer < 0) {
-          break;
-        }
-        vec3 p;
-        next = layer + 2;
-        if (gf_refine(line.o, e1, e2, tolerance, seams, start, uv, p)) {
-          float t = dot(p - line.o, line.d) / dot(line.d, line.d);
-          if (t >= line.t_min && t <= line.t_max) {
-            if (!result.hit || (line.last ? t > result.t : t < result.t)) {
-              result.hit = true;
-              result.t = t;
-              result.uv = uv;
-              result.position = p;
-            }
-            break;
+  GfGroups groups;
+  groups.count = 0;
+  groups.weight = 0.0f;
+  groups.members = 0;
+  bool gathered = !line.beyond;
+  if (line.beyond) {
+    int i = gf_heaviest(line.w_entry);
+    int j = gf_heaviest(line.w_exit);
+    GfLineHits hits = gf_line_unread();
+    vec2 uv = gf_line_hit(line.k_entry[i], line.k_exit[j], 0, hits);
+    if (uv.x >= 0.0f) {
+      uv = gf_first_beyond(line, line.k_entry[i], line.k_exit[j], uv, hits);
+    }
+    if (uv.x >= 0.0f) {
+      gf_group_add(groups, uv, 1.0f, 0.0f);
+    }
+  } else {
+    groups = gf_gather_groups(line);
+  }
+  // When nearly all of the neighbourhood's lines hit, the surface around the ray is closed and a
+  // chart border there is a seam (unknown for the nearest pair alone: no seams then). A group
+  // whose mean does not verify is searched again from its heaviest member; when no group gives
+  // a hit to a range that starts outside the box, every candidate is searched on its own (rays
+  // beside a silhouette, groups that mix surfaces).
+  int g = -1;
+  bool retry = false;
+  int member = 0;
+  bool deeper = false;
+  float texel = 1.0f / float(gf_image_size());
+  for (int visit = 0; visit <= 2 * GF_GROUPS + 32; visit++) {
+    vec2 uv;
+    if (retry) {
+      uv = vec2(groups.best[g].x, groups.best[g].y);
+      retry = false;
+    } else {
+      g = gf_next_group(groups);
+      if (g < 0 && !gathered) {
+        groups = gf_gather_groups(line);
+        gathered = true;
+        g = gf_next_group(groups);
+      }
+      if (g >= 0) {
+        uv = gf_group_uv(groups, g);
+        vec2 off = abs(vec2(groups.best[g].x, groups.best[g].y) - uv);
+        retry = max(off.x, off.y) > texel;
+      } else if (member < groups.members && !line.beyond) {
+        // A member that fails hands over to the second crossing after it along its line (the
+        // ray passed beside the part the line hits; crossings alternate), the first time.
+        uv = groups.member[member];
+        ivec2 source = groups.source[member];
+        if (deeper) {
+          GfLineHits hits = gf_line_unread();
+          uv = gf_line_hit(line.k_entry[source.x / 4], line.k_exit[source.x % 4], source.y + 2,
+                           hits);
+          deeper = false;
+          member++;
+          if (uv.x < 0.0f) {
+            continue;
           }
-          if (line.last ? t < line.t_min : t > line.t_max) {
-            break;  // beyond the range: the pair's next layers lie farther still
+        } else {
+          deeper = source.y >= 0;
+          if (!deeper) {
+            member++;
           }
-          next = layer + 1;
         }
+      } else {
+        break;
       }
     }
+    vec3 p;
+    bool seams = gathered && groups.weight >= GF_SEAM_WEIGHT;
+    if (!gf_refine(line.o, e1, e2, tolerance, seams, start, uv, p)) {
+      continue;
+    }
+    retry = false;
+    if (deeper) {
+      deeper = false;
+      member++;
+    }
+    float t = dot(p - line.o, line.d) / dot(line.d, line.d);
+    if (t >= line.t_min && t <= line.t_max) {
+      GfHit result;
+      result.hit = true;
+      result.t = t;
+      result.uv = uv;
+      result.position = p;
+      result.normal = gf_image_normal(uv);
+      return result;
+    }
   }
-  if (result.hit) {
-    result.normal = gf_image_normal(result.uv);
-  }
-  return result;
+  return gf_miss();
 }
 
 // The first hit beyond the ray's origin (last = false) or the last hit before its end (last =
 // true: the field read from the exit side, i.e. the reversed line) of o + t d, t in
 // [t_min, t_max], in mesh coordinates, over the stored hits of all layers (see the modes above).
-GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
+// `side`: where the ray starts, for the refined lookup of a range that starts inside the box: +1
+// in the open, -1 inside the solid, 0 unknown (GfLine.parity).
+GfHit gf_trace_side(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last, float side) {
   GF_COUNT(WORK_LOOKUPS, 1);
   if (!(dot(d, d) > 0.0f)) {
     return gf_miss();  // zero or NaN direction
@@ -453,6 +654,7 @@ GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
   // A start within 10^-4 of the chord from the box face is on the face (box-face rays, t0 ~ 0).
   float face = 1.0e-4f * (t1 - t0);
   line.beyond = last ? t_max < t1 - face : t_min > t0 + face;
+  line.parity = last || side == 0.0f ? -1 : (side > 0.0f ? 0 : 1);
   line.margin = GF_UNVERIFIED_MARGIN * diagonal / (float(n) * sqrt(dot(d, d)));
   if (mode == GF_MODE_NEAREST) {
     line.k_entry = ivec4(gf_nearest_sample(face_entry, st_entry, n));
@@ -467,6 +669,10 @@ GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
     return gf_trace_linear(line);
   }
   return gf_trace_refined(line, diagonal);
+}
+
+GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
+  return gf_trace_side(o, d, t_min, t_max, mode, last, 0.0f);
 }
 
 // The hit of o + t d, t in [t_min, t_max], on the surface near geometry-image uv (a hit found for
@@ -509,7 +715,7 @@ GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, 
   bool parallel = false;  // looking up the parallel ray from self_origin
   int crossings = 0;
   for (int i = 0; i < GF_SELF_CROSSINGS + 2; i++) {
-    GfHit h = gf_trace(start, d, from, to, mode, false);
+    GfHit h = gf_trace_side(start, d, from, to, mode, false, leaving ? facing : 0.0f);
     if (!leaving) {
       return h;
     }
@@ -525,6 +731,9 @@ GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, 
     }
     if (h.hit && h.t >= self_t_min) {
       return h;
+    }
+    if (!h.hit && mode == GF_MODE_REFINED) {
+      return h;  // the refined lookup knew the side the ray starts on: no crossing is a miss
     }
     if (h.hit && crossings < GF_SELF_CROSSINGS) {
       if (facing * dot(h.normal, d) < 0.0f) {

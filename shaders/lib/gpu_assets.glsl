@@ -76,13 +76,9 @@ int gf_image_size() { return gs_image_size; }
 ivec3 gs_image_texel(int i, int j) {
   return ivec3(gs_image_origin + ivec2(i, j), gs_layer);
 }
-vec3 gf_image_position_texel(int i, int j) {
+vec4 gf_image_texel(int i, int j) {
   WORK_ADD(WORK_IMAGE_FETCHES, 1);
-  return texelFetch(u_gi_positions, gs_image_texel(i, j), 0).xyz;
-}
-float gf_image_coverage_texel(int i, int j) {
-  WORK_ADD(WORK_IMAGE_FETCHES, 1);
-  return texelFetch(u_gi_positions, gs_image_texel(i, j), 0).w;
+  return texelFetch(u_gi_positions, gs_image_texel(i, j), 0);
 }
 vec3 gf_image_normal_texel(int i, int j) {
   WORK_ADD(WORK_IMAGE_FETCHES, 1);

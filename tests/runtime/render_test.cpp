@@ -235,11 +235,10 @@ TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
   }
 }
 
-/// The work of one frame of the "mirror" test scene at 64^2, depth 4, 1 spp: per counter of
+/// The work of one frame of test scene `test` at 64^2, depth 4, 1 spp: per counter of
 /// work_counters.hpp, for the refined field lookups and for the BVH.
-nlohmann::json work_of_mirror_scene() {
-  const TestScene test = test_scenes()[0];
-  const fs::path file = kDir / "work.json";
+nlohmann::json work_of_scene(const TestScene& test) {
+  const fs::path file = kDir / (std::string("work-") + test.name + ".json");
   std::ofstream(file) << test.text;
   Scene scene;
   std::string error;
@@ -266,27 +265,43 @@ nlohmann::json work_of_mirror_scene() {
 }
 
 TEST_F(RenderTest, WorkPerFrameStaysWithinItsCommittedBaseline) {
-  // A guard that counts work, not time (issue 27): texel fetches, Newton steps and BVH nodes are
-  // the same on any device. A rise over 10% fails; after a change that is meant to do more (or
-  // less) work, GFIELD_WRITE_WORK_BASELINES=1 rewrites the baseline file, to be committed.
+  // A guard that counts work, not time: texel fetches, Newton steps and BVH nodes are the same on
+  // any device. The mirror scene and the refraction (glass) scene; a rise over 10% fails; after a
+  // change that is meant to do more (or less) work, GFIELD_WRITE_WORK_BASELINES=1 rewrites the
+  // baseline file, to be committed.
   const fs::path baselines = fs::path(GFIELD_TESTS_DIR) / "runtime" / "work_baselines.json";
-  const nlohmann::json work = work_of_mirror_scene();
+  nlohmann::json work;
+  for (const TestScene& test : test_scenes()) {
+    if (std::string(test.name) == "mirror" || std::string(test.name) == "refraction")
+      work[test.name] = work_of_scene(test);
+  }
   if (const char* write = std::getenv("GFIELD_WRITE_WORK_BASELINES"); write && *write == '1') {
     std::ofstream(baselines) << work.dump(2) << "\n";
     GTEST_SKIP() << "wrote " << baselines;
   }
   const nlohmann::json baseline = nlohmann::json::parse(std::ifstream(baselines));
-  for (const auto& [intersect, counts] : baseline.items()) {
-    for (const auto& [name, count] : counts.items()) {
-      const double now = work[intersect][name].get<double>();
-      std::printf("%s %s: %.0f (baseline %.0f)\n", intersect.c_str(), name.c_str(), now,
-                  count.get<double>());
-      EXPECT_LE(now, 1.1 * count.get<double>()) << intersect << " " << name;
+  ASSERT_EQ(baseline.size(), 2u);
+  for (const auto& [scene, by_intersect] : baseline.items()) {
+    for (const auto& [intersect, counts] : by_intersect.items()) {
+      for (const auto& [name, count] : counts.items()) {
+        const double now = work[scene][intersect][name].get<double>();
+        std::printf("%s %s %s: %.0f (baseline %.0f)\n", scene.c_str(), intersect.c_str(),
+                    name.c_str(), now, count.get<double>());
+        EXPECT_LE(now, 1.1 * count.get<double>()) << scene << " " << intersect << " " << name;
+      }
     }
+    EXPECT_GT(work[scene]["field"]["field lookups"].get<double>(), 0.0) << scene;
+    EXPECT_GT(work[scene]["bvh"]["BVH nodes"].get<double>(), 0.0) << scene;
+    EXPECT_EQ(work[scene]["bvh"]["field lookups"].get<double>(), 0.0) << scene;
   }
-  EXPECT_GT(work["field"]["field lookups"].get<double>(), 0.0);
-  EXPECT_GT(work["bvh"]["BVH nodes"].get<double>(), 0.0);
-  EXPECT_EQ(work["bvh"]["field lookups"].get<double>(), 0.0);
+  for (const char* scene : {"mirror", "refraction"}) {
+    const nlohmann::json& f = work[scene]["field"];
+    const double lookups = f["field lookups"].get<double>();
+    std::printf("%s: %.1f field + %.1f image fetches, %.2f Newton steps per lookup\n", scene,
+                f["field texel fetches"].get<double>() / lookups,
+                f["image texel fetches"].get<double>() / lookups,
+                f["Newton steps"].get<double>() / lookups);
+  }
 }
 
 }  // namespace
