@@ -544,8 +544,8 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   // When nearly all of the neighbourhood's lines hit, the surface around the ray is closed and a
   // chart border there is a seam (unknown for the nearest pair alone: no seams then). A group
   // whose mean does not verify is searched again from its heaviest member; when no group gives
-  // a hit to a range that starts outside the box, every candidate is searched on its own (rays
-  // beside a silhouette, groups that mix surfaces).
+  // a hit, every candidate is searched on its own (rays beside a silhouette, groups that mix
+  // surfaces).
   int g = -1;
   bool retry = false;
   int member = 0;
@@ -567,7 +567,7 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
         uv = gf_group_uv(groups, g);
         vec2 off = abs(vec2(groups.best[g].x, groups.best[g].y) - uv);
         retry = max(off.x, off.y) > texel;
-      } else if (member < groups.members && !line.beyond) {
+      } else if (member < groups.members) {
         // A member that fails hands over to the second crossing after it along its line (the
         // ray passed beside the part the line hits; crossings alternate), the first time.
         uv = groups.member[member];
