@@ -186,21 +186,26 @@ void gf_sample_cell(int face, vec2 st, int n, GF_OUT(ivec4) k, GF_OUT(vec4) w) {
   w = vec4((1.0f - f.x) * (1.0f - f.y), f.x * (1.0f - f.y), (1.0f - f.x) * f.y, f.x * f.y);
 }
 
-// A hit at geometry-image uv for the ray o + t d: position and normal from the image, t by
-// projection onto the ray; a miss when t falls outside [t_min, t_max].
-GfHit gf_hit_at(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
-  GfHit h = gf_miss();
-  vec3 p = gf_image_position(uv);
-  float t = dot(p - o, d) / dot(d, d);
-  if (t < t_min || t > t_max) {
-    return h;
-  }
+// The hit at ray parameter t, geometry-image uv and point p, its normal from the image.
+GfHit gf_hit(float t, vec2 uv, vec3 p) {
+  GfHit h;
   h.hit = true;
   h.t = t;
   h.uv = uv;
   h.position = p;
   h.normal = gf_image_normal(uv);
   return h;
+}
+
+// A hit at geometry-image uv for the ray o + t d: position and normal from the image, t by
+// projection onto the ray; a miss when t falls outside [t_min, t_max].
+GfHit gf_hit_at(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
+  vec3 p = gf_image_position(uv);
+  float t = dot(p - o, d) / dot(d, d);
+  if (t < t_min || t > t_max) {
+    return gf_miss();
+  }
+  return gf_hit(t, uv, p);
 }
 
 // Whether a chart-border point p (at uv, patches of squared size `texel`) is clear of the ray's
@@ -451,24 +456,41 @@ vec2 gf_group_uv(GF_IN(GfGroups) groups, int g) {
   return vec2(groups.sum[g].x, groups.sum[g].y) / groups.sum[g].z;
 }
 
-// The 16 pairs' first stored hits beyond the origin, grouped, each group placed along the ray
-// (from the texel nearest to its mean uv; one group needs no place).
-GfGroups gf_gather_groups(GF_IN(GfLine) line) {
+// No candidates.
+GfGroups gf_no_groups() {
   GfGroups groups;
   groups.count = 0;
   groups.weight = 0.0f;
   groups.members = 0;
+  return groups;
+}
+
+// The candidate of pair (i, j) of the 2 x 2 entry and exit samples: its first stored hit beyond
+// the origin, (-1, -1) when none; `hits` holds its line as read. `crossed`: whether its line
+// hits the surface at all.
+vec2 gf_pair_candidate(GF_IN(GfLine) line, int i, int j, GF_INOUT(GfLineHits) hits,
+                       GF_OUT(bool) crossed) {
+  hits = gf_line_unread();
+  vec2 uv = gf_line_hit(line.k_entry[i], line.k_exit[j], 0, hits);
+  crossed = uv.x >= 0.0f;
+  if (!crossed) {
+    return uv;
+  }
+  return gf_first_beyond(line, line.k_entry[i], line.k_exit[j], uv, hits);
+}
+
+// The 16 pairs' candidates, grouped, each group placed along the ray (from the texel nearest to
+// its mean uv; one group needs no place).
+GfGroups gf_gather_groups(GF_IN(GfLine) line) {
+  GfGroups groups = gf_no_groups();
   float reach = GF_GROUP_TEXELS / float(gf_image_size());
   for (int i = 0; i < 4; i++) {
     for (int j = 0; j < 4; j++) {
-      GfLineHits hits = gf_line_unread();
-      vec2 uv = gf_line_hit(line.k_entry[i], line.k_exit[j], 0, hits);
-      if (uv.x < 0.0f) {
-        continue;
-      }
+      GfLineHits hits;
+      bool crossed;
+      vec2 uv = gf_pair_candidate(line, i, j, hits, crossed);
       float w = line.w_entry[i] * line.w_exit[j];
-      groups.weight += w;
-      uv = gf_first_beyond(line, line.k_entry[i], line.k_exit[j], uv, hits);
+      groups.weight += crossed ? w : 0.0f;
       if (uv.x >= 0.0f) {
         gf_group_add(groups, uv, w, reach);
         groups.member[groups.members] = uv;
@@ -509,107 +531,110 @@ int gf_heaviest(vec4 w) {
   return k;
 }
 
+// Where the refined lookup's search of its candidates stands (gf_next_candidate).
+struct GfSearch {
+  GfGroups groups;
+  bool gathered;  // `groups` holds the 16 pairs' candidates (else the nearest pair's at most)
+  int group;      // the group searched last
+  bool retry;     // search `group` again, from its heaviest member
+  int member;     // the next candidate searched on its own
+  bool deeper;    // next: the second crossing after `member` along its line
+};
+
+// The search's start: the 16 pairs' candidates, or for a range that starts inside the box the
+// nearest pair's alone (reading a line past the hits behind the origin costs most there).
+GfSearch gf_search_start(GF_IN(GfLine) line) {
+  GfSearch s;
+  s.groups = gf_no_groups();
+  s.gathered = !line.beyond;
+  s.group = -1;
+  s.retry = false;
+  s.member = 0;
+  s.deeper = false;
+  if (!line.beyond) {
+    s.groups = gf_gather_groups(line);
+    return s;
+  }
+  GfLineHits hits;
+  bool crossed;
+  vec2 uv = gf_pair_candidate(line, gf_heaviest(line.w_entry), gf_heaviest(line.w_exit), hits,
+                              crossed);
+  if (uv.x >= 0.0f) {
+    gf_group_add(s.groups, uv, 1.0f, 0.0f);
+  }
+  return s;
+}
+
+// The next uv a Newton search starts from; false when none is left. In order: the groups along
+// the ray, each from its mean uv and, where that differs by more than a texel, again from its
+// heaviest member (s.retry, cleared when a search verifies); the 16 pairs' groups once the
+// nearest pair's are spent; then every candidate on its own (rays beside a silhouette, groups
+// that mix surfaces), one read from layer 0 also followed by the second crossing after it
+// (the ray passed beside the part its line hits; crossings alternate).
+bool gf_next_candidate(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
+  if (s.retry) {
+    uv = vec2(s.groups.best[s.group].x, s.groups.best[s.group].y);
+    s.retry = false;
+    return true;
+  }
+  s.group = gf_next_group(s.groups);
+  if (s.group < 0 && !s.gathered) {
+    s.groups = gf_gather_groups(line);
+    s.gathered = true;
+    s.group = gf_next_group(s.groups);
+  }
+  if (s.group >= 0) {
+    uv = gf_group_uv(s.groups, s.group);
+    vec2 off = abs(vec2(s.groups.best[s.group].x, s.groups.best[s.group].y) - uv);
+    s.retry = max(off.x, off.y) > 1.0f / float(gf_image_size());
+    return true;
+  }
+  while (s.member < s.groups.members) {
+    ivec2 source = s.groups.source[s.member];
+    if (!s.deeper) {
+      uv = s.groups.member[s.member];
+      s.deeper = source.y >= 0;
+      s.member += s.deeper ? 0 : 1;
+      return true;
+    }
+    GfLineHits hits = gf_line_unread();
+    uv = gf_line_hit(line.k_entry[source.x / 4], line.k_exit[source.x % 4], source.y + 2, hits);
+    s.deeper = false;
+    s.member++;
+    if (uv.x >= 0.0f) {
+      return true;
+    }
+  }
+  return false;
+}
+
 // GF_MODE_REFINED: the 16 pairs' first stored hits beyond the origin are candidates, grouped
 // (GfGroups: away from silhouettes and seams the pairs' uvs agree, and one group is the rule);
-// one Newton search (gf_refine) per group from its weighted mean uv, in order along the ray
-// (nearest first; for `last`, farthest first). The first search that verifies a hit in
-// [t_min, t_max] is the answer; none is a miss. A range that starts inside the box first tries
-// the nearest pair alone (its line read past the hits behind the origin costs most there), and
-// gathers the groups only when that candidate does not verify.
+// Newton searches (gf_refine) from them in the order of gf_next_candidate. The first search that
+// verifies a hit in [t_min, t_max] is the answer; none is a miss. When nearly all of the
+// neighbourhood's lines hit, the surface around the ray is closed and a chart border there is a
+// seam (unknown for the nearest pair alone: no seams then).
 GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   vec3 e1;
   vec3 e2;
   gf_orthogonal_basis(line.d, e1, e2);
   float tolerance = GF_NEWTON_TOLERANCE * diagonal;
   vec3 start = line.o + (line.last ? line.t_max : line.t_min) * line.d;
-  GfGroups groups;
-  groups.count = 0;
-  groups.weight = 0.0f;
-  groups.members = 0;
-  bool gathered = !line.beyond;
-  if (line.beyond) {
-    int i = gf_heaviest(line.w_entry);
-    int j = gf_heaviest(line.w_exit);
-    GfLineHits hits = gf_line_unread();
-    vec2 uv = gf_line_hit(line.k_entry[i], line.k_exit[j], 0, hits);
-    if (uv.x >= 0.0f) {
-      uv = gf_first_beyond(line, line.k_entry[i], line.k_exit[j], uv, hits);
-    }
-    if (uv.x >= 0.0f) {
-      gf_group_add(groups, uv, 1.0f, 0.0f);
-    }
-  } else {
-    groups = gf_gather_groups(line);
-  }
-  // When nearly all of the neighbourhood's lines hit, the surface around the ray is closed and a
-  // chart border there is a seam (unknown for the nearest pair alone: no seams then). A group
-  // whose mean does not verify is searched again from its heaviest member; when no group gives
-  // a hit, every candidate is searched on its own (rays beside a silhouette, groups that mix
-  // surfaces).
-  int g = -1;
-  bool retry = false;
-  int member = 0;
-  bool deeper = false;
-  float texel = 1.0f / float(gf_image_size());
-  for (int visit = 0; visit <= 2 * GF_GROUPS + 32; visit++) {
-    vec2 uv;
-    if (retry) {
-      uv = vec2(groups.best[g].x, groups.best[g].y);
-      retry = false;
-    } else {
-      g = gf_next_group(groups);
-      if (g < 0 && !gathered) {
-        groups = gf_gather_groups(line);
-        gathered = true;
-        g = gf_next_group(groups);
-      }
-      if (g >= 0) {
-        uv = gf_group_uv(groups, g);
-        vec2 off = abs(vec2(groups.best[g].x, groups.best[g].y) - uv);
-        retry = max(off.x, off.y) > texel;
-      } else if (member < groups.members) {
-        // A member that fails hands over to the second crossing after it along its line (the
-        // ray passed beside the part the line hits; crossings alternate), the first time.
-        uv = groups.member[member];
-        ivec2 source = groups.source[member];
-        if (deeper) {
-          GfLineHits hits = gf_line_unread();
-          uv = gf_line_hit(line.k_entry[source.x / 4], line.k_exit[source.x % 4], source.y + 2,
-                           hits);
-          deeper = false;
-          member++;
-          if (uv.x < 0.0f) {
-            continue;
-          }
-        } else {
-          deeper = source.y >= 0;
-          if (!deeper) {
-            member++;
-          }
-        }
-      } else {
-        break;
-      }
-    }
+  GfSearch s = gf_search_start(line);
+  vec2 uv;
+  for (int visit = 0; visit <= 2 * GF_GROUPS + 32 && gf_next_candidate(line, s, uv); visit++) {
     vec3 p;
-    bool seams = gathered && groups.weight >= GF_SEAM_WEIGHT;
+    bool seams = s.gathered && s.groups.weight >= GF_SEAM_WEIGHT;
     if (!gf_refine(line.o, e1, e2, tolerance, seams, start, uv, p)) {
       continue;
     }
-    retry = false;
-    if (deeper) {
-      deeper = false;
-      member++;
-    }
+    // A candidate that verified is done with: neither its group's retry nor its next crossing.
+    s.retry = false;
+    s.member += s.deeper ? 1 : 0;
+    s.deeper = false;
     float t = dot(p - line.o, line.d) / dot(line.d, line.d);
     if (t >= line.t_min && t <= line.t_max) {
-      GfHit result;
-      result.hit = true;
-      result.t = t;
-      result.uv = uv;
-      result.position = p;
-      result.normal = gf_image_normal(uv);
-      return result;
+      return gf_hit(t, uv, p);
     }
   }
   return gf_miss();
