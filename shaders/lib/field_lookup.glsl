@@ -58,10 +58,9 @@
 #define GF_UNVERIFIED_MARGIN 0.5f
 // Crossings of the surface a ray leaves that gf_trace_leaving looks beyond at most.
 #define GF_SELF_CROSSINGS 2
-// The refined lookup's candidate groups (uvs within GF_GROUP_TEXELS texels, max norm, of a
-// group's first) and the most groups it searches.
+// The refined lookup's candidates lie together when all are within GF_GROUP_TEXELS texels (max
+// norm) of the first.
 #define GF_GROUP_TEXELS 16.0f
-#define GF_GROUPS 4
 
 struct GfHit {
   bool hit;       // false: miss (or an invalid ray)
@@ -87,7 +86,9 @@ vec2 gf_image_grid(vec2 uv, int n) {
 }
 
 // Lower-left texel of the bilinear patch holding grid point x.
-ivec2 gf_image_cell(vec2 x, int n) { return min(ivec2(floor(x)), ivec2(n - 2)); }
+ivec2 gf_image_cell(vec2 x, int n) {
+  return min(ivec2(floor(x)), ivec2(n - 2));
+}
 
 // Bilinear position at uv (GL_LINEAR, GL_CLAMP_TO_EDGE).
 vec3 gf_image_position(vec2 uv) {
@@ -115,8 +116,7 @@ vec3 gf_image_normal(vec2 uv) {
   ivec2 c = gf_image_cell(x, n);
   vec2 f = x - vec2(c);
   vec3 a = mix(gf_image_normal_texel(c.x, c.y), gf_image_normal_texel(c.x + 1, c.y), f.x);
-  vec3 b =
-      mix(gf_image_normal_texel(c.x, c.y + 1), gf_image_normal_texel(c.x + 1, c.y + 1), f.x);
+  vec3 b = mix(gf_image_normal_texel(c.x, c.y + 1), gf_image_normal_texel(c.x + 1, c.y + 1), f.x);
   return normalize(mix(a, b, f.y));
 }
 
@@ -232,8 +232,8 @@ int gf_patch_coverage(vec4 coverage) {
 // other texels); one on a patch with padding corners (a chart's border strip) must be clear of
 // `start` (gf_clear_of_start; `start`: the point the ray starts from). `seams`: also accept
 // chart-border points across seams (see below), clear of `start` too.
-bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start,
-               GF_INOUT(vec2) uv, GF_OUT(vec3) p) {
+bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start, GF_INOUT(vec2) uv,
+               GF_OUT(vec3) p) {
   int n = gf_image_size();
   vec2 x = gf_image_grid(uv, n);
   p = vec3(0.0f);
@@ -349,8 +349,7 @@ int gf_layer_beyond(GF_IN(GfLine) line, int layer, int entry, int exit, float ma
 // gf_layer_beyond without a margin, with layer 0 already read; (-1, -1) when none.
 // With a known parity, only the layers of that parity count (the crossings of the surface the
 // ray starts on, whatever their place, have the other one).
-vec2 gf_first_beyond(GF_IN(GfLine) line, int entry, int exit, vec2 uv,
-                     GF_INOUT(GfLineHits) hits) {
+vec2 gf_first_beyond(GF_IN(GfLine) line, int entry, int exit, vec2 uv, GF_INOUT(GfLineHits) hits) {
   if (!line.beyond || gf_field_layers() == 1) {
     return uv;
   }
@@ -413,58 +412,6 @@ void gf_orthogonal_basis(vec3 d, GF_OUT(vec3) e1, GF_OUT(vec3) e2) {
   e2 = vec3(kb, s + dn.y * dn.y * ka, -dn.y);
 }
 
-// The refined lookup's candidates: the pairs' uvs, grouped. A uv within GF_GROUP_TEXELS texels
-// (max norm) of a group's first uv joins that group; GF_GROUPS groups at most.
-struct GfGroups {
-  vec2 first[GF_GROUPS];
-  vec3 sum[GF_GROUPS];     // xy: the weighted sum of the members' uvs, z: their weight
-  vec3 best[GF_GROUPS];    // xy: the uv of the heaviest member, z: its weight
-  float place[GF_GROUPS];  // where the group lies along the ray (the visiting order); GF_FAR: visited
-  int count;
-  float weight;  // of the pairs whose line hits at all
-  vec2 member[16];   // every candidate, in pair order
-  ivec2 source[16];  // its pair (4 * entry + exit, of the 2 x 2 x 2 x 2) and layer
-  int members;
-};
-
-// Adds candidate uv of weight w to `groups`.
-void gf_group_add(GF_INOUT(GfGroups) groups, vec2 uv, float w, float reach) {
-  int g = 0;
-  while (g < groups.count &&
-         max(abs(uv.x - groups.first[g].x), abs(uv.y - groups.first[g].y)) > reach) {
-    g++;
-  }
-  if (g == GF_GROUPS) {
-    return;
-  }
-  if (g == groups.count) {
-    groups.first[g] = uv;
-    groups.sum[g] = vec3(0.0f);
-    groups.best[g] = vec3(uv, -1.0f);
-    groups.place[g] = 0.0f;
-    groups.count++;
-  }
-  // A pair at a sample itself has weight 0: it still places its group.
-  groups.sum[g] += vec3((w + 1.0e-6f) * uv, w + 1.0e-6f);
-  if (w > groups.best[g].z) {
-    groups.best[g] = vec3(uv, w);
-  }
-}
-
-// The mean uv of group g.
-vec2 gf_group_uv(GF_IN(GfGroups) groups, int g) {
-  return vec2(groups.sum[g].x, groups.sum[g].y) / groups.sum[g].z;
-}
-
-// No candidates.
-GfGroups gf_no_groups() {
-  GfGroups groups;
-  groups.count = 0;
-  groups.weight = 0.0f;
-  groups.members = 0;
-  return groups;
-}
-
 // The candidate of pair (i, j) of the 2 x 2 entry and exit samples: its first stored hit beyond
 // the origin, (-1, -1) when none; `hits` holds its line as read. `crossed`: whether its line
 // hits the surface at all.
@@ -479,10 +426,57 @@ vec2 gf_pair_candidate(GF_IN(GfLine) line, int i, int j, GF_INOUT(GfLineHits) hi
   return gf_first_beyond(line, line.k_entry[i], line.k_exit[j], uv, hits);
 }
 
-// The 16 pairs' candidates, grouped, each group placed along the ray (from the texel nearest to
-// its mean uv; one group needs no place).
-GfGroups gf_gather_groups(GF_IN(GfLine) line) {
-  GfGroups groups = gf_no_groups();
+// The 16 pairs' candidates in two groups: those within GF_GROUP_TEXELS texels (max norm) of the
+// first candidate, and those within that of the first candidate outside it. Away from
+// silhouettes and seams the candidates agree, and one Newton search from the first group's
+// weighted mean is the lookup; two groups are two surfaces (or two sides of a seam). Plain
+// fields, no arrays: a shader compiler keeps them in registers, where groups in arrays (and the
+// loops over them) made llvmpipe's lookup about twice as slow.
+struct GfCandidates {
+  vec3 sum0;   // group 0 (the nearer along the ray): xy, the weighted sum of its uvs; z,
+               // their weight (0: empty)
+  vec3 best0;  // group 0: xy, its heaviest uv; z, that one's weight
+  vec3 sum1;   // group 1, as group 0
+  vec3 best1;
+  bool together;    // no candidate outside the two groups
+  float weight;     // of the pairs whose line hits at all
+  vec2 member[16];  // pair p's candidate (p = 4 * entry + exit; (-1, -1): none)
+  int layer0;       // bit p: pair p's candidate is its line's first hit, the line not read
+};
+
+GfCandidates gf_no_candidates() {
+  GfCandidates c;
+  c.sum0 = vec3(0.0f);
+  c.best0 = vec3(-1.0f);
+  c.sum1 = vec3(0.0f);
+  c.best1 = vec3(-1.0f);
+  c.together = true;
+  c.weight = 0.0f;
+  c.layer0 = 0;
+  return c;
+}
+
+// Adds candidate uv of weight w to group `sum`, `best`.
+void gf_candidate_add(GF_INOUT(vec3) sum, GF_INOUT(vec3) best, vec2 uv, float w) {
+  // A pair at a sample itself has weight 0: it still counts.
+  sum += vec3((w + 1.0e-6f) * uv, w + 1.0e-6f);
+  if (w > best.z) {
+    best = vec3(uv, w);
+  }
+}
+
+// Whether uv lies within `reach` (max norm) of `first`.
+bool gf_within(vec2 uv, vec2 first, float reach) {
+  vec2 off = abs(uv - first);
+  return max(off.x, off.y) <= reach;
+}
+
+// The candidates of the 16 pairs, grouped; two groups in their order along the ray (placed by
+// the texel nearest to their mean uv).
+GfCandidates gf_gather_candidates(GF_IN(GfLine) line) {
+  GfCandidates c = gf_no_candidates();
+  vec2 first0 = vec2(-1.0f);
+  vec2 first1 = vec2(-1.0f);
   float reach = GF_GROUP_TEXELS / float(gf_image_size());
   for (int i = 0; i < 4; i++) {
     for (int j = 0; j < 4; j++) {
@@ -490,34 +484,43 @@ GfGroups gf_gather_groups(GF_IN(GfLine) line) {
       bool crossed;
       vec2 uv = gf_pair_candidate(line, i, j, hits, crossed);
       float w = line.w_entry[i] * line.w_exit[j];
-      groups.weight += crossed ? w : 0.0f;
-      if (uv.x >= 0.0f) {
-        gf_group_add(groups, uv, w, reach);
-        groups.member[groups.members] = uv;
-        groups.source[groups.members] = ivec2(4 * i + j, hits.count < 0 ? 0 : -1);
-        groups.members++;
+      c.weight += crossed ? w : 0.0f;
+      c.member[4 * i + j] = uv;
+      c.layer0 |= uv.x >= 0.0f && hits.count < 0 ? 1 << (4 * i + j) : 0;
+      if (uv.x < 0.0f) {
+        continue;
+      }
+      if (c.sum0.z == 0.0f) {
+        first0 = uv;
+      }
+      if (gf_within(uv, first0, reach)) {
+        gf_candidate_add(c.sum0, c.best0, uv, w);
+        continue;
+      }
+      if (c.sum1.z == 0.0f) {
+        first1 = uv;
+      }
+      if (gf_within(uv, first1, reach)) {
+        gf_candidate_add(c.sum1, c.best1, uv, w);
+      } else {
+        c.together = false;
       }
     }
   }
-  for (int g = 0; g < groups.count && groups.count > 1; g++) {
-    float t = dot(gf_image_position_nearest(gf_group_uv(groups, g)) - line.o, line.d);
-    groups.place[g] = line.last ? -t : t;
-  }
-  return groups;
-}
-
-// The unvisited group nearest along the ray (-1: none), marked visited.
-int gf_next_group(GF_INOUT(GfGroups) groups) {
-  int g = -1;
-  for (int k = 0; k < groups.count; k++) {
-    if (groups.place[k] < GF_FAR && (g < 0 || groups.place[k] < groups.place[g])) {
-      g = k;
+  if (c.sum1.z > 0.0f) {
+    vec3 p0 = gf_image_position_nearest(vec2(c.sum0.x, c.sum0.y) / c.sum0.z);
+    vec3 p1 = gf_image_position_nearest(vec2(c.sum1.x, c.sum1.y) / c.sum1.z);
+    float ahead = dot(p1 - p0, line.d);
+    if (line.last ? ahead > 0.0f : ahead < 0.0f) {
+      vec3 sum = c.sum0;
+      vec3 best = c.best0;
+      c.sum0 = c.sum1;
+      c.best0 = c.best1;
+      c.sum1 = sum;
+      c.best1 = best;
     }
   }
-  if (g >= 0) {
-    groups.place[g] = GF_FAR;
-  }
-  return g;
+  return c;
 }
 
 // The index (0..3) of the largest of w's components.
@@ -531,76 +534,51 @@ int gf_heaviest(vec4 w) {
   return k;
 }
 
-// Where the refined lookup's search of its candidates stands (gf_next_candidate).
+// The refined lookup's search stages (gf_next_start), in order.
+#define GF_STAGE_NEAREST_PAIR 0  // the nearest pair's candidate (ranges from inside the box)
+#define GF_STAGE_GROUP0 1        // group 0's weighted mean, then its heaviest candidate
+#define GF_STAGE_GROUP0_BEST 2
+#define GF_STAGE_GROUP1 3  // group 1 likewise
+#define GF_STAGE_GROUP1_BEST 4
+#define GF_STAGE_PAIRS 5  // every candidate on its own, the nearest verified hit wins
+
+// Where the refined lookup's search stands.
 struct GfSearch {
-  GfGroups groups;
-  bool gathered;  // `groups` holds the 16 pairs' candidates (else the nearest pair's at most)
-  int group;      // the group searched last
-  bool retry;     // search `group` again, from its heaviest member
-  int member;     // the next candidate searched on its own
-  bool deeper;    // next: the second crossing after `member` along its line
+  GfCandidates candidates;
+  int stage;    // the next stage
+  int from;     // the stage of the start returned last
+  int pair;     // GF_STAGE_PAIRS: the next pair (4 * entry + exit)
+  bool deeper;  // GF_STAGE_PAIRS: next, the second crossing after the candidate of `pair`
 };
 
-// The search's start: the 16 pairs' candidates, or for a range that starts inside the box the
-// nearest pair's alone (reading a line past the hits behind the origin costs most there).
-GfSearch gf_search_start(GF_IN(GfLine) line) {
-  GfSearch s;
-  s.groups = gf_no_groups();
-  s.gathered = !line.beyond;
-  s.group = -1;
-  s.retry = false;
-  s.member = 0;
-  s.deeper = false;
-  if (!line.beyond) {
-    s.groups = gf_gather_groups(line);
-    return s;
-  }
-  GfLineHits hits;
-  bool crossed;
-  vec2 uv = gf_pair_candidate(line, gf_heaviest(line.w_entry), gf_heaviest(line.w_exit), hits,
-                              crossed);
-  if (uv.x >= 0.0f) {
-    gf_group_add(s.groups, uv, 1.0f, 0.0f);
-  }
-  return s;
+// The start of a group's stage (group 0 or 1, `best`: its heaviest candidate, else its mean);
+// false when the group is empty or its heaviest candidate lies within a texel of its mean.
+bool gf_group_start(GF_IN(GfCandidates) c, int group, bool best, GF_OUT(vec2) uv) {
+  vec3 sum = group == 0 ? c.sum0 : c.sum1;
+  vec3 heaviest = group == 0 ? c.best0 : c.best1;
+  vec2 mean = vec2(sum.x, sum.y) / sum.z;
+  uv = best ? vec2(heaviest.x, heaviest.y) : mean;
+  vec2 off = abs(vec2(heaviest.x, heaviest.y) - mean);
+  return sum.z > 0.0f && (!best || max(off.x, off.y) > 1.0f / float(gf_image_size()));
 }
 
-// The next uv a Newton search starts from; false when none is left. In order: the groups along
-// the ray, each from its mean uv and, where that differs by more than a texel, again from its
-// heaviest member (s.retry, cleared when a search verifies); the 16 pairs' groups once the
-// nearest pair's are spent; then every candidate on its own (rays beside a silhouette, groups
-// that mix surfaces), one read from layer 0 also followed by the second crossing after it
-// (the ray passed beside the part its line hits; crossings alternate).
-bool gf_next_candidate(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
-  if (s.retry) {
-    uv = vec2(s.groups.best[s.group].x, s.groups.best[s.group].y);
-    s.retry = false;
-    return true;
-  }
-  s.group = gf_next_group(s.groups);
-  if (s.group < 0 && !s.gathered) {
-    s.groups = gf_gather_groups(line);
-    s.gathered = true;
-    s.group = gf_next_group(s.groups);
-  }
-  if (s.group >= 0) {
-    uv = gf_group_uv(s.groups, s.group);
-    vec2 off = abs(vec2(s.groups.best[s.group].x, s.groups.best[s.group].y) - uv);
-    s.retry = max(off.x, off.y) > 1.0f / float(gf_image_size());
-    return true;
-  }
-  while (s.member < s.groups.members) {
-    ivec2 source = s.groups.source[s.member];
-    if (!s.deeper) {
-      uv = s.groups.member[s.member];
-      s.deeper = source.y >= 0;
-      s.member += s.deeper ? 0 : 1;
-      return true;
+// The next candidate searched on its own (GF_STAGE_PAIRS): each pair's, read again, one read
+// from layer 0 also followed by the second crossing after it (the ray passed beside the part
+// its line hits; crossings alternate).
+bool gf_next_pair(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
+  while (s.pair < 16) {
+    int i = s.pair / 4;
+    int j = s.pair % 4;
+    if (s.deeper) {
+      GfLineHits hits = gf_line_unread();
+      uv = gf_line_hit(line.k_entry[i], line.k_exit[j], 2, hits);
+      s.deeper = false;
+      s.pair++;
+    } else {
+      uv = s.candidates.member[s.pair];
+      s.deeper = (s.candidates.layer0 & (1 << s.pair)) != 0;
+      s.pair += s.deeper ? 0 : 1;
     }
-    GfLineHits hits = gf_line_unread();
-    uv = gf_line_hit(line.k_entry[source.x / 4], line.k_exit[source.x % 4], source.y + 2, hits);
-    s.deeper = false;
-    s.member++;
     if (uv.x >= 0.0f) {
       return true;
     }
@@ -608,36 +586,96 @@ bool gf_next_candidate(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv
   return false;
 }
 
-// GF_MODE_REFINED: the 16 pairs' first stored hits beyond the origin are candidates, grouped
-// (GfGroups: away from silhouettes and seams the pairs' uvs agree, and one group is the rule);
-// Newton searches (gf_refine) from them in the order of gf_next_candidate. The first search that
-// verifies a hit in [t_min, t_max] is the answer; none is a miss. When nearly all of the
-// neighbourhood's lines hit, the surface around the ray is closed and a chart border there is a
-// seam (unknown for the nearest pair alone: no seams then).
+// The next uv a Newton search starts from (s.from: its stage); false when none is left. A range
+// that starts inside the box tries the nearest pair's candidate alone first (reading the lines
+// past the hits behind the origin costs most there). Then the 16 pairs' candidates: the groups
+// in their order along the ray, each from its mean and, where its heaviest candidate lies more
+// than a texel off that, from that one; then, where no group verified a hit or the candidates
+// lie on more than two surfaces, every candidate on its own.
+bool gf_next_start(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
+  if (s.stage == GF_STAGE_NEAREST_PAIR) {
+    s.stage = GF_STAGE_GROUP0;
+    if (line.beyond) {
+      GfLineHits hits;
+      bool crossed;
+      s.from = GF_STAGE_NEAREST_PAIR;
+      uv = gf_pair_candidate(line, gf_heaviest(line.w_entry), gf_heaviest(line.w_exit), hits,
+                             crossed);
+      if (uv.x >= 0.0f) {
+        return true;
+      }
+    }
+  }
+  if (s.stage == GF_STAGE_GROUP0) {
+    s.candidates = gf_gather_candidates(line);
+  }
+  for (int stage = GF_STAGE_GROUP0; stage < GF_STAGE_PAIRS; stage++) {
+    if (stage == s.stage) {
+      s.stage++;
+      int group = stage < GF_STAGE_GROUP1 ? 0 : 1;
+      bool best = stage == GF_STAGE_GROUP0_BEST || stage == GF_STAGE_GROUP1_BEST;
+      if (gf_group_start(s.candidates, group, best, uv)) {
+        s.from = stage;
+        return true;
+      }
+    }
+  }
+  s.from = GF_STAGE_PAIRS;
+  return gf_next_pair(line, s, uv);
+}
+
+// GF_MODE_REFINED: Newton searches (gf_refine) from the starts of gf_next_start. A hit verified
+// in [t_min, t_max] from the nearest pair or the candidates' mean or heaviest is the answer;
+// searched on their own, the nearest of the candidates' verified hits is. None is a miss. When
+// nearly all of the neighbourhood's lines hit, the surface around the ray is closed and a chart
+// border there is a seam (unknown for the nearest pair alone: no seams then).
 GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   vec3 e1;
   vec3 e2;
   gf_orthogonal_basis(line.d, e1, e2);
   float tolerance = GF_NEWTON_TOLERANCE * diagonal;
   vec3 start = line.o + (line.last ? line.t_max : line.t_min) * line.d;
-  GfSearch s = gf_search_start(line);
+  GfSearch s;
+  s.candidates = gf_no_candidates();
+  s.stage = GF_STAGE_NEAREST_PAIR;
+  s.from = -1;
+  s.pair = 0;
+  s.deeper = false;
+  GfHit nearest = gf_miss();
+  float nearest_t = GF_FAR;
   vec2 uv;
-  for (int visit = 0; visit <= 2 * GF_GROUPS + 32 && gf_next_candidate(line, s, uv); visit++) {
+  for (int visit = 0; visit < 4 + 32 + 1; visit++) {
+    // The groups' nearest hit is the answer when no candidate lies outside them.
+    bool groups_done = s.stage == GF_STAGE_PAIRS && s.from < GF_STAGE_PAIRS;
+    if ((groups_done && nearest.hit && s.candidates.together) || !gf_next_start(line, s, uv)) {
+      break;
+    }
     vec3 p;
-    bool seams = s.gathered && s.groups.weight >= GF_SEAM_WEIGHT;
+    bool seams = s.from > GF_STAGE_NEAREST_PAIR && s.candidates.weight >= GF_SEAM_WEIGHT;
     if (!gf_refine(line.o, e1, e2, tolerance, seams, start, uv, p)) {
       continue;
     }
-    // A candidate that verified is done with: neither its group's retry nor its next crossing.
-    s.retry = false;
-    s.member += s.deeper ? 1 : 0;
+    // A candidate that verified is done with: not its next crossing.
+    s.pair += s.deeper ? 1 : 0;
     s.deeper = false;
     float t = dot(p - line.o, line.d) / dot(line.d, line.d);
-    if (t >= line.t_min && t <= line.t_max) {
-      return gf_hit(t, uv, p);
+    float along = line.last ? -t : t;
+    if (t < line.t_min || t > line.t_max || along >= nearest_t) {
+      continue;
     }
+    nearest = gf_hit(t, uv, p);
+    nearest_t = along;
+    // One surface's candidates: the first verified hit is the answer.
+    bool one_surface = s.candidates.sum1.z == 0.0f && s.candidates.together;
+    if (s.from == GF_STAGE_NEAREST_PAIR || one_surface) {
+      return nearest;
+    }
+    // A group's hit is kept (the other group may lie nearer); its heaviest candidate is not
+    // searched.
+    s.stage = s.from == GF_STAGE_GROUP0 ? GF_STAGE_GROUP1 : s.stage;
+    s.stage = s.from == GF_STAGE_GROUP1 ? GF_STAGE_PAIRS : s.stage;
   }
-  return gf_miss();
+  return nearest;
 }
 
 // The first hit beyond the ray's origin (last = false) or the last hit before its end (last =
@@ -776,7 +814,7 @@ GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, 
   return gf_miss();
 }
 
-GfHit gf_trace_leaving(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin,
-                       float self_t_min, float facing, int mode) {
+GfHit gf_trace_leaving(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, float self_t_min,
+                       float facing, int mode) {
   return gf_trace_from(o, d, t_min, t_max, self_origin, self_t_min, facing, mode, true);
 }
