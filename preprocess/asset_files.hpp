@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 namespace gfield {
 
 struct AssetFiles {
@@ -16,6 +18,11 @@ struct AssetFiles {
 
 /// The files of asset `name` (a path without extension: DIR/NAME).
 AssetFiles asset_files(const std::string& name);
+
+/// Reads a report file as a JSON object. False with an error "FILE: problem" when it is not a
+/// regular file (checked before it is opened: a FIFO or a folder neither blocks nor throws),
+/// cannot be read, or is not a JSON object.
+bool read_report(const std::string& report_file, nlohmann::json& report, std::string& error);
 
 /// The build id recorded in a report file ("build_id"; empty for a report without one). False
 /// with an error "FILE: problem" when the file cannot be read or is not a JSON object.

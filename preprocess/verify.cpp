@@ -5,15 +5,16 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <random>
 
 #include <nlohmann/json.hpp>
 
 #include "geometry/outward_normals.hpp"
 #include "geometry/parameterized_mesh.hpp"
+#include "gfield/asset_source.hpp"
 #include "gfield/build_id.hpp"
 #include "gfield/exr_io.hpp"
+#include "gfield/file_read.hpp"
 #include "gfield/gpu_storage.hpp"
 #include "gfield/printable.hpp"
 #include "gfield/stopwatch.hpp"
@@ -255,11 +256,11 @@ MeshSource find_original(const std::string& name, const nlohmann::json& report,
   return {};
 }
 
-/// The report beside the asset as JSON: an empty object where there is none or it does not parse.
-nlohmann::json read_report(const std::string& report_path) {
-  std::ifstream file(report_path);
-  nlohmann::json report = file ? nlohmann::json::parse(file, nullptr, false) : nlohmann::json();
-  return report.is_object() ? report : nlohmann::json::object();
+/// The report beside the asset as JSON: an empty object where there is none. False with an
+/// error when one is there but cannot be read.
+bool read_asset_report(const std::string& report_path, nlohmann::json& report, std::string& error) {
+  report = nlohmann::json::object();
+  return file_problem(report_path) == "no such file" || read_report(report_path, report, error);
 }
 
 /// Whether `report` says its image was built through a proxy (geometry_image.proxy.used).
@@ -466,8 +467,15 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   }
   std::vector<Reference> references;
   references.push_back({"built", shown.parameterized_mesh, pm.mesh});
-  const nlohmann::json asset_report = read_report(read.report);
+  nlohmann::json asset_report;
+  if (!read_asset_report(read.report, asset_report, error)) {
+    return false;
+  }
   const MeshSource original = find_original(name, asset_report, options, image.source);
+  bool checked = false;
+  if (!original.file.empty() && !check_asset_source(read.report, original.file, checked, error)) {
+    return false;
+  }
   if (!original.file.empty()) {
     Reference r{"original", original.file, {}};
     std::vector<std::string> ignored;

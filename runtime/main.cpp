@@ -43,6 +43,7 @@ struct Arguments {
   std::string camera_text;
   bool headless = false;
   bool allow_outside_paths = false;
+  bool rebuild_stale = false;
   HeadlessOptions headless_options;
 };
 
@@ -92,6 +93,9 @@ void add_common_options(CLI::App& app, Arguments& a) {
                  "Folder of prebuilt assets: NAME.gimage.exr/.gfield.exr for mesh NAME.obj, found "
                  "there before those beside the mesh (gfield build MESH -o DIR/NAME); the assets "
                  "of glTF meshes are built there on demand (default: beside the glTF file)");
+  app.add_flag("--rebuild-stale", a.rebuild_stale,
+               "Rebuild (gfield build MESH -o NAME, default options) an asset built from another "
+               "mesh or an older version of its mesh, instead of refusing it");
   app.add_flag("--allow-outside-paths", a.allow_outside_paths,
                "Read the files that a glTF file or a mesh names outside its folder, and that a "
                "scene names outside its root (docs/scenes.md, \"Confined paths\")");
@@ -121,7 +125,7 @@ std::string load_and_check_scene(Arguments& a, Scene& scene) {
   std::string error;
   const OutsidePaths outside =
       a.allow_outside_paths ? OutsidePaths::kAllowed : OutsidePaths::kRefused;
-  if (!load_view_scene(a.scene_file, a.asset_dir, outside, scene, error))
+  if (!load_view_scene(a.scene_file, a.asset_dir, outside, a.rebuild_stale, scene, error))
     return error;
   if (!a.camera_text.empty() && !parse_camera_text(a.camera_text, scene.camera, error))
     return "--camera " + a.camera_text + ": " + error;

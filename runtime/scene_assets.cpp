@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "geometry/scene_file.hpp"
+#include "gfield/asset_source.hpp"
 #include "gfield/printable.hpp"
 #include "gfield/thickness.hpp"
 
@@ -59,8 +60,41 @@ std::string gfield_executable() {
   return "gfield";
 }
 
+namespace {
+
+/// Rebuilds the asset of `mesh` (NAME of its NAME.gimage.exr) from its mesh file with the
+/// default options.
+bool rebuild_asset(const MeshAsset& mesh, std::string& error) {
+  const std::string image = mesh.geometry_image;
+  const std::string name = image.substr(0, image.size() - std::string(".gimage.exr").size());
+  std::fprintf(stderr, "gfield-view: rebuilding %s from %s (--rebuild-stale)\n",
+               printable(name).c_str(), printable(mesh.file).c_str());
+  const int status = run_child({gfield_executable(), "build", mesh.file, "-o", name});
+  if (status == 0)
+    return true;
+  error = name + ": rebuilding it from " + mesh.file + " failed (gfield build " +
+          (status < 0 ? "could not be started" : "exited with " + std::to_string(status)) + ")";
+  return false;
+}
+
+/// check_scene_assets, rebuilding each stale asset once with `rebuild_stale`.
+bool check_or_rebuild_assets(const Scene& scene, bool rebuild_stale, std::string& error) {
+  std::vector<char> rebuilt(scene.meshes.size(), 0);
+  int stale = -1;
+  while (!check_scene_assets(scene, stale, error)) {
+    if (!rebuild_stale || stale < 0 || rebuilt[size_t(stale)])
+      return false;
+    rebuilt[size_t(stale)] = 1;
+    if (!rebuild_asset(scene.meshes[size_t(stale)], error))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool load_view_scene(const std::string& filename, const std::string& asset_dir,
-                     OutsidePaths outside, Scene& scene, std::string& error) {
+                     OutsidePaths outside, bool rebuild_stale, Scene& scene, std::string& error) {
   std::vector<std::string> warnings;
   if (!load_scene_file(filename, scene, warnings, error, outside))
     return false;
@@ -86,7 +120,7 @@ bool load_view_scene(const std::string& filename, const std::string& asset_dir,
     error = "--assets " + error;
     return false;
   }
-  return true;
+  return check_or_rebuild_assets(scene, rebuild_stale, error);
 }
 
 bool build_thickness_maps(const Scene& scene, std::string& error) {

@@ -20,9 +20,12 @@ std::string gfield_executable();
 /// files outside the scene's root (or a glTF file's folder) only when `outside` is kAllowed
 /// (--allow-outside-paths, passed on to `gfield assets`). When it holds glTF meshes, runs
 /// `gfield assets` first (its output goes to stderr). With `asset_dir`, the assets found there
-/// are used (use_asset_folder). False with a one-line error.
+/// are used (use_asset_folder). Every mesh's asset must have been built from the mesh as it is
+/// now (check_scene_assets); with `rebuild_stale`, one built from another mesh (or an older
+/// version of it) is rebuilt with `gfield build MESH -o NAME` (default options), else refused.
+/// False with a one-line error.
 bool load_view_scene(const std::string& filename, const std::string& asset_dir,
-                     OutsidePaths outside, Scene& scene, std::string& error);
+                     OutsidePaths outside, bool rebuild_stale, Scene& scene, std::string& error);
 
 /// Makes the thickness maps (NAME.thickness.exr, d_n of Wyman 2005) that the wyman2005 method
 /// reads for the meshes of the dielectric objects of `scene`, as the other assets are made on

@@ -261,8 +261,7 @@ Transform read_transform(const SceneReader& r, const std::string& p) {
 /// NAME.<kind>.exr beside the mesh file if it exists, else "".
 std::string beside(const fs::path& mesh, const char* kind) {
   const fs::path candidate = mesh.parent_path() / (mesh.stem().string() + "." + kind + ".exr");
-  std::error_code ec;
-  return fs::is_regular_file(candidate, ec) ? candidate.string() : std::string();
+  return file_problem(candidate.string()) == "no such file" ? std::string() : candidate.string();
 }
 
 /// The shape type at p/shape (gltf objects are includes, read before).

@@ -173,6 +173,23 @@ TEST_F(AssetUnit, StaleReportOfAnotherMeshIsNotUsed) {
   EXPECT_EQ(r.out.find("cow.obj"), std::string::npos) << r.out;
 }
 
+TEST_F(AssetUnit, VerifyJudgesAgainstTheAssetsOwnMeshNotAPathTakenFromItsReport) {
+  build(kSpot, "spot", kSmall);
+  // The report of spot's own build, its source_path pointed at another mesh.
+  nlohmann::json report;
+  std::ifstream(name("spot") + ".report.json") >> report;
+  report["source_path"] = kCow;
+  std::ofstream(name("spot") + ".report.json") << report.dump();
+  const test::CliRun r = run_cli("verify " + name("spot") + " --rays 200");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_EQ(r.err.rfind("gfield: error: " + name("spot") + ".report.json: built from spot.obj", 0),
+            0u)
+      << r.err;
+  EXPECT_NE(r.err.find("not from " + kCow), std::string::npos) << r.err;
+  const test::CliRun given = run_cli("verify " + name("spot") + " --rays 200 --original " + kSpot);
+  EXPECT_EQ(given.exit_code, 0) << given.err;
+}
+
 TEST_F(AssetUnit, VersionOneAssetsWithoutIdsStillLoad) {
   build(kSpot, "spot", kSmall);
   GeometryImage image;

@@ -75,6 +75,24 @@ TEST_F(SpecialFiles, BatchSkipsAndListsWhatIsNotAFileAndBuildsTheRest) {
   EXPECT_TRUE(fs::exists(kDir / "out" / "we\nird\xFF.gfield.exr"));
 }
 
+TEST_F(SpecialFiles, AReportThatIsAFifoOrAFolderIsNamedAndBlocksNothing) {
+  const std::string asset = (kDir / "woody").string();
+  const test::CliRun built = run_cli("build " + in("woody.obj") + " -o " + asset +
+                                     " --size 64 --samples 4 --verify-rays 0");
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+  const std::string report = asset + ".report.json";
+  fs::remove(report);  // the link to the published build's report
+  ASSERT_EQ(::mkfifo(report.c_str(), 0644), 0);
+  test::CliRun r = run_cli("verify " + asset + " --rays 100");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "gfield: error: " + report + ": a FIFO, not a regular file\n");
+  fs::remove(report);
+  fs::create_directory(report);
+  r = run_cli("verify " + asset + " --rays 100");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "gfield: error: " + report + ": a folder, not a file\n");
+}
+
 TEST_F(SpecialFiles, ARefusedWriteSaysWhy) {
   std::ofstream(kDir / "file") << "a file, not a folder";
   const std::string target = (kDir / "file" / "out.png").string();

@@ -1,0 +1,28 @@
+#pragma once
+// An asset bound to the mesh it was built from: its report's record of the mesh file (bytes and
+// SHA-256, docs/formats.md, "Report") against the mesh a scene or command names.
+
+#include <string>
+
+#include "gfield/scene.hpp"
+
+namespace gfield {
+
+/// The report of the asset whose geometry image is `geometry_image` (NAME.gimage.exr ->
+/// NAME.report.json); "" when the name does not end in ".gimage.exr".
+std::string asset_report_path(const std::string& geometry_image);
+
+/// Whether the asset of report `report_file` was built from the contents of `mesh_file`: equal
+/// sizes, then equal SHA-256 hashes (the size alone tells most other meshes apart without
+/// reading them). False with one line naming both files when they differ, or when the report
+/// exists but cannot be read or holds no record of its mesh. An absent report is true with
+/// `checked` false: nothing to check against.
+bool check_asset_source(const std::string& report_file, const std::string& mesh_file, bool& checked,
+                        std::string& error);
+
+/// check_asset_source for every mesh of `scene` with a geometry image (glTF meshes excepted:
+/// `gfield assets` keeps theirs in step). `stale`: the index of the
+/// first mesh whose asset was built from another mesh, -1 when none (then `error` says which).
+bool check_scene_assets(const Scene& scene, int& stale, std::string& error);
+
+}  // namespace gfield
