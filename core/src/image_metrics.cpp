@@ -136,6 +136,7 @@ ImageComparison compare_images(const Image& a, const Image& b, const PixelMask& 
     return out;
   }
   double sum_sq = 0.0, sum_abs = 0.0, max_abs = 0.0;
+  bool not_a_number = false;  // a NaN difference: the largest error is NaN, not the others' max
   size_t count = 0;
   for (size_t i = 0; i < a.pixels.size(); ++i) {
     if (!counted(mask, i))
@@ -146,6 +147,7 @@ ImageComparison compare_images(const Image& a, const Image& b, const PixelMask& 
       sum_sq += d * d;
       sum_abs += std::abs(d);
       max_abs = std::max(max_abs, std::abs(d));
+      not_a_number = not_a_number || std::isnan(d);
     }
   }
   if (count == 0)
@@ -160,7 +162,7 @@ ImageComparison compare_images(const Image& a, const Image& b, const PixelMask& 
   out.mse = sum_sq / double(3 * count);
   out.psnr = psnr_from_mse(out.mse, options.peak);
   out.ssim = ssim_sum / double(count);
-  out.max_abs_error = max_abs;
+  out.max_abs_error = not_a_number ? std::numeric_limits<double>::quiet_NaN() : max_abs;
   out.mean_abs_error = sum_abs / double(3 * count);
   return out;
 }

@@ -46,6 +46,11 @@ void attach_image(FieldAsset& asset, const py::object& image) {
     asset.image = image.cast<std::shared_ptr<GeometryImage>>();
     asset.image_file = "the geometry image of " + printable(asset.image->source);
   } else {
+    if (!py::isinstance<py::str>(image) && !py::isinstance<py::bytes>(image) &&
+        !py::hasattr(image, "__fspath__")) {
+      throw py::type_error("image: expected None, a GeometryImage or a path, not " +
+                           std::string(py::str(py::type::of(image).attr("__name__"))));
+    }
     const auto path = image.cast<std::filesystem::path>();
     asset.image_file = path_text(path);
     asset.image = load_geometry_image_file(path);
@@ -231,8 +236,10 @@ void bind_geometry_field(py::module_& m) {
            "t (R,) float32 along the unnormalised direction; distance (R,) float32 (t times\n"
            "|direction|); position (R, 3) float32; normal (R, 3) float32, unit; uv (R, 2)\n"
            "float32, geometry-image uv. A miss has t = distance = 0, uv = (-1, -1) and zero\n"
-           "position and normal; so do rays with a non-finite origin or direction, a zero\n"
-           "direction or a NaN t_min.")
+           "position and normal. Every ray is checked first: a non-finite origin, a zero,\n"
+           "non-finite or huge direction (a coordinate beyond 1e18) or a NaN or negative t_min\n"
+           "raises ValueError naming the argument and the row; a t_min that is not a number\n"
+           "raises TypeError.")
       .def("__repr__", [](const FieldAsset& a) {
         return "<gfield.GeometryField N = " + std::to_string(a.field.samples_per_side) +
                ", K = " + std::to_string(a.field.layers) + " of " + printable(a.field.source) + ">";

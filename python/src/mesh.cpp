@@ -207,9 +207,9 @@ void bind_mesh_class(py::module_& m) {
            "Returns a dict of arrays: hit (R,) bool; t (R,) float32 along the unnormalised\n"
            "direction; position (R, 3) float32; normal (R, 3) float32, the unit geometric normal\n"
            "(the winding's); triangle (R,) int32 (-1: miss); barycentric (R, 2) float32 (Embree's\n"
-           "u, v: position = (1-u-v) p0 + u p1 + v p2). A miss has zeros. Rays with a\n"
-           "non-finite or zero direction, a non-finite origin, t_min NaN or a coordinate beyond\n"
-           "1e18 miss.")
+           "u, v: position = (1-u-v) p0 + u p1 + v p2). A miss has zeros. Every ray is checked\n"
+           "before Embree sees it, as GeometryField.lookup checks it (ValueError, TypeError);\n"
+           "a finite origin beyond 1e18 misses.")
       .def("__repr__", [](const Mesh& mesh) {
         return "<gfield.Mesh " + std::to_string(mesh.mesh.positions.size()) + " vertices, " +
                std::to_string(mesh.mesh.triangles.size()) + " triangles>";

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "python/src/bindings.hpp"
+#include "python/src/interruptible.hpp"
 
 namespace gfield::python {
 
@@ -40,18 +41,29 @@ struct RayBatch {
 RayBatch ray_batch(const py::object& origins, const py::object& directions,
                    const py::object& t_min);
 
-/// Calls `answer(i)` for i in [0, count) on TBB's threads with the GIL released. A template, so
-/// that `answer` is inlined into the loop over each range: no call per ray that a C++ program
-/// looping over its rays would not make.
+/// Calls `answer(i)` for i in [0, count) on TBB's threads with the GIL released, as an
+/// interruptible job (python/src/interruptible.hpp): a Ctrl-C raises KeyboardInterrupt within
+/// about 50 ms plus one block of rays. A template, so that `answer` is inlined into the loop over
+/// each block: no call per ray that a C++ program looping over its rays would not make. Call
+/// with the GIL held.
 template <class Answer>
 void for_each_ray(size_t count, const Answer& answer) {
-  py::gil_scoped_release release;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, count),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t i = range.begin(); i != range.end(); ++i) {
-                        answer(i);
-                      }
-                    });
+  constexpr size_t kBlock = 4096;  // rays between two looks at the stop flag
+  run_interruptible(
+      [&](const JobControl& control) {
+        tbb::parallel_for(
+            tbb::blocked_range<size_t>(0, count, kBlock),
+            [&](const tbb::blocked_range<size_t>& range) {
+              if (stop_requested(&control)) {
+                return;
+              }
+              for (size_t i = range.begin(); i != range.end(); ++i) {
+                answer(i);
+              }
+            },
+            tbb::simple_partitioner());
+      },
+      py::none());
 }
 
 /// A new array of `count` rows of `columns` values (columns 0: shape (count,)).

@@ -42,6 +42,16 @@ TEST(ImageMetrics, ConstantOffsetGivesKnownPsnrAndSsim) {
   EXPECT_NEAR(psnr_from_mse(1e-2), 20.0, 1e-12);
 }
 
+TEST(ImageMetrics, ANotANumberPixelMakesEveryErrorNotANumber) {
+  const Image a(8, 8, glm::vec3(0.3f));
+  Image b(8, 8, glm::vec3(0.31f));
+  b.at(3, 2) = glm::vec3(0.31f, std::nanf(""), 0.31f);
+  const ImageComparison c = compare_images(a, b);
+  EXPECT_TRUE(std::isnan(c.max_abs_error));
+  EXPECT_TRUE(std::isnan(c.mse));
+  EXPECT_TRUE(std::isnan(c.psnr));
+}
+
 TEST(ImageMetrics, SsimPenalisesStructureNotJustError) {
   const Image a = pattern(32, 32);
   Image shifted = a, noisy = a;

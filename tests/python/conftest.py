@@ -40,6 +40,11 @@ def spot_asset(tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
+def spot_mesh():
+    return gfield.load_mesh(DATA_DIR / "meshes" / "spot.obj")
+
+
+@pytest.fixture(scope="session")
 def spot_field(spot_asset):
     return gfield.GeometryField.load(f"{spot_asset}.gfield.exr")
 

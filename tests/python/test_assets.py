@@ -140,6 +140,8 @@ def test_field_properties_and_its_image(spot_asset, spot_field, tmp_path):
     assert field.image is None and field.nearest.shape == (384, 320, 2)
     with pytest.raises(gfield.Error, match="no geometry image to look up with"):
         field.lookup(np.zeros((1, 3)), np.ones((1, 3)))
+    with pytest.raises(TypeError, match="image: expected None, a GeometryImage or a path, not int"):
+        gfield.GeometryField.load(f"{spot_asset}.gfield.exr", image=5)
 
 
 def test_a_field_and_a_foreign_image_are_refused(spot_asset, tmp_path):

@@ -2,8 +2,11 @@
 (gfield_lookup_rays, the C++ lookup as a C++ program calls it) on 100,000 rays, accuracy against
 Embree's exact casts, the GIL released while it runs."""
 
+import os
+import signal
 import subprocess
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -39,16 +42,15 @@ def equality_rays(field, mesh, rng):
     o3 = box[0] + rng.random((20000, 3)) * (box[1] - box[0])
     d3 = rng.normal(size=(20000, 3))
     o4, d4 = box_rays(field.box, 10000, rng)
-    o4[0::5] = np.nan  # non-finite origins
-    d4[1::5] = 0.0  # zero directions
-    d4[2::5, 0] = np.inf
-    o4[3::5] *= 1e30  # far away
+    o4[0::5] *= 1e30  # far away
+    d4[1::5] *= 1e-30  # tiny directions
+    d4[2::5] *= 1e17  # long directions
     origins = np.concatenate([o1, o2, o3, o4]).astype(np.float32)
     directions = np.concatenate([d1, d2, d3, d4]).astype(np.float32)
     t_min = np.concatenate(
         [np.zeros(40000), np.zeros(30000), rng.random(20000) * 0.5, rng.random(10000)]
     ).astype(np.float32)
-    t_min[-1] = np.nan
+    t_min[-1] = 1e30  # beyond every hit
     return origins, directions, t_min
 
 
@@ -105,6 +107,32 @@ def test_lookup_shapes_dtypes_and_arguments(spot_field):
         spot_field.lookup(origins, directions, mode="exact")
 
 
+@pytest.mark.parametrize("cast", ["lookup", "intersect"])
+def test_rays_no_lookup_or_cast_may_take_raise_naming_the_argument(spot_field, spot_mesh, cast):
+    """Checked before the lookup or Embree sees them (a negative t_min aborted Embree; a huge
+    direction's squared length overflowed to a hit at t = 0)."""
+    answer = spot_field.lookup if cast == "lookup" else spot_mesh.intersect
+    origins = np.array([[0.0, 0.0, 5.0], [0.0, 0.0, -5.0]])
+    directions = np.array([[0.0, 0.0, -1.0], [0.0, 0.0, 1.0]])
+    bad = [
+        ("origins", 1, np.nan, r"origins\[1\]: .* is not finite"),
+        ("directions", 1, 0.0, r"directions\[1\]: .* is zero"),
+        ("directions", 0, 1e20, r"directions\[0\]: .* is not finite or beyond 1e18"),
+        ("directions", 0, np.inf, r"directions\[0\]: .* is not finite or beyond 1e18"),
+    ]
+    for name, row, value, message in bad:
+        o, d = origins.copy(), directions.copy()
+        (o if name == "origins" else d)[row] = value
+        with pytest.raises(ValueError, match=message):
+            answer(o, d)
+    with pytest.raises(ValueError, match=r"t_min: -100.000000 is negative"):
+        answer(origins, directions, t_min=-100)
+    with pytest.raises(ValueError, match=r"t_min\[1\]: nan is not a number"):
+        answer(origins, directions, t_min=[0.0, np.nan])
+    with pytest.raises(TypeError, match="t_min: expected a number or an array of numbers, not NoneType"):
+        answer(origins, directions, t_min=None)
+
+
 def test_refined_lookup_agrees_with_exact_casts(spot_field):
     """Against Embree's cast of the original mesh (docs/geometry-field.md measures 99.8% for
     spot's default asset; this one is small: 128^2, N = 8)."""
@@ -139,3 +167,24 @@ def test_lookup_releases_the_gil(spot_field):
         steps += 1
     worker.join()
     assert steps > 10000, f"only {steps} steps while the lookup ran"
+
+
+def test_ctrl_c_stops_a_long_lookup_within_a_second(spot_field):
+    """A SIGINT 0.2 s into a batch of refined lookups that takes seconds raises
+    KeyboardInterrupt soon after (Mesh.intersect runs its batches the same way)."""
+    rng = np.random.default_rng(6)
+    origins, directions = box_rays(spot_field.box, 4_000_000, rng)
+    sent, finished = [], []
+
+    def interrupt():
+        sent.append(time.monotonic())
+        os.kill(os.getpid(), signal.SIGINT)
+
+    threading.Timer(0.2, interrupt).start()
+    with pytest.raises(KeyboardInterrupt):
+        spot_field.lookup(origins, directions)
+        finished.append(True)
+        time.sleep(5)  # the signal lands here when the batch was faster than the timer
+    stopped = time.monotonic()
+    assert not finished, "the batch finished before the signal: make it longer"
+    assert stopped - sent[0] < 1.0, f"stopped {stopped - sent[0]:.2f} s after the signal"
