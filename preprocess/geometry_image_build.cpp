@@ -19,6 +19,7 @@
 #include "preprocess/chart_split.hpp"
 #include "preprocess/cut_graph.hpp"
 #include "preprocess/image_measure.hpp"
+#include "preprocess/job_control.hpp"
 #include "preprocess/parameterize.hpp"
 #include "preprocess/rasterize.hpp"
 #include "preprocess/surface_projection.hpp"
@@ -549,8 +550,10 @@ bool image_route(const TriangleMesh& input, const GeometryImageOptions& options,
 }
 
 /// The image through a proxy where `input` has more than options.proxy_above faces and the
-/// proxy's image holds (kProxyErrorFactor); report.proxy says what was tried. False only on
-/// errors.
+/// proxy's image holds (kProxyErrorFactor); report.proxy says what was tried. A proxy that
+/// cannot be made or charted (a stage's error: the simplified surface can fold where the mesh
+/// does not) is rejected too, and the full route builds the mesh: a proxy never gives an error
+/// that a full build would not. False only when interrupted.
 bool proxy_route(const TriangleMesh& input, const GeometryImageOptions& options,
                  const MeshAppearance* appearance, GeometryImage& image,
                  ParameterizedMesh& parameterized, GeometryImageReport& report,
@@ -560,12 +563,23 @@ bool proxy_route(const TriangleMesh& input, const GeometryImageOptions& options,
   Stopwatch stage;
   MeshProxy proxy;
   SurfaceProjection projection;
-  if (!make_proxy(input, appearance, options, proxy, projection, report, error))
-    return false;
+  std::string failure;
+  const bool made = make_proxy(input, appearance, options, proxy, projection, report, failure);
   report.seconds.proxy = stage.seconds();
-  if (!image_route(input, options, appearance, &proxy, &projection, image, parameterized, report,
-                   error))
-    return false;
+  if (!made || !image_route(input, options, appearance, &proxy, &projection, image,
+                            parameterized, report, failure)) {
+    if (failure.find(kInterrupted) != std::string::npos) {
+      error = failure;
+      return false;
+    }
+    GeometryImageReport fresh;
+    fresh.proxy = std::move(report.proxy);
+    fresh.proxy.used = false;
+    fresh.proxy.rejected = "its route failed: " + failure;
+    fresh.seconds.proxy = stage.seconds();
+    report = std::move(fresh);
+    return true;
+  }
   ProxyReport& p = report.proxy;
   p.mean_percent = report.mesh_to_image.mean;
   p.input_genus = proxy.genus;

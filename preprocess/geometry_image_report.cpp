@@ -115,6 +115,8 @@ std::string geometry_image_report_to_text(const GeometryImageReport& r) {
   else if (r.proxy.faces > 0)
     add("proxy: %zu faces tried for %zu and rejected (%s); built from the full mesh", r.proxy.faces,
         r.proxy.input_faces, r.proxy.rejected.c_str());
+  else if (!r.proxy.rejected.empty())
+    add("proxy: rejected (%s); built from the full mesh", r.proxy.rejected.c_str());
   add("route: %s", r.route.c_str());
   for (size_t c = 0; c < r.charts.size(); ++c) {
     const ChartReport& chart = r.charts[c];

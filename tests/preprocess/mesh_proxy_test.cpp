@@ -168,6 +168,27 @@ TEST(GeometryImageProxy, AProxyMissingTheBoundGivesWayToTheFullMesh) {
   EXPECT_TRUE(image.normal == full_image.normal);
 }
 
+TEST(GeometryImageProxy, AProxyWhoseRouteFailsGivesWayToTheFullMesh) {
+  // The torus simplified towards 8 faces collapses to no area: the proxy route's error, which a
+  // full build does not give.
+  const TriangleMesh torus = bundled("torus.obj");
+  GeometryImageOptions options;
+  options.size = 64;
+  options.proxy_above = 16;
+  GeometryImage image, full_image;
+  ParameterizedMesh pm, full_pm;
+  GeometryImageReport report, full;
+  std::string error;
+  ASSERT_TRUE(build_geometry_image(torus, options, image, pm, report, error)) << error;
+  EXPECT_FALSE(report.proxy.used);
+  EXPECT_EQ(report.proxy.rejected.rfind("its route failed: ", 0), 0u) << report.proxy.rejected;
+  EXPECT_NE(report.proxy.rejected.find("no face with a positive area"), std::string::npos);
+  options.proxy_above = 0;
+  ASSERT_TRUE(build_geometry_image(torus, options, full_image, full_pm, full, error)) << error;
+  EXPECT_EQ(pm.mesh.triangles.size(), torus.triangles.size());
+  EXPECT_TRUE(image.position == full_image.position);
+}
+
 /// `gfield build homer.obj` at 256^2, N = 12, with --proxy-above `proxy_above`: its report.
 nlohmann::json homer_asset(const std::string& proxy_above, std::string& summary) {
   const std::string name =
