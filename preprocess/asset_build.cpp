@@ -358,6 +358,12 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
 bool build_asset_at(const std::string& mesh_path, const std::string& name,
                     const AssetOptions& options, nlohmann::json& report, size_t& stale_removed,
                     std::string& error) {
+  const std::string file = std::filesystem::path(name).filename().string();
+  if (file.empty() || file[0] == '.') {
+    error = name + ": expected DIR/NAME, the name the asset's files begin with (NAME.gimage.exr, " +
+            "...): not a folder, and not beginning with '.'";
+    return false;
+  }
   BuildInputs inputs;
   if (!asset_build_inputs(mesh_path, options, inputs, error)) {
     return false;

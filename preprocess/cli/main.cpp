@@ -5,6 +5,8 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include "gfield/printable.hpp"
 #include "preprocess/cli/commands.hpp"
@@ -31,6 +33,20 @@ int main(int argc, char** argv) {
   gfield::add_assets_command(app);
   gfield::add_export_gltf_command(app);
 
+  if (argc > 1 && argv[1][0] != '-') {  // a word that names no command: say so, not "required"
+    const std::vector<CLI::App*> commands = app.get_subcommands([](CLI::App*) { return true; });
+    std::string names;
+    bool known = false;
+    for (const CLI::App* command : commands) {
+      names += (names.empty() ? "" : ", ") + command->get_name();
+      known = known || command->get_name() == argv[1];
+    }
+    if (!known) {
+      std::fprintf(stderr, "gfield: %s: no such command (the commands: %s; see gfield --help)\n",
+                   gfield::printable(argv[1]).c_str(), names.c_str());
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -44,6 +45,27 @@ TEST(CliInfo, BadInputExitsWithCodeTwoAndOneLine) {
   const CliRun help = run_cli("--help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.out.find("info"), std::string::npos);
+}
+
+TEST(CliInfo, AnUnknownCommandIsNamed) {
+  const CliRun run = run_cli("NOSUCH data.obj");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err.rfind("gfield: NOSUCH: no such command (the commands: info, ", 0), 0u)
+      << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+}
+
+TEST(CliInfo, AnAssetNameThatIsAFolderOrHiddenIsRefusedAndNothingWritten) {
+  const std::string dir = std::string(GFIELD_TEST_TMP) + "/cli_asset_names";
+  for (const std::string& name : {dir + "/", dir + "/.hidden", dir + "/."}) {
+    const CliRun run =
+        run_cli(std::string("build ") + GFIELD_MESH_DIR + "/woody.obj -o " + name + " --size 32");
+    EXPECT_EQ(run.exit_code, 2) << name;
+    EXPECT_EQ(run.err, "gfield: error: " + name +
+                           ": expected DIR/NAME, the name the asset's files begin with "
+                           "(NAME.gimage.exr, ...): not a folder, and not beginning with '.'\n");
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir));
 }
 
 }  // namespace
