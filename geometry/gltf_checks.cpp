@@ -90,10 +90,13 @@ constexpr Reference kReferences[] = {
 
 /// An index: an integer in [0, size).
 bool check_index(const json& value, size_t size, const char* target, std::string& what) {
-  if (!value.is_number_integer() || value.get<std::int64_t>() < 0 ||
-      std::uint64_t(value.get<std::int64_t>()) >= size) {
-    what = "index " + value.dump(-1, ' ', false, json::error_handler_t::replace) +
-           " out of range (" + std::to_string(size) + " " + target + ")";
+  const std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
+  if (!value.is_number_integer()) {
+    what = text + " is not an index (an integer from 0) of the " + target;
+    return false;
+  }
+  if (value.get<std::int64_t>() < 0 || std::uint64_t(value.get<std::int64_t>()) >= size) {
+    what = "index " + text + " out of range (" + std::to_string(size) + " " + target + ")";
     return false;
   }
   return true;
@@ -127,8 +130,15 @@ bool check_references(const json& document, CheckFailure& failure) {
   return true;
 }
 
-/// Every top-level array within kMaxGltfElements.
+/// Every top-level array within kMaxGltfElements, the materials within kMaxMeshMaterials (as
+/// every mesh format's).
 bool check_array_sizes(const json& document, CheckFailure& failure) {
+  if (array_size(document, "materials") > kMaxMeshMaterials) {
+    failure = {"/materials", std::to_string(array_size(document, "materials")) +
+                                 " materials, more than the limit of " +
+                                 std::to_string(kMaxMeshMaterials)};
+    return false;
+  }
   for (auto it = document.begin(); it != document.end(); ++it) {
     if (it.value().is_array() && it.value().size() > kMaxGltfElements) {
       failure = {json_pointer_child("", it.key()), std::to_string(it.value().size()) +

@@ -307,9 +307,18 @@ bool placements(const GltfDocument& d, const std::string& part,
   std::vector<PlacedNode> nodes;
   if (!scene_nodes(d, nodes, error))
     return false;
-  for (const PlacedNode& n : nodes)
-    if (d.model.nodes[size_t(n.node)].mesh >= 0)
-      out.emplace_back(d.model.nodes[size_t(n.node)].mesh, n.world);
+  for (const PlacedNode& n : nodes) {
+    if (d.model.nodes[size_t(n.node)].mesh < 0)
+      continue;
+    // As a scene places it (gltf_scene.cpp): a mirror would turn the mesh inside out, a zero
+    // scale flatten it.
+    if (!(glm::determinant(glm::dmat3(n.world)) > 0.0)) {
+      error = d.file + ": nodes[" + std::to_string(n.node) +
+              "]: a mirroring or singular transform (gfield needs positive scales)";
+      return false;
+    }
+    out.emplace_back(d.model.nodes[size_t(n.node)].mesh, n.world);
+  }
   for (size_t m = 0; out.empty() && m < d.model.meshes.size(); ++m)
     out.emplace_back(int(m), glm::dmat4(1.0));
   return true;

@@ -46,7 +46,10 @@ bool resolve_named_path(const fs::path& base, const std::string& name, const fs:
   }
   std::error_code ec, root_ec;
   const fs::path target = fs::weakly_canonical(fs::absolute(resolved, ec), ec);
-  const fs::path folder = fs::weakly_canonical(fs::absolute(root, root_ec), root_ec);
+  // A bare file name's folder is the working folder: "" would resolve to nothing, which holds
+  // every path.
+  const fs::path folder =
+      fs::weakly_canonical(fs::absolute(root.empty() ? fs::path(".") : root, root_ec), root_ec);
   if (ec || root_ec) {
     problem = "\"" + name + "\" cannot be resolved: " + (ec ? ec : root_ec).message();
     return false;

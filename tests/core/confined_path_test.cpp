@@ -46,6 +46,14 @@ TEST(ConfinedPath, InsideByWholeComponentsAndCanonicalPaths) {
   fs::remove_all(kDir);
 }
 
+TEST(ConfinedPath, ABareFileNamesFolderIsTheWorkingFolder) {
+  // A glTF file named without a folder ("m.gltf"): its folder is "", which must confine as "."
+  // does; an empty root would hold every path.
+  EXPECT_NE(refusal("", "../../etc/passwd", "").find("leaves " + fs::current_path().string()),
+            std::string::npos);
+  EXPECT_EQ(refusal("", "x.bin", ""), "");
+}
+
 TEST(ConfinedPath, SceneRootIsTheNearestFolderWithTheMarker) {
   fs::create_directories(kDir / "project/scenes/more");
   EXPECT_EQ(scene_root((kDir / "project/scenes/more/s.json").string()),

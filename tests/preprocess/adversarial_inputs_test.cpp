@@ -219,6 +219,49 @@ TEST_F(AdversarialInputs, GltfUrisStayInTheGltfFilesFolder) {
       {(dir / "inner/image.gltf").string() + ":", "/images/0/uri", "\"../texture.png\" leaves"});
 }
 
+TEST_F(AdversarialInputs, GltfMaterialCountAndIndicesAreCheckedAsOtherFormatsAre) {
+  const fs::path dir = kDir / "gltf-limits";
+  write(dir / "tet.bin", tetrahedron_bin());
+  json gltf = tetrahedron_gltf("tet.bin");
+  gltf["materials"] = json::array();
+  for (int m = 0; m < 65537; ++m)
+    gltf["materials"].push_back(json::object());
+  write(dir / "many.gltf", gltf.dump());
+  expect_refused(run_cli("info " + (dir / "many.gltf").string()),
+                 {"many.gltf", "/materials", "65537 materials, more than the limit of 65536"});
+  gltf = tetrahedron_gltf("tet.bin");
+  gltf["meshes"][0]["primitives"][0]["indices"] = 1.0;
+  write(dir / "float.gltf", gltf.dump());
+  expect_refused(run_cli("info " + (dir / "float.gltf").string()),
+                 {"float.gltf", "/meshes/0/primitives/0/indices",
+                  "1.0 is not an index (an integer from 0) of the accessors"});
+}
+
+TEST_F(AdversarialInputs, GltfNodesThatMirrorOrFlattenAreRefusedByEveryCommand) {
+  const fs::path dir = kDir / "gltf-scales";
+  write(dir / "tet.bin", tetrahedron_bin());
+  for (const char* scale : {"[1, 1, -1]", "[0, 1, 1]"}) {
+    SCOPED_TRACE(scale);
+    json gltf = tetrahedron_gltf("tet.bin");
+    gltf["nodes"][0]["scale"] = json::parse(scale);
+    write(dir / "tet.gltf", gltf.dump());
+    const std::string file = (dir / "tet.gltf").string();
+    for (const std::string& command :
+         {"info " + file, "build " + file + " -o " + (dir / "out").string() + " --size 16"})
+      expect_refused(run_cli(command), {file + ": nodes[0]: a mirroring or singular transform"});
+    EXPECT_FALSE(fs::exists(dir / "out.report.json"));
+  }
+}
+
+// A glTF file named without a folder is confined to the working folder like any other.
+TEST_F(AdversarialInputs, ABareGltfFileNameStaysInTheWorkingFolder) {
+  const fs::path dir = kDir / "bare/inner";
+  write(dir / "tet.gltf", tetrahedron_gltf("../../outside.bin").dump());
+  write(kDir / "outside.bin", tetrahedron_bin());
+  const CliRun run = test::run_program("cd " + dir.string() + " && " GFIELD_CLI, "info tet.gltf");
+  expect_refused(run, {"tet.gltf:", "/buffers/0/uri", "\"../../outside.bin\" leaves"});
+}
+
 /// A scene in DIR/project/scenes naming `file` for its mesh, rendered with `options`.
 CliRun render_scene_naming(const std::string& file, const std::string& options = "") {
   const fs::path project = kDir / "scene-root/project";
