@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <new>
 
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/atomic_file.hpp"
@@ -236,6 +237,24 @@ std::string with_asset_names(std::string error, const AssetFiles& staged, const 
   return error;
 }
 
+/// The error of a build that ran out of memory: the mesh, the stage it was in (the last report
+/// entry begun: geometry image, field, verify) and what a build of its size needs, measured.
+std::string out_of_memory_message(const std::string& mesh_path, const TriangleMesh& mesh,
+                                  const nlohmann::json& report) {
+  const char* stage = report.contains("geometry_field")   ? "verifying the asset"
+                      : report.contains("geometry_image") ? "casting the geometry field"
+                                                          : "building the geometry image";
+  // Peak resident memory of whole builds without a proxy: the Stanford bunny midpoint-subdivided
+  // to 278K and 1.1M faces (docs/geometry-image.md, "Bad input").
+  constexpr double kBytesPerFace = 2048.0;
+  char needed[64];
+  std::snprintf(needed, sizeof(needed), "%.1f GB",
+                kBytesPerFace * double(mesh.triangles.size()) / 1e9);
+  return mesh_path + ": out of memory while " + stage + " (a build of its " +
+         std::to_string(mesh.triangles.size()) + " triangles needs about " + needed +
+         "; nothing was written)";
+}
+
 /// Writes the asset's four files into `staged` (the build folder): the parts of build_asset
 /// after the mesh is read.
 bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearance,
@@ -335,9 +354,16 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
   std::vector<std::string> warnings;
   report_progress(options.control, "mesh", 0.0);
   const Stopwatch mesh_watch;
-  if (!load_mesh(MeshSource{mesh_path, options.part, options.outside_paths}, mesh, &appearance,
-                 warnings, error) ||
-      interrupted(options.control, mesh_path, error)) {
+  bool loaded = false;
+  try {
+    loaded = load_mesh(MeshSource{mesh_path, options.part, options.outside_paths}, mesh,
+                       &appearance, warnings, error);
+  } catch (const std::bad_alloc&) {
+    std::error_code ec;
+    error = mesh_path + ": out of memory while reading it (" +
+            std::to_string(std::filesystem::file_size(mesh_path, ec)) + " bytes)";
+  }
+  if (!loaded || interrupted(options.control, mesh_path, error)) {
     return false;
   }
   report_progress(options.control, "mesh", 1.0);
@@ -346,9 +372,14 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
   if (!staging.open(name, error)) {
     return false;
   }
-  if (!write_asset_files(mesh, appearance, warnings, mesh_path, name, options, inputs,
-                         staging.staged(), watch, mesh_seconds, report, error) ||
-      !staging.publish(error)) {
+  bool written = false;
+  try {
+    written = write_asset_files(mesh, appearance, warnings, mesh_path, name, options, inputs,
+                                staging.staged(), watch, mesh_seconds, report, error);
+  } catch (const std::bad_alloc&) {
+    error = out_of_memory_message(mesh_path, mesh, report);
+  }
+  if (!written || !staging.publish(error)) {
     error = with_asset_names(error, staging.staged(), asset_files(name));
     return false;
   }

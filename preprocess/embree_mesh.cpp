@@ -4,6 +4,25 @@
 
 namespace gfield {
 
+std::string embree_error_text(RTCError e) {
+  switch (e) {
+    case RTC_ERROR_NONE:
+      return "no error";
+    case RTC_ERROR_INVALID_ARGUMENT:
+      return "an invalid argument";
+    case RTC_ERROR_INVALID_OPERATION:
+      return "an invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY:
+      return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU:
+      return "an unsupported CPU";
+    case RTC_ERROR_CANCELLED:
+      return "cancelled";
+    default:
+      return "error " + std::to_string(int(e));
+  }
+}
+
 EmbreeMesh::~EmbreeMesh() {
   if (scene_) {
     rtcReleaseScene(scene_);
@@ -17,7 +36,7 @@ bool EmbreeMesh::build(const TriangleMesh& mesh, std::string& error, RTCBuildQua
   device_ = rtcNewDevice(nullptr);
   if (!device_) {
     error =
-        "Embree: cannot create a device (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")";
+        "Embree: cannot create a device (" + embree_error_text(rtcGetDeviceError(nullptr)) + ")";
     return false;
   }
   scene_ = rtcNewScene(device_);
@@ -53,7 +72,8 @@ bool EmbreeMesh::build(const TriangleMesh& mesh, std::string& error, RTCBuildQua
   rtcReleaseGeometry(geometry);
   rtcCommitScene(scene_);
   if (const RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE) {
-    error = "Embree: scene build failed (error " + std::to_string(int(e)) + ")";
+    error = "Embree: building the BVH of " + std::to_string(mesh.triangles.size()) +
+            " triangles failed (" + embree_error_text(e) + ")";
     return false;
   }
   return true;

@@ -14,6 +14,9 @@ namespace gfield {
 
 /// Owns an RTCDevice and an RTCScene with the mesh as geometry 0 (primID = triangle index).
 /// Build quality MEDIUM, non-robust (DESIGN.md: fastest to build at equal cast speed).
+/// What an Embree error code means, in words ("out of memory", ...).
+std::string embree_error_text(RTCError error);
+
 class EmbreeMesh {
  public:
   EmbreeMesh() = default;

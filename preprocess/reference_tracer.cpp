@@ -369,7 +369,7 @@ struct ReferenceTracer::Impl {
       return false;
     rtcCommitScene(top);
     if (const RTCError e = rtcGetDeviceError(device); e != RTC_ERROR_NONE) {
-      error = scene.filename + ": Embree scene build failed (error " + std::to_string(int(e)) + ")";
+      error = scene.filename + ": Embree scene build failed (" + embree_error_text(e) + ")";
       return false;
     }
     extent = std::max(1e-3, glm::length(hi - lo));

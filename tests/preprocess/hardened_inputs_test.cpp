@@ -22,6 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::CliRun;
 using test::run_cli;
+using test::run_program;
 
 const fs::path kRegressions = fs::path(GFIELD_FUZZ_DIR) / "regressions";
 const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("hardened_" + std::to_string(::getpid()));
@@ -98,6 +99,28 @@ TEST_F(HardenedInputs, DamagedMeshFilesAreRefusedByInfoAndBuild) {
       fs::remove_all(out);
     }
   }
+}
+
+TEST_F(HardenedInputs, ABuildOutOfMemorySaysWhereAndWhatItNeedsAndWritesNothing) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than any limit leaves";
+#else
+  // 130 MB of address space: the executable and its libraries fit, a geometry image of spot
+  // does not. `timeout`: an allocation failure must end the build, not hang it.
+  const fs::path out = kDir / "oom-out";
+  const CliRun run = run_program(
+      "ulimit -v 130000; exec timeout 120 " GFIELD_CLI,
+      "build " GFIELD_MESH_DIR "/spot.obj -o " + (out / "spot").string() + " --verify-rays 0");
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_EQ(run.err.rfind("gfield: error: " GFIELD_MESH_DIR "/spot.obj: out of memory while ", 0),
+            0u)
+      << run.err;
+  EXPECT_NE(run.err.find("a build of its 5856 triangles needs about"), std::string::npos)
+      << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_FALSE(fs::exists(out / "spot.report.json"));
+  EXPECT_FALSE(fs::exists(out / "spot.gimage.exr"));
+#endif
 }
 
 TEST_F(HardenedInputs, DamagedScenesAreRefusedByRender) {
