@@ -1,5 +1,7 @@
 #include "preprocess/asset_files.hpp"
 
+#include <filesystem>
+
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/build_id.hpp"
 #include "gfield/exr_io.hpp"
@@ -16,6 +18,11 @@ constexpr std::uint64_t kMaxReportBytes = 64ull << 20;
 AssetFiles asset_files(const std::string& name) {
   const std::string image = name + ".gimage.exr";
   return {image, parameterized_mesh_path(image), name + ".gfield.exr", name + ".report.json"};
+}
+
+std::string published_build(const std::string& name) {
+  std::error_code ec;
+  return std::filesystem::read_symlink(name + ".builds/current", ec).string();
 }
 
 bool read_report(const std::string& report_file, nlohmann::json& report, std::string& error) {

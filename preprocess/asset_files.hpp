@@ -19,6 +19,10 @@ struct AssetFiles {
 /// The files of asset `name` (a path without extension: DIR/NAME).
 AssetFiles asset_files(const std::string& name);
 
+/// The folder the asset's published files lie in, as NAME.builds/current names it ("" for an
+/// asset of plain files or none): it changes when the asset is republished.
+std::string published_build(const std::string& name);
+
 /// Reads a report file as a JSON object. False with an error "FILE: problem" when it is not a
 /// regular file (checked before it is opened: a FIFO or a folder neither blocks nor throws),
 /// cannot be read, or is not a JSON object.

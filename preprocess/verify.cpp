@@ -448,7 +448,15 @@ bool check_field_sees_mesh(const nlohmann::json& table, const std::string& field
 
 bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,
                   std::string& error) {
-  return verify_asset_files(asset_files(name), name, options, report, error);
+  // An asset republished while its files were read can give files of two builds, or a folder
+  // removed under the reader: then the read is taken again, of the build published now.
+  for (int attempt = 0;; ++attempt) {
+    const std::string before = published_build(name);
+    if (verify_asset_files(asset_files(name), name, options, report, error))
+      return true;
+    if (attempt == 2 || before.empty() || published_build(name) == before)
+      return false;
+  }
 }
 
 bool verify_asset_files(const AssetFiles& read, const std::string& name,

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -240,6 +241,31 @@ TEST_F(AssetUnit, KilledRebuildLeavesTheOldAssetOrTheNewOne) {
   build(kSpot, "spot", kSmall);
   EXPECT_TRUE(leftovers().empty()) << leftovers().front();
   EXPECT_EQ(report_id("spot"), old_id);
+}
+
+TEST_F(AssetUnit, AVerifyWhileTheAssetIsRepublishedReadsOneBuild) {
+  build(kSpot, "spot", kSmall);
+  // Republish two builds of other options in turn for as long as the verifies run.
+  std::atomic<bool> done{false};
+  std::thread publisher([&] {
+    for (int round = 0; !done; ++round) {
+      const pid_t pid =
+          spawn(split("build " + kSpot + " -o " + name("spot") + (round % 2 ? kSmall : kLarger)));
+      waitpid(pid, nullptr, 0);
+    }
+  });
+  int failed = 0;
+  std::string failure;
+  for (int i = 0; i < 60; ++i) {
+    const test::CliRun r = run_cli("verify " + name("spot") + " --rays 100");
+    if (r.exit_code != 0) {
+      ++failed;
+      failure = r.err;
+    }
+  }
+  done = true;
+  publisher.join();
+  EXPECT_EQ(failed, 0) << failure;
 }
 
 TEST_F(AssetUnit, InterruptedBuildLeavesNothingBehind) {
