@@ -33,18 +33,6 @@ namespace {
 
 using namespace gfield;
 
-/// Writes `mesh` as a plain OBJ (positions and faces); false when the file cannot be written.
-bool write_obj(const std::string& path, const TriangleMesh& mesh) {
-  FILE* file = std::fopen(path.c_str(), "w");
-  if (file == nullptr)
-    return false;
-  for (const glm::dvec3& p : mesh.positions)
-    std::fprintf(file, "v %.9g %.9g %.9g\n", p.x, p.y, p.z);
-  for (const glm::ivec3& t : mesh.triangles)
-    std::fprintf(file, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
-  return std::fclose(file) == 0;
-}
-
 /// One `gfield build MESH -o NAME --json`: its report and peak resident megabytes; false (with
 /// a message) when it fails.
 bool run_build(const std::string& mesh, const std::string& name, nlohmann::json& report,

@@ -1,11 +1,14 @@
 #pragma once
-// Large smooth test meshes for the asset-build benchmark: every triangle of a mesh split into k x k
+// Large smooth test meshes for the benchmarks (asset build, runtime complexity), and an OBJ
+// writer for them: every triangle of a mesh split into k x k
 // triangles whose new vertices lie on its curved point-normal (PN) triangle (Vlachos et al. 2001,
 // a cubic patch through the corners with the corners' normals), so the result is a smooth surface
 // of k^2 times the faces, as a scan of the same object would be, not a flat-faced copy.
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -86,6 +89,18 @@ inline TriangleMesh pn_subdivided(const TriangleMesh& mesh, int k) {
       }
   }
   return out;
+}
+
+/// Writes `mesh` as a plain OBJ (positions and faces); false when the file cannot be written.
+inline bool write_obj(const std::string& path, const TriangleMesh& mesh) {
+  FILE* file = std::fopen(path.c_str(), "w");
+  if (file == nullptr)
+    return false;
+  for (const glm::dvec3& p : mesh.positions)
+    std::fprintf(file, "v %.9g %.9g %.9g\n", p.x, p.y, p.z);
+  for (const glm::ivec3& t : mesh.triangles)
+    std::fprintf(file, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
+  return std::fclose(file) == 0;
 }
 
 }  // namespace gfield

@@ -1,0 +1,173 @@
+// The geometry field's cost against the mesh's size, beside the BVH's: one mesh at growing face
+// counts (spot 5.9K, the Stanford bunny 69K, the bunny split on its PN patches 2 x 2 into 278K
+// and 4 x 4 into 1.1M faces, each scaled into spot's box), placed as the glass of the
+// davis-wyman-color-chart scene and, in a copy of it, as a mirror. Per mesh and scene: ms per
+// frame with the mesh looked up in its geometry field (refined) and traced exactly through its
+// BVH, the PSNR of each against the Embree reference tracer's picture (1 spp, same depth), the
+// GPU bytes of each, and the work per lookup or traversal (counted on the GPU). Prints markdown.
+// Assets are built with `gfield build` (its defaults) into a temporary folder.
+//
+// Usage: bench_runtime_complexity [--frames F] [--depth D] [SIZE]   (default 2 frames, depth 4,
+// 256)
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/pn_subdivision.hpp"
+#include "example_scenes.hpp"
+#include "gl_bench_setup.hpp"
+#include "preprocess/reference_tracer.hpp"
+#include "runtime/shader_program.hpp"
+#include "runtime_runs.hpp"
+
+namespace fs = std::filesystem;
+using namespace gfield;
+
+namespace {
+
+/// `mesh` moved and scaled so that its box has `target`'s centre and diagonal.
+TriangleMesh fitted(TriangleMesh mesh, const TriangleMesh& target) {
+  const auto box = [](const TriangleMesh& m, glm::dvec3& lo, glm::dvec3& hi) {
+    lo = glm::dvec3(1e300);
+    hi = glm::dvec3(-1e300);
+    for (const glm::dvec3& p : m.positions) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  };
+  glm::dvec3 lo, hi, target_lo, target_hi;
+  box(mesh, lo, hi);
+  box(target, target_lo, target_hi);
+  const double scale = glm::length(target_hi - target_lo) / glm::length(hi - lo);
+  for (glm::dvec3& p : mesh.positions)
+    p = (target_lo + target_hi) / 2.0 + scale * (p - (lo + hi) / 2.0);
+  return mesh;
+}
+
+/// One mesh of the series: its name, faces and asset (DIR/NAME).
+struct SeriesMesh {
+  std::string name;
+  size_t faces = 0;
+  std::string file;
+  std::string asset;
+};
+
+/// The four meshes, written into `dir` and built; false (with a message) on failure.
+bool make_series(const fs::path& dir, std::vector<SeriesMesh>& series) {
+  TriangleMesh spot, bunny;
+  std::string error;
+  if (!load_mesh(std::string(GFIELD_MESH_DIR) + "/spot.obj", spot, error) ||
+      !load_mesh(std::string(GFIELD_MESH_DIR) + "/stanford-bunny.obj", bunny, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return false;
+  }
+  const TriangleMesh fitted_bunny = fitted(bunny, spot);
+  const std::pair<std::string, TriangleMesh> meshes[] = {
+      {"spot", spot},
+      {"bunny", fitted_bunny},
+      {"bunny-pn2x2", pn_subdivided(fitted_bunny, 2)},
+      {"bunny-pn4x4", pn_subdivided(fitted_bunny, 4)}};
+  for (const auto& [name, mesh] : meshes) {
+    SeriesMesh m{name, mesh.triangles.size(), (dir / (name + ".obj")).string(),
+                 (dir / name).string()};
+    Stopwatch watch;
+    if (!write_obj(m.file, mesh) ||
+        !run_gfield_cli("build \"" + m.file + "\" -o \"" + m.asset + "\" --verify-rays 0"))
+      return false;
+    std::printf("built %s (%zu faces) in %.1f s\n", name.c_str(), m.faces, watch.seconds());
+    series.push_back(m);
+  }
+  return true;
+}
+
+/// data/scenes/davis-wyman-color-chart.json with its glass object's mesh replaced by `m`, of
+/// material `material` (the scene's dielectric, or a mirror); the scene file's path.
+std::string series_scene(const SeriesMesh& m, bool mirror, const fs::path& dir) {
+  const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes/davis-wyman-color-chart.json";
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
+  for (auto& object : scene["objects"]) {
+    if (object["shape"] != "mesh")
+      continue;
+    object["file"] = m.file;
+    object["gimage"] = m.asset + ".gimage.exr";
+    object["gfield"] = m.asset + ".gfield.exr";
+    if (mirror)
+      object["material"] = {{"type", "mirror"}};
+  }
+  const std::string out = (dir / (m.name + (mirror ? "-mirror" : "-glass") + ".json")).string();
+  std::ofstream(out) << scene.dump(2);
+  return out;
+}
+
+/// The rows of one mesh in one scene: field (refined) and BVH.
+void bench_scene(const SeriesMesh& m, const std::string& file, const char* kind, int size,
+                 int depth, int frames) {
+  Scene scene;
+  GpuScene gpu;
+  GeometryFieldMethod method;
+  ReferenceTracer tracer;
+  std::string error;
+  if (!load_scene(file, scene, error, OutsidePaths::kAllowed) || !gpu.load(scene, error) ||
+      !method.load(gpu, default_shader_dir(), error) || !tracer.build(scene, error)) {
+    std::fprintf(stderr, "%s: %s\n", file.c_str(), error.c_str());
+    return;
+  }
+  RenderOptions options;
+  options.width = options.height = size;
+  options.samples_per_pixel = 1;
+  options.max_depth = depth;
+  options.jitter = false;
+  const Image reference = clamped_to_display(tracer.render(options));
+  method.settings().max_depth = depth;
+  method.settings().mode = LookupMode::kRefined;
+  method.settings().intersect = MeshIntersection::kField;
+  const Run field = run(method, scene, size, frames, reference);
+  method.settings().intersect = MeshIntersection::kBvh;
+  const Run bvh = run(method, scene, size, frames, reference);
+  double field_mb = 0.0, bvh_mb = 0.0;
+  asset_bytes(gpu, field_mb, bvh_mb);
+  std::printf("| %s | %zu | %s | field | %.1f | %.2f | %.1f | %s |\n", m.name.c_str(), m.faces,
+              kind, field.ms, field.psnr, field_mb, work_line(field.per_sample).c_str());
+  std::printf("| | | | BVH | %.1f | %.2f | %.1f | %s |\n", bvh.ms, bvh.psnr, bvh_mb,
+              work_line(bvh.per_sample).c_str());
+  std::printf("| | | | field / BVH | %.2f | %+.2f | | |\n", field.ms / bvh.ms,
+              field.psnr - bvh.psnr);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int depth = 4, frames = 2, size = 256;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool option = (arg == "--depth" || arg == "--frames") && i + 1 < argc;
+    const int value = std::atoi(option ? argv[++i] : argv[i]);
+    (arg == "--depth" ? depth : arg == "--frames" ? frames : size) = value;
+    if (value < 1 || (!option && arg[0] == '-')) {
+      std::fprintf(stderr, "usage: bench_runtime_complexity [--frames F] [--depth D] [SIZE]\n");
+      return 2;
+    }
+  }
+  const BenchFolder folder("gfield_bench_runtime_complexity");
+  std::vector<SeriesMesh> series;
+  if (!make_series(folder.path, series))
+    return 2;
+  auto context = create_bench_context();
+  if (!context)
+    return kExitNoOpenGL;
+  std::printf("\n%dx%d, depth %d, %d timed frames; PSNR against the reference tracer (1 spp)\n\n",
+              size, size, depth, frames);
+  std::printf("| mesh | faces | scene | route | ms/frame | PSNR dB | GPU MB | work |\n");
+  std::printf("|---|---|---|---|---|---|---|---|\n");
+  for (const SeriesMesh& m : series)
+    for (const bool mirror : {false, true})
+      bench_scene(m, series_scene(m, mirror, folder.path), mirror ? "mirror" : "glass", size, depth,
+                  frames);
+  return 0;
+}
