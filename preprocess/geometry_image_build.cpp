@@ -566,8 +566,8 @@ bool proxy_route(const TriangleMesh& input, const GeometryImageOptions& options,
   std::string failure;
   const bool made = make_proxy(input, appearance, options, proxy, projection, report, failure);
   report.seconds.proxy = stage.seconds();
-  if (!made || !image_route(input, options, appearance, &proxy, &projection, image,
-                            parameterized, report, failure)) {
+  if (!made || !image_route(input, options, appearance, &proxy, &projection, image, parameterized,
+                            report, failure)) {
     if (failure.find(kInterrupted) != std::string::npos) {
       error = failure;
       return false;
