@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gfield/file_read.hpp"
+
 namespace gfield {
 namespace {
 
@@ -149,7 +151,7 @@ std::string totals(const std::map<std::string, json>& latest, const BatchSummary
 }
 
 /// Shards (of `count`) with a failed asset or fewer assets than they hold: shard i of `meshes`
-/// meshes holds meshes i, i + count, ...
+/// meshes (the input as its newest run saw it) holds meshes i, i + count, ...
 std::vector<int> shards_to_rerun(const std::vector<Manifest>& manifests,
                                  const std::map<std::string, json>& latest, size_t meshes,
                                  int count) {
@@ -161,8 +163,14 @@ std::vector<int> shards_to_rerun(const std::vector<Manifest>& manifests,
     }
     for (const json& r : m.records) {
       const std::string asset = r["asset"].get<std::string>();
+      const auto it = latest.find(asset);
+      // A line of a run over another input (a mesh since added or gone: the shards held other
+      // meshes then), or of a mesh gone from the input, says nothing of the shards now.
+      if (it == latest.end() || size_t(number_of(r, "meshes")) != meshes) {
+        continue;
+      }
       seen[size_t(m.index)].insert(asset);
-      if (text_of(latest.at(asset), "status") == "failed") {
+      if (text_of(it->second, "status") == "failed") {
         rerun.insert(m.index);
       }
     }
@@ -184,21 +192,33 @@ bool summarize_batch(const std::string& dir, BatchSummary& summary, std::string&
   if (!read_manifests(dir, manifests, skipped, error)) {
     return false;
   }
-  const std::map<std::string, json> latest = latest_records(manifests);
+  std::map<std::string, json> latest = latest_records(manifests);
+  // An asset whose mesh has left the input since its line was written is no longer the batch's:
+  // listed, not counted (the batch's size is what its newest run saw).
+  std::string vanished;
+  for (auto it = latest.begin(); it != latest.end();) {
+    if (file_problem(text_of(it->second, "mesh")) == "no such file") {
+      vanished += "  " + text_of(it->second, "mesh") + "\n";
+      it = latest.erase(it);
+    } else {
+      ++it;
+    }
+  }
   BatchSummary s;
   std::string newest;
   for (const auto& [asset, r] : latest) {
-    s.meshes = std::max(s.meshes, size_t(number_of(r, "meshes")));
     s.failed += text_of(r, "status") == "failed" ? 1 : 0;
     if (text_of(r, "finished") >= newest) {
       newest = text_of(r, "finished");
       s.shard_count = std::max(1, int(number_of(r, "shard_count")));
+      s.meshes = size_t(number_of(r, "meshes"));
     }
   }
   s.missing = s.meshes > latest.size() ? s.meshes - latest.size() : 0;
   s.shards_to_rerun = shards_to_rerun(manifests, latest, s.meshes, s.shard_count);
   s.text = "batch " + dir + ": " + std::to_string(manifests.size()) + " manifests\n" +
-           table(latest) + totals(latest, s);
+           table(latest) + totals(latest, s) +
+           (vanished.empty() ? "" : "meshes gone from the input since their lines:\n" + vanished);
   for (const std::string& where : skipped) {
     s.text += "skipped an unreadable line: " + where + "\n";
   }

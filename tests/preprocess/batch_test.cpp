@@ -171,6 +171,31 @@ TEST_F(Batch, ManifestAndSummaryNameFailuresAndTheShardsToRerun) {
   EXPECT_NE(r.out.find("slowest:"), std::string::npos) << r.out;
 }
 
+TEST_F(Batch, AMeshThatLeavesTheInputBetweenShardsIsListedAndTheSummaryConverges) {
+  copy_mesh("woody");
+  copy_mesh("suzanne");
+  copy_mesh("cow");
+  ASSERT_EQ(run_cli("batch " + in() + " -o " + out() + " --shard 0/2" + kFast).exit_code, 0);
+  fs::remove(in() + "/cow.obj");  // gone before shard 1 runs
+  ASSERT_EQ(run_cli("batch " + in() + " -o " + out() + " --shard 1/2" + kFast).exit_code, 0);
+  test::CliRun r = run_cli("batch --summary " + out());
+  for (int rerun = 0; r.exit_code == 2 && rerun < 2; ++rerun) {  // what the summary asks for
+    const size_t at = r.out.find("rerun shards ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    for (const char* shard : {"0", "1"})
+      if (r.out.substr(at, 20).find(shard) != std::string::npos)
+        ASSERT_EQ(run_cli("batch " + in() + " -o " + out() + " --shard " + shard + "/2" + kFast)
+                      .exit_code,
+                  0);
+    r = run_cli("batch --summary " + out());
+  }
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("2 meshes: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("meshes gone from the input since their lines:\n  " + in() + "/cow.obj"),
+            std::string::npos)
+      << r.out;
+}
+
 TEST_F(Batch, BadInputIsOneLineAndWritesNothing) {
   copy_mesh("woody");
   fs::copy_file(kMeshes + "/woody.obj", kDir / "woody.obj");
