@@ -4,12 +4,14 @@
 // davis-wyman-color-chart scene and, in a copy of it, as a mirror. Per mesh and scene: ms per
 // frame with the mesh looked up in its geometry field (refined) and traced exactly through its
 // BVH, the PSNR of each against the Embree reference tracer's picture (1 spp, same depth), the
-// GPU bytes of each, and the work per lookup or traversal (counted on the GPU). Prints markdown.
+// GPU bytes of each, and the work per lookup or traversal (counted on the GPU); and
+// --intersect auto's time against the faster of the two, with the route it took. Prints markdown.
 // Assets are built with `gfield build` (its defaults) into a temporary folder.
 //
 // Usage: bench_runtime_complexity [--frames F] [--depth D] [SIZE]   (default 2 frames, depth 4,
 // 256)
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -129,6 +131,9 @@ void bench_scene(const SeriesMesh& m, const std::string& file, const char* kind,
   const Run field = run(method, scene, size, frames, reference);
   method.settings().intersect = MeshIntersection::kBvh;
   const Run bvh = run(method, scene, size, frames, reference);
+  method.settings().intersect = MeshIntersection::kAuto;
+  const Run automatic = run(method, scene, size, frames, reference);
+  const std::string route = method.status();
   double field_mb = 0.0, bvh_mb = 0.0;
   asset_bytes(gpu, field_mb, bvh_mb);
   std::printf("| %s | %zu | %s | field | %.1f | %.2f | %.1f | %s |\n", m.name.c_str(), m.faces,
@@ -137,6 +142,9 @@ void bench_scene(const SeriesMesh& m, const std::string& file, const char* kind,
               work_line(bvh.per_sample).c_str());
   std::printf("| | | | field / BVH | %.2f | %+.2f | | |\n", field.ms / bvh.ms,
               field.psnr - bvh.psnr);
+  std::printf("| | | | auto / the faster | %.2f | %.2f | | %s |\n",
+              automatic.ms / std::min(field.ms, bvh.ms), automatic.psnr,
+              route.substr(std::min(route.size(), route.find("by"))).c_str());
   std::fflush(stdout);
 }
 

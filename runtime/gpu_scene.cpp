@@ -64,7 +64,8 @@ gpu::GpuObject gpu_object(const GpuScene& gpu_scene, int k) {
         glm::ivec4(asset.layer, asset.samples_per_side, asset.image_size, asset.albedo ? 1 : 0);
     g.field = glm::ivec4(asset.field_layer, asset.field_lines, asset.field_interior,
                          gpu_scene.assets().field_bits() + 256 * asset.field_layers);
-    g.image = glm::ivec4(asset.image_origin, asset.bvh_root, 0);
+    g.image =
+        glm::ivec4(asset.image_origin, asset.bvh_root, gpu_scene.bvh_route(o.shape.mesh) ? 1 : 0);
   }
   return g;
 }
@@ -97,6 +98,11 @@ bool GpuScene::require(const AssetNeeds& needs, std::string& error) {
     return false;
   update();
   return true;
+}
+
+void GpuScene::set_bvh_routes(std::vector<char> by_bvh) {
+  bvh_routes_ = std::move(by_bvh);
+  update();
 }
 
 void GpuScene::update() {

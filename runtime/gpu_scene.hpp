@@ -6,6 +6,7 @@
 // Editing objects, materials or lights and calling update() refills the two buffers only.
 
 #include <string>
+#include <vector>
 
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
@@ -41,6 +42,13 @@ class GpuScene {
   void update();
 
   const GpuAssets& assets() const { return assets_; }
+  /// Per mesh of scene(): 1 when the mesh is traced through its BVH by choice although it has a
+  /// field (--intersect auto: GpuObject::image.w); refreshes the objects buffer.
+  void set_bvh_routes(std::vector<char> by_bvh);
+  /// Whether mesh `mesh` is traced through its BVH by choice (set_bvh_routes).
+  bool bvh_route(int mesh) const {
+    return size_t(mesh) < bvh_routes_.size() && bvh_routes_[size_t(mesh)] != 0;
+  }
   /// Diagonal of the bounds of all objects and the camera (scene units, at least 1e-3).
   float extent() const { return extent_; }
 
@@ -71,6 +79,7 @@ class GpuScene {
  private:
   Scene scene_;
   GpuAssets assets_;
+  std::vector<char> bvh_routes_;  ///< per mesh, set_bvh_routes
   GlBuffer objects_;
   GlBuffer lights_;
   GlTexture environment_;

@@ -33,16 +33,47 @@ std::vector<MethodOption> GeometryFieldMethod::options() {
                    &s.min_weight, 0.0f, 1.0f),
       int_option("max-rays", "max rays / pixel", "Secondary rays per pixel at most", &s.max_rays, 1,
                  256),
-      choice_option(
-          "intersect", "intersect meshes",
-          "How rays meet meshes: field (a geometry-field lookup) or bvh (their triangles, "
-          "exactly, through a BVH); a mesh without a field always by its BVH",
-          &s.intersect, {"field", "bvh"}),
+      choice_option("intersect", "intersect meshes",
+                    "How rays meet meshes: field (a geometry-field lookup), bvh (their triangles, "
+                    "exactly, through a BVH) or auto (each mesh the cheaper way by a cost model: "
+                    "docs/runtime.md); a mesh without a field always by its BVH",
+                    &s.intersect, {"field", "bvh", "auto"}),
       flag_option("count-work", "count work",
                   "Count field lookups, texel fetches, Newton steps and BVH nodes (--bench prints "
                   "them per sample)",
                   &s.count_work),
   };
+}
+
+std::vector<Route> GeometryFieldMethod::auto_routes() const {
+  const Scene& scene = scene_->scene();
+  const std::vector<GpuAsset>& assets = scene_->assets().assets();
+  std::vector<RouteInputs> meshes(scene.meshes.size());
+  for (size_t m = 0; m < meshes.size() && m < assets.size(); ++m) {
+    meshes[m].triangles = size_t(assets[m].source.index_count) / 3;
+    meshes[m].has_field = assets[m].samples_per_side > 0;
+  }
+  for (const SceneObject& o : scene.objects)
+    if (o.shape.type == ShapeType::kMesh && o.material.type == MaterialType::kDielectric)
+      meshes[size_t(o.shape.mesh)].dielectric = true;
+  std::vector<Route> routes;
+  for (const RouteInputs& mesh : meshes)
+    routes.push_back(auto_route(mesh));
+  return routes;
+}
+
+bool GeometryFieldMethod::route_meshes(std::string& error) {
+  std::vector<char> by_bvh(scene_->scene().meshes.size(), 0);
+  if (settings_.intersect == MeshIntersection::kAuto) {
+    const std::vector<Route> routes = auto_routes();
+    for (size_t m = 0; m < routes.size(); ++m)
+      by_bvh[m] = routes[m].bvh ? 1 : 0;
+  }
+  if (by_bvh == routes_)
+    return true;
+  routes_ = by_bvh;
+  scene_->set_bvh_routes(std::move(by_bvh));
+  return scene_->require(needs(), error);  // the BVHs the routes need
 }
 
 AssetNeeds GeometryFieldMethod::needs() const {
@@ -52,8 +83,11 @@ AssetNeeds GeometryFieldMethod::needs() const {
   needs.field_bits = field_bits(settings_.field_bits);
   needs.source_meshes = true;  // the G-buffer holds the surfaces the reference tracer sees
   needs.bvhs = settings_.intersect == MeshIntersection::kBvh;
-  for (const MeshAsset& mesh : scene_->scene().meshes)
-    needs.bvhs = needs.bvhs || mesh.geometry_image.empty() || mesh.geometry_field.empty();
+  for (size_t m = 0; m < scene_->scene().meshes.size(); ++m) {
+    const MeshAsset& mesh = scene_->scene().meshes[m];
+    needs.bvhs = needs.bvhs || mesh.geometry_image.empty() || mesh.geometry_field.empty() ||
+                 scene_->bvh_route(int(m));
+  }
   return needs;
 }
 
@@ -63,7 +97,7 @@ bool GeometryFieldMethod::load(GpuScene& scene, const std::filesystem::path& sha
   shader_dir_ = shader_dir;
   trace_programs_.clear();
   auto program = std::make_unique<ShaderProgram>();
-  if (!scene.require(needs(), error) ||
+  if (!scene.require(needs(), error) || !route_meshes(error) ||
       !gbuffer_program_.build(shader_dir, {"gbuffer.vert", "gbuffer.frag"}, "", error) ||
       !program->build(shader_dir, {"fullscreen.vert", "field_trace.frag"}, trace_defines(), error))
     return false;
@@ -73,9 +107,10 @@ bool GeometryFieldMethod::load(GpuScene& scene, const std::filesystem::path& sha
 
 std::string GeometryFieldMethod::trace_defines() const {
   bool by_field = false, by_bvh = false;
-  for (const GpuAsset& asset : scene_->assets().assets()) {
-    const bool field =
-        asset.samples_per_side > 0 && settings_.intersect == MeshIntersection::kField;
+  const std::vector<GpuAsset>& assets = scene_->assets().assets();
+  for (size_t m = 0; m < assets.size(); ++m) {
+    const bool field = assets[m].samples_per_side > 0 &&
+                       settings_.intersect != MeshIntersection::kBvh && !scene_->bvh_route(int(m));
     by_field = by_field || field;
     by_bvh = by_bvh || !field;
   }
@@ -111,6 +146,10 @@ bool GeometryFieldMethod::follow_settings() {
     std::fprintf(stderr, "%s\n", error.c_str());
     settings_.field_bits = FieldBits(assets.field_bits() / 16);  // 8, 16, 32 -> 0, 1, 2
     settings_.intersect = MeshIntersection::kField;
+    return false;
+  }
+  if (!route_meshes(error)) {  // --intersect auto chosen or left in the panel
+    std::fprintf(stderr, "%s\n", error.c_str());
     return false;
   }
   return true;
@@ -250,13 +289,16 @@ std::string GeometryFieldMethod::status() const {
   const Scene& scene = scene_->scene();
   const std::vector<GpuAsset>& assets = scene_->assets().assets();
   std::string by_field, by_bvh;
+  const bool automatic = settings_.intersect == MeshIntersection::kAuto;
+  const std::vector<Route> routes = automatic ? auto_routes() : std::vector<Route>();
   for (size_t m = 0; m < scene.meshes.size() && m < assets.size(); ++m) {
     const std::string name = std::filesystem::path(scene.meshes[m].file).filename().string();
     const bool field = assets[m].samples_per_side > 0;
-    if (field && settings_.intersect == MeshIntersection::kField)
-      by_field += (by_field.empty() ? "" : ", ") + name;
+    const std::string why = automatic ? " (auto: " + routes[m].why + ")" : "";
+    if (field && settings_.intersect != MeshIntersection::kBvh && !scene_->bvh_route(int(m)))
+      by_field += (by_field.empty() ? "" : ", ") + name + why;
     else
-      by_bvh += (by_bvh.empty() ? "" : ", ") + name + (field ? "" : " (no field)");
+      by_bvh += (by_bvh.empty() ? "" : ", ") + name + (field ? why : " (no field)");
   }
   if (by_field.empty() && by_bvh.empty())
     return "";

@@ -11,15 +11,17 @@
 
 #include "gfield/field_lookup.hpp"
 #include "runtime/method.hpp"
+#include "runtime/methods/intersect_route.hpp"
 #include "runtime/render_target.hpp"
 #include "runtime/shader_program.hpp"
 #include "runtime/work_counters.hpp"
 
 namespace gfield {
 
-/// How rays meet the mesh objects: a lookup in their geometry field, or exactly, through a BVH
-/// of their triangles (the peer of issue 27). Meshes without a field always use their BVH.
-enum class MeshIntersection { kField = 0, kBvh = 1 };
+/// How rays meet the mesh objects: a lookup in their geometry field, exactly through a BVH of
+/// their triangles, or each mesh the way the cost model says is cheaper for it
+/// (methods/intersect_route.hpp). Meshes without a field always use their BVH.
+enum class MeshIntersection { kField = 0, kBvh = 1, kAuto = 2 };
 
 /// Bits per uv component of the fields on the GPU (RG8, RG16, RG32F).
 enum class FieldBits { k8 = 0, k16 = 1, k32 = 2 };
@@ -69,6 +71,11 @@ class GeometryFieldMethod : public Method {
  private:
   /// The assets this method needs (the fields at the settings' bits).
   AssetNeeds needs() const;
+  /// --intersect auto's route for each mesh of the scene (methods/intersect_route.hpp).
+  std::vector<Route> auto_routes() const;
+  /// Sets the scene's per-mesh BVH routes for the current --intersect (all 0 unless auto) and
+  /// loads the BVHs they need.
+  bool route_meshes(std::string& error);
   void render_gbuffer(const Camera& camera, int width, int height, glm::vec2 jitter);
   void render_tracing(const Camera& camera, Framebuffer& target, glm::vec2 jitter);
   /// Loads what a changed setting needs (field bits, BVHs); false when it
@@ -90,6 +97,7 @@ class GeometryFieldMethod : public Method {
   /// and the ways of meeting meshes that a frame does not use are compiled out.
   std::map<std::string, std::unique_ptr<ShaderProgram>> trace_programs_;
   WorkCounters work_;
+  std::vector<char> routes_;  ///< the per-mesh BVH routes set in the scene (route_meshes)
   /// position + object, shading normal + u, geometric normal + v, albedo
   RenderTarget gbuffer_;
 };

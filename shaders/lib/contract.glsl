@@ -212,7 +212,8 @@ struct GpuObject {
                 // component + 256 * the hits a lookup reads per line (GeometryField::layers)
   ivec4 image;  // mesh: texel (x, y) of its geometry image's corner in layer asset.x (images
                 // share layers: runtime/image_atlas.hpp); z: the root of its BVH in
-                // BUFFER_BVH_NODES (-1: none loaded); w: 0
+                // BUFFER_BVH_NODES (-1: none loaded); w: 1 when it is traced through its BVH
+                // although it has a field (--intersect auto), else 0
 };
 
 // One BVH node (std430, 32 bytes; geometry/mesh_bvh.hpp), bounds in mesh coordinates. The

@@ -69,7 +69,8 @@ SceneHit scene_miss() {
 
 // Whether mesh object k is traced through its BVH rather than looked up in its field.
 bool traced_by_bvh(int k) {
-  return objects[k].image.z >= 0 && (u_intersect_bvh || objects[k].asset.y == 0);
+  return objects[k].image.z >= 0 &&
+         (u_intersect_bvh || objects[k].asset.y == 0 || objects[k].image.w != 0);
 }
 
 // Offset of rays leaving world point `p` of analytic shape k: beyond the float error of the
