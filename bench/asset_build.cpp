@@ -28,6 +28,7 @@
 #include "gfield/exr_io.hpp"
 #include "gfield/stopwatch.hpp"
 #include "preprocess/field_build.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace {
 
@@ -44,8 +45,8 @@ bool run_build(const std::string& mesh, const std::string& name, nlohmann::json&
     std::FILE* file = std::freopen(out.c_str(), "w", stdout);
     if (file == nullptr)
       _exit(127);
-    execl(GFIELD_CLI, GFIELD_CLI, "build", mesh.c_str(), "-o", name.c_str(), "--json",
-          static_cast<char*>(nullptr));
+    execl(gfield::build_paths::cli(), gfield::build_paths::cli(), "build", mesh.c_str(), "-o",
+          name.c_str(), "--json", static_cast<char*>(nullptr));
     _exit(127);
   }
   int status = 0;
@@ -82,7 +83,8 @@ double bare_cast_seconds(const std::string& name, int samples_per_side) {
 std::string subdivided_bunny(const std::filesystem::path& dir, int k) {
   TriangleMesh bunny;
   std::string error;
-  if (!load_mesh(std::string(GFIELD_MESH_DIR) + "/stanford-bunny.obj", bunny, error)) {
+  if (!load_mesh(std::string(gfield::build_paths::mesh_dir()) + "/stanford-bunny.obj", bunny,
+                 error)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return "";
   }
@@ -119,7 +121,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> meshes(argv + 1, argv + argc);
   if (meshes.empty()) {
     for (const char* file : {"spot.obj", "homer.obj", "stanford-bunny.obj"})
-      meshes.push_back(std::string(GFIELD_MESH_DIR) + "/" + file);
+      meshes.push_back(std::string(gfield::build_paths::mesh_dir()) + "/" + file);
     for (int k : {3, 6})
       meshes.push_back(subdivided_bunny(folder.path, k));
   }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "preprocess/geometry_image_build.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 
@@ -20,7 +21,7 @@ struct BenchAsset {
 /// Loads `file` from data/meshes and builds its geometry image; false (with a message on
 /// stderr) when the mesh is missing or the pipeline fails.
 inline bool load_bench_asset(const std::string& file, int image_size, BenchAsset& asset) {
-  const std::string path = std::string(GFIELD_MESH_DIR) + "/" + file;
+  const std::string path = std::string(gfield::build_paths::mesh_dir()) + "/" + file;
   TriangleMesh mesh;
   std::string error;
   if (!load_mesh(path, mesh, error)) {

@@ -1,7 +1,8 @@
 #pragma once
 // The example scenes of data/scenes for the GL benchmarks: every mesh object's assets built by
 // the `gfield` CLI with its defaults (as scripts/demo.sh builds them) into a folder, and the
-// scene rewritten to point at them. Needs GFIELD_CLI and GFIELD_DATA_DIR.
+// scene rewritten to point at them. Needs gfield::build_paths::cli() and
+// gfield::build_paths::data_dir().
 
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +13,8 @@
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
+
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 
@@ -34,7 +37,8 @@ struct BenchFolder {
 
 /// Runs `gfield ARGUMENTS` quietly; false (with the command on stderr) when it fails.
 inline bool run_gfield_cli(const std::string& arguments) {
-  const std::string command = std::string("\"") + GFIELD_CLI + "\" " + arguments + " > /dev/null";
+  const std::string command =
+      std::string("\"") + gfield::build_paths::cli() + "\" " + arguments + " > /dev/null";
   if (std::system(command.c_str()) != 0) {
     std::fprintf(stderr, "%s failed\n", command.c_str());
     return false;
@@ -49,7 +53,7 @@ inline bool run_gfield_cli(const std::string& arguments) {
 inline bool prepare_example_scene(const std::string& name, const std::filesystem::path& dir,
                                   bool thickness_maps, std::string& out) {
   namespace fs = std::filesystem;
-  const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes" / (name + ".json");
+  const fs::path source = fs::path(gfield::build_paths::data_dir()) / "scenes" / (name + ".json");
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
   for (auto& object : scene["objects"]) {
     if (object["shape"] != "mesh")

@@ -26,6 +26,7 @@
 #include "gfield/gpu_storage.hpp"
 #include "gfield/stopwatch.hpp"
 #include "preprocess/field_build.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace {
 
@@ -52,7 +53,7 @@ struct Timing {
 /// The bundled meshes (data/meshes/*.obj, not the .gimage.obj of an asset), by name.
 std::vector<std::string> bundled_meshes() {
   std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(GFIELD_MESH_DIR)) {
+  for (const auto& entry : std::filesystem::directory_iterator(gfield::build_paths::mesh_dir())) {
     const std::string name = entry.path().filename().string();
     if (entry.path().extension() == ".obj" && name.find(".gimage.") == std::string::npos) {
       files.push_back(name);

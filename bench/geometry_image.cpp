@@ -1,5 +1,5 @@
-// Geometry image build times per stage: mesh file -> 512^2 geometry image (issue 3 target: the
-// 70K-face bunny in <= 3 s on the 2-core reference machine). Reference measured in the same run:
+// Geometry image build times per stage: mesh file -> 512^2 geometry image (target: the
+// 70K-face bunny in <= 3 s on a 2-core machine). Reference measured in the same run:
 // reading the mesh file (load_mesh), so the ratio is "image build time in mesh loads".
 //
 // Usage: bench_geometry_image [MESH ...] [--size N] [--runs R]
@@ -14,6 +14,7 @@
 #include "geometry/mesh_io.hpp"
 #include "gfield/stopwatch.hpp"
 #include "preprocess/geometry_image_build.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace {
 
@@ -37,7 +38,7 @@ int main(int argc, char** argv) {
       meshes.push_back(arg);
   }
   if (meshes.empty())
-    meshes.push_back(std::string(GFIELD_MESH_DIR) + "/stanford-bunny.obj");
+    meshes.push_back(std::string(gfield::build_paths::mesh_dir()) + "/stanford-bunny.obj");
 
   std::printf("%-22s %7s %8s %8s %8s %8s %8s %8s %8s %9s %8s\n", "mesh", "faces", "load_s",
               "repair_s", "param_s", "pack_s", "raster_s", "file2img", "ratio", "measure_s",

@@ -17,6 +17,7 @@
 #include "gfield/scene.hpp"
 #include "gfield/stopwatch.hpp"
 #include "preprocess/reference_tracer.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace {
 
@@ -36,7 +37,8 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     files.emplace_back(argv[i]);
   if (files.empty()) {
-    for (const auto& entry : fs::directory_iterator(fs::path(GFIELD_DATA_DIR) / "scenes")) {
+    for (const auto& entry :
+         fs::directory_iterator(fs::path(gfield::build_paths::data_dir()) / "scenes")) {
       if (entry.path().extension() == ".json")
         files.push_back(entry.path().string());
     }

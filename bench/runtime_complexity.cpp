@@ -26,6 +26,7 @@
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/shader_program.hpp"
 #include "runtime_runs.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace fs = std::filesystem;
 using namespace gfield;
@@ -63,8 +64,9 @@ struct SeriesMesh {
 bool make_series(const fs::path& dir, std::vector<SeriesMesh>& series) {
   TriangleMesh spot, bunny;
   std::string error;
-  if (!load_mesh(std::string(GFIELD_MESH_DIR) + "/spot.obj", spot, error) ||
-      !load_mesh(std::string(GFIELD_MESH_DIR) + "/stanford-bunny.obj", bunny, error)) {
+  if (!load_mesh(std::string(gfield::build_paths::mesh_dir()) + "/spot.obj", spot, error) ||
+      !load_mesh(std::string(gfield::build_paths::mesh_dir()) + "/stanford-bunny.obj", bunny,
+                 error)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return false;
   }
@@ -90,7 +92,8 @@ bool make_series(const fs::path& dir, std::vector<SeriesMesh>& series) {
 /// data/scenes/davis-wyman-color-chart.json with its glass object's mesh replaced by `m`, of
 /// material `material` (the scene's dielectric, or a mirror); the scene file's path.
 std::string series_scene(const SeriesMesh& m, bool mirror, const fs::path& dir) {
-  const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes/davis-wyman-color-chart.json";
+  const fs::path source =
+      fs::path(gfield::build_paths::data_dir()) / "scenes/davis-wyman-color-chart.json";
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
   for (auto& object : scene["objects"]) {
     if (object["shape"] != "mesh")

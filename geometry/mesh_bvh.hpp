@@ -1,6 +1,6 @@
 #pragma once
 // A bounding volume hierarchy over a triangle mesh: the exact-tracing peer of the geometry
-// field (issue 27). Built with binned SAH (Wald 2007: 16 bins on the widest axis of the node's
+// field. Built with binned SAH (Wald 2007: 16 bins on the widest axis of the node's
 // triangle centroids, traversal cost 1, triangle cost 1; leaves of at most kBvhMaxLeaf
 // triangles), flattened depth first with siblings side by side, so that a node needs one index
 // (the left child; the right one follows it). The same traversal runs on the CPU and the GPU

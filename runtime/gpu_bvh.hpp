@@ -1,5 +1,5 @@
 #pragma once
-// The meshes' BVHs on the GPU (issue 27: exact tracing beside the geometry field). For every
+// The meshes' BVHs on the GPU (exact tracing beside the geometry field). For every
 // asset, the BVH of its mesh file (geometry/mesh_bvh.hpp over the rasterised source mesh, three
 // vertices per triangle, read back from its vertex buffer) packed into the contract's storage
 // buffers, one BVH after another: BUFFER_BVH_NODES (GpuBvhNode), BUFFER_BVH_TRIANGLES

@@ -92,16 +92,11 @@ bool compare_with_reference(Image image, const HeadlessOptions& o, std::string& 
             "x" + std::to_string(image.height);
     return false;
   }
-  // The frame is radiance; a display reference (PNG) was clamped when written: the frame too.
-  const bool displayed = is_display_image_file(o.reference);
-  if (displayed) {
-    image = clamped_to_display(std::move(image));
-    reference = clamped_to_display(std::move(reference));
-  }
+  // The frame is radiance; against a display reference (PNG) it is compared as a PNG of it.
+  const MetricScale scale = match_metric_scale(image, "", reference, o.reference);
   const ImageComparison c = compare_images(image, reference);
   std::printf("%s vs %s (%s): PSNR %.2f dB, SSIM %.4f, mean |error| %.4f\n", o.method.c_str(),
-              o.reference.c_str(), displayed ? "as displayed" : "linear", c.psnr, c.ssim,
-              c.mean_abs_error);
+              o.reference.c_str(), metric_scale_name(scale), c.psnr, c.ssim, c.mean_abs_error);
   return o.difference.empty() ||
          save_image(o.difference, error_heatmap(image, reference, o.difference_scale), error);
 }

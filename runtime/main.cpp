@@ -78,7 +78,7 @@ void add_common_options(CLI::App& app, Arguments& a) {
       ->check(CLI::IsMember(method_names()));
   app.add_option("--reference", h.reference,
                  "Headless: compare with this picture (.exr/.png), print PSNR and SSIM (against a "
-                 "PNG/JPEG both clamped to [0, 1], as displayed)")
+                 "PNG/JPEG on the values a PNG stores: sRGB, 8 bits, as ImageMagick does)")
       ->check(CLI::ExistingFile);
   app.add_option("--diff", h.difference,
                  "Headless: write the error heat map against --reference here (.png/.exr)");

@@ -90,14 +90,11 @@ void ViewSession::draw_difference(Framebuffer& frame) {
   }
   Image image = frame.read_image();
   Image reference = reference_;
-  if (reference_displayed_) {  // the frame as displayed, like the reference
-    image = clamped_to_display(std::move(image));
-    reference = clamped_to_display(std::move(reference));
-  }
+  const MetricScale scale = match_metric_scale(image, "", reference, reference_file_);
   const ImageComparison c = compare_images(image, reference);
   char text[128];
   std::snprintf(text, sizeof(text), "PSNR %.2f dB, SSIM %.4f against the reference (%s)", c.psnr,
-                c.ssim, reference_displayed_ ? "as displayed" : "linear");
+                c.ssim, metric_scale_name(scale));
   difference_message_ = text;
   const Image heat = error_heatmap(image, reference, difference_scale);
   // Bottom row first (the frame's layout), over the frame.

@@ -57,10 +57,11 @@ class ViewSession {
   void release();
 
   /// The reference picture for the difference (rows top to bottom), read from `file`: radiance
-  /// (EXR, HDR), or a display picture (PNG, JPEG), against which the frame is clamped too.
+  /// (EXR, HDR), or a display picture (PNG, JPEG), against which the frame is compared as a PNG
+  /// of it would be (match_metric_scale).
   void set_reference(Image reference, const std::string& file) {
     reference_ = std::move(reference);
-    reference_displayed_ = is_display_image_file(file);
+    reference_file_ = file;
     ++revision_;
   }
   /// Counts the changes a picture depends on that its methods' options do not show: scene
@@ -82,7 +83,7 @@ class ViewSession {
   int compare_ = -1;
   Framebuffer second_;
   Image reference_;
-  bool reference_displayed_ = false;
+  std::string reference_file_;  // the reference's file: its type decides the metric scale
   std::string difference_message_;
   int revision_ = 0;
 };

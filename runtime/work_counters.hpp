@@ -2,7 +2,8 @@
 // The work counters of shaders/lib/work.glsl on the GPU (the contract's BUFFER_WORK and WORK_*):
 // what a frame's geometry-field lookups and BVH traversals cost, counted by the counting build
 // of a program (GF_COUNT_WORK). The counts depend on the rays only, not on the device or its
-// load: the regression guard of issue 27 compares them with committed baselines.
+// load: the regression guard (tests/runtime/work_baselines.json) compares them with committed
+// baselines.
 
 #include <array>
 #include <cstdint>

@@ -27,6 +27,9 @@ packages=(
   clang libclang-rt-14-dev
   # the layout check (scripts/check-format.sh)
   clang-format
+  # the dialect test (scripts/check-glsl-dialect.py): shaders/lib compiled as GLSL by Khronos'
+  # reference compiler
+  glslang-tools
 )
 
 missing=()

@@ -34,7 +34,8 @@ fs::path scene_root(const std::string& scene_file) {
 }
 
 bool resolve_named_path(const fs::path& base, const std::string& name, const fs::path& root,
-                        OutsidePaths outside, std::string& resolved, std::string& problem) {
+                        OutsidePaths outside, std::string& resolved, std::string& problem,
+                        bool root_by_marker) {
   const fs::path path(name);
   resolved = (path.is_absolute() ? path : base / path).lexically_normal().string();
   if (outside == OutsidePaths::kAllowed)
@@ -55,7 +56,11 @@ bool resolve_named_path(const fs::path& base, const std::string& name, const fs:
     return false;
   }
   if (!is_inside(folder, target)) {
-    problem = "\"" + name + "\" leaves " + folder.string() + hint;
+    problem = "\"" + name + "\" leaves " + folder.string();
+    problem += root_by_marker ? std::string(" (a ") + kPathRootMarker +
+                                    " file in a folder above both makes that folder the scene's "
+                                    "root; --allow-outside-paths reads it)"
+                              : hint;
     return false;
   }
   return true;

@@ -292,10 +292,8 @@ bool save_exr(const std::string& path, const Image& image) {
 std::vector<std::uint8_t> srgb_bytes(const Image& image) {
   std::vector<std::uint8_t> bytes(image.pixels.size() * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      const float v = linear_to_srgb(std::clamp(image.pixels[i][c], 0.0f, 1.0f));
-      bytes[i * 3 + size_t(c)] = std::uint8_t(std::lround(v * 255.0f));
-    }
+    for (int c = 0; c < 3; ++c)
+      bytes[i * 3 + size_t(c)] = srgb_byte(image.pixels[i][c]);
   }
   return bytes;
 }
@@ -319,6 +317,10 @@ float srgb_to_linear(float v) {
 
 float linear_to_srgb(float v) {
   return v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+}
+
+std::uint8_t srgb_byte(float linear) {
+  return std::uint8_t(std::lround(linear_to_srgb(std::clamp(linear, 0.0f, 1.0f)) * 255.0f));
 }
 
 glm::vec3 sample_bilinear(const Image& image, float x, float y, bool wrap_x) {

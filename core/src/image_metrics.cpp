@@ -83,13 +83,31 @@ bool is_display_image_file(const std::string& filename) {
   return ext == ".png" || ext == ".jpg" || ext == ".jpeg";
 }
 
-bool match_display_transform(Image& a, const std::string& a_file, Image& b,
-                             const std::string& b_file) {
-  if (!is_display_image_file(a_file) && !is_display_image_file(b_file))
-    return false;
-  a = clamped_to_display(std::move(a));
-  b = clamped_to_display(std::move(b));
-  return true;
+Image display_encoded(Image image) {
+  for (glm::vec3& p : image.pixels) {
+    for (int c = 0; c < 3; ++c)
+      p[c] = float(srgb_byte(p[c])) / 255.0f;
+  }
+  return image;
+}
+
+const char* metric_scale_name(MetricScale scale) {
+  return scale == MetricScale::display ? "display (sRGB 8-bit)" : "linear light";
+}
+
+MetricScale match_metric_scale(Image& a, const std::string& a_file, Image& b,
+                               const std::string& b_file, bool linear) {
+  const bool display = is_display_image_file(a_file) || is_display_image_file(b_file);
+  if (display && !linear) {
+    a = display_encoded(std::move(a));
+    b = display_encoded(std::move(b));
+    return MetricScale::display;
+  }
+  if (display) {
+    a = clamped_to_display(std::move(a));
+    b = clamped_to_display(std::move(b));
+  }
+  return MetricScale::linear;
 }
 
 double psnr_from_mse(double mse, double peak) {

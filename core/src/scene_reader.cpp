@@ -205,7 +205,7 @@ std::string SceneReader::file(const std::string& pointer) const {
   if (name.empty())
     throw SceneError{pointer, "empty file name"};
   std::string path, problem;
-  if (!resolve_named_path(base_, name, files_root_, outside_, path, problem))
+  if (!resolve_named_path(base_, name, files_root_, outside_, path, problem, true))
     throw SceneError{pointer, problem};
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {

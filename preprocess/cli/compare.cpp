@@ -18,6 +18,7 @@ struct CompareArgs {
   std::string a, b, heatmap, mask;
   double heatmap_scale = 0.0;
   bool json = false;
+  bool linear = false;
 };
 
 Image load_or_throw(const std::string& file) {
@@ -44,7 +45,7 @@ void run_compare(const CompareArgs& args) {
     }
     mask = mask_from_image(m);
   }
-  const bool displayed = match_display_transform(a, args.a, b, args.b);
+  const MetricScale scale = match_metric_scale(a, args.a, b, args.b, args.linear);
   const ImageComparison c = compare_images(a, b, mask);
   if (c.pixels == 0)
     throw CommandError(args.mask + ": the mask selects no pixel");
@@ -68,11 +69,10 @@ void run_compare(const CompareArgs& args) {
     j["mean_abs_error"] = c.mean_abs_error;
     if (!args.mask.empty())
       j["mask"] = args.mask;
-    j["compared"] = displayed ? "as displayed (both clamped to [0, 1])" : "linear radiance";
+    j["scale"] = metric_scale_name(scale);
     std::printf("%s\n", j.dump(2).c_str());
   } else {
-    std::printf("compared        %s\n",
-                displayed ? "as displayed (both clamped to [0, 1])" : "linear radiance");
+    std::printf("scale           %s\n", metric_scale_name(scale));
     std::printf("pixels          %zu\n", c.pixels);
     std::printf("PSNR            %.3f dB\n", c.psnr);
     std::printf("SSIM            %.5f\n", c.ssim);
@@ -87,9 +87,11 @@ void run_compare(const CompareArgs& args) {
 void add_compare_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "compare",
-      "Compare two images (EXR, HDR, PNG; linear values, peak 1): PSNR, SSIM, errors.\n"
+      "Compare two images (EXR, HDR, PNG, JPEG): PSNR, SSIM, errors (peak 1).\n"
       "PSNR = 10 log10(1 / MSE) over the 3 channels; SSIM with an 11x11 Gaussian window.\n"
-      "Where either is a display picture (PNG, JPEG), both are clamped to [0, 1] first.");
+      "Where either is a display picture (PNG, JPEG), both are compared on the values a PNG\n"
+      "stores (sRGB, 8 bits, as ImageMagick and scikit-image do); two EXR/HDR pictures, or\n"
+      "--linear, in linear light.");
   auto args = std::make_shared<CompareArgs>();
   cmd->add_option("A", args->a, "first image")->required();
   cmd->add_option("B", args->b, "second image (e.g. the reference)")->required();
@@ -98,6 +100,8 @@ void add_compare_command(CLI::App& app) {
                   "error shown as white (default: the largest error)");
   cmd->add_option("--mask", args->mask, "count only pixels where this image is > 0.5");
   cmd->add_flag("--json", args->json, "print the result as JSON");
+  cmd->add_flag("--linear", args->linear,
+                "compare in linear light (display pictures decoded and clamped to [0, 1])");
   cmd->callback([args] { run_compare(*args); });
 }
 

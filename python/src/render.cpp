@@ -122,10 +122,10 @@ Image picture(const py::object& value, const char* argument, std::string& name) 
   return image;
 }
 
-py::dict compare(const py::object& a, const py::object& b, const py::object& mask) {
+py::dict compare(const py::object& a, const py::object& b, const py::object& mask, bool linear) {
   std::string a_name, b_name, mask_name;
-  const Image first = picture(a, "a", a_name);
-  const Image second = picture(b, "b", b_name);
+  Image first = picture(a, "a", a_name);
+  Image second = picture(b, "b", b_name);
   if (first.width != second.width || first.height != second.height) {
     throw Error(b_name + ": size " + std::to_string(second.width) + "x" +
                 std::to_string(second.height) + " differs from " + a_name + " (" +
@@ -150,8 +150,12 @@ py::dict compare(const py::object& a, const py::object& b, const py::object& mas
     pixels.assign(flags.data(), flags.data() + flags.size());
   }
   ImageComparison c;
+  MetricScale scale;
+  // The files' names decide the scale (arrays are linear values); read while the GIL is held.
+  const std::string a_file = is_path(a) ? a_name : "", b_file = is_path(b) ? b_name : "";
   {
     py::gil_scoped_release release;
+    scale = match_metric_scale(first, a_file, second, b_file, linear);
     c = compare_images(first, second, pixels);
   }
   if (c.pixels == 0) {
@@ -164,6 +168,7 @@ py::dict compare(const py::object& a, const py::object& b, const py::object& mas
   result["mse"] = c.mse;
   result["max_abs_error"] = c.max_abs_error;
   result["mean_abs_error"] = c.mean_abs_error;
+  result["scale"] = metric_scale_name(scale);
   return result;
 }
 
@@ -184,13 +189,16 @@ void bind_render(py::module_& m) {
         "Ctrl-C stops the render within a row and raises KeyboardInterrupt. Raises ValueError\n"
         "for a bad argument and gfield.Error for a bad scene or a render beyond the limits.");
   m.def("compare", &compare, py::arg("a"), py::arg("b"), py::kw_only(),
-        py::arg("mask") = py::none(),
+        py::arg("mask") = py::none(), py::arg("linear") = false,
         "PSNR and SSIM of two pictures, as `gfield compare A B --json`: each an (h, w, 3)\n"
-        "array-like of linear values (peak 1) or an image file (EXR, HDR, PNG, JPEG). mask:\n"
-        "None, an (h, w) bool array, or an image file whose pixels above 0.5 count. Returns\n"
-        "a dict: pixels, psnr_db (inf for equal pictures), ssim, mse, max_abs_error,\n"
-        "mean_abs_error. Raises gfield.Error for unreadable files, pictures of different\n"
-        "sizes or a mask that selects no pixel.");
+        "array-like of linear values (peak 1) or an image file (EXR, HDR, PNG, JPEG). Where\n"
+        "either is a PNG or JPEG file, both are compared on the values a PNG stores (sRGB, 8\n"
+        "bits, as ImageMagick and scikit-image do) unless linear=True; otherwise in linear\n"
+        "light. mask: None, an (h, w) bool array, or an image file whose pixels above 0.5\n"
+        "count. Returns a dict: pixels, psnr_db (inf for equal pictures), ssim, mse,\n"
+        "max_abs_error, mean_abs_error, scale ('display (sRGB 8-bit)' or 'linear light').\n"
+        "Raises gfield.Error for unreadable files, pictures of different sizes or a mask\n"
+        "that selects no pixel.");
 }
 
 }  // namespace gfield::python

@@ -1,5 +1,5 @@
 // Exact ray tracing of a mesh through its bounding volume hierarchy (geometry/mesh_bvh.hpp): the
-// peer an engine programmer would use instead of a geometry field (issue 27).
+// peer an engine programmer would use instead of a geometry field.
 //
 // ONE source for the CPU and the GPU, like field_lookup.glsl: valid GLSL 4.50 and valid C++ with
 // GLM, included by geometry/mesh_bvh.cpp (inside a struct whose members supply the fetches) and

@@ -173,11 +173,8 @@ bool gd_step_far(int path, int k) {
 // must be a total internal reflection.
 bool gd_step_reflects(int path, int k) { return path == GD_PATH_VERGE && k == 1; }
 
-// The ray from `origin` along unit `d` followed through the steps of `path`, refracting by vector
-// Snell (or reflecting) at each; invalid when a surface is missed (or behind), light is totally
-// reflected where it should pass, or passes where the verge needs a total internal reflection.
-GdPath gd_cylinder_trace(int path, float outer_radius, float inner_radius, float n_rel,
-                         vec3 origin, vec3 d) {
+// No path yet: invalid, no interface met, the ray along `d` in the outside's index.
+GdPath gd_empty_path(vec3 d) {
   GdPath p;
   p.valid = false;
   p.count = 0;
@@ -189,6 +186,15 @@ GdPath gd_cylinder_trace(int path, float outer_radius, float inner_radius, float
     p.dir[k] = d;
     p.index[k] = 1.0f;
   }
+  return p;
+}
+
+// The ray from `origin` along unit `d` followed through the steps of `path`, refracting by vector
+// Snell (or reflecting) at each; invalid when a surface is missed (or behind), light is totally
+// reflected where it should pass, or passes where the verge needs a total internal reflection.
+GdPath gd_cylinder_trace(int path, float outer_radius, float inner_radius, float n_rel,
+                         vec3 origin, vec3 d) {
+  GdPath p = gd_empty_path(d);
   vec3 o = origin;
   vec3 dir = d;
   float index = 1.0f;
@@ -234,21 +240,6 @@ GdPath gd_cylinder_trace(int path, float outer_radius, float inner_radius, float
     p.count = p.count + 1;
   }
   p.valid = true;
-  return p;
-}
-
-GdPath gd_empty_path(vec3 d) {
-  GdPath p;
-  p.valid = false;
-  p.count = 0;
-  for (int k = 0; k < 4; k++) {
-    p.point[k] = vec3(0.0f);
-    p.facing[k] = vec3(0.0f);
-  }
-  for (int k = 0; k < 5; k++) {
-    p.dir[k] = d;
-    p.index[k] = 1.0f;
-  }
   return p;
 }
 

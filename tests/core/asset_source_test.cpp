@@ -15,13 +15,15 @@
 #include <nlohmann/json.hpp>
 
 #include "gfield/content_hash.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("asset_source_" + std::to_string(getpid()));
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("asset_source_" + std::to_string(getpid()));
 
 class AssetSource : public ::testing::Test {
  protected:

@@ -13,6 +13,7 @@
 #include "gfield/content_hash.hpp"
 #include "gfield/exr_io.hpp"
 #include "gfield/field_lookup.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
@@ -37,7 +38,8 @@ TEST(ContentHash, Sha256MatchesFips180Vectors) {
 }
 
 TEST(ContentHash, FileHashIsTheContentsHash) {
-  const std::string path = (fs::path(GFIELD_TEST_TMP) / "content_hash.txt").string();
+  const std::string path =
+      (fs::path(gfield::build_paths::test_tmp()) / "content_hash.txt").string();
   { std::ofstream(path, std::ios::binary) << "abc"; }
   std::string hex;
   std::string error;
@@ -70,8 +72,10 @@ GeometryField tiny_field(const std::string& build_id) {
 }
 
 TEST(BuildId, RoundTripsThroughBothExrFormats) {
-  const std::string image_path = (fs::path(GFIELD_TEST_TMP) / "build_id.gimage.exr").string();
-  const std::string field_path = (fs::path(GFIELD_TEST_TMP) / "build_id.gfield.exr").string();
+  const std::string image_path =
+      (fs::path(gfield::build_paths::test_tmp()) / "build_id.gimage.exr").string();
+  const std::string field_path =
+      (fs::path(gfield::build_paths::test_tmp()) / "build_id.gfield.exr").string();
   std::string error;
   for (const std::string id : {"0123456789abcdef0123456789abcdef", ""}) {
     ASSERT_TRUE(save_geometry_image(image_path, tiny_image(id), ExrPrecision::kHalf, error));

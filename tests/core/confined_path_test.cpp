@@ -1,4 +1,4 @@
-// Issue 26: the files an input names stay in its folder (a JSON scene's: its root) unless
+// The files an input names stay in its folder (a JSON scene's: its root) unless
 // outside paths are allowed (gfield/confined_path.hpp).
 
 #include <gtest/gtest.h>
@@ -9,13 +9,15 @@
 #include <fstream>
 
 #include "gfield/confined_path.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("confined_" + std::to_string(::getpid()));
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("confined_" + std::to_string(::getpid()));
 
 /// resolve_named_path from `base` inside `root`, refused: its problem ("" when it was allowed).
 std::string refusal(const fs::path& base, const std::string& name, const fs::path& root) {
@@ -62,8 +64,9 @@ TEST(ConfinedPath, SceneRootIsTheNearestFolderWithTheMarker) {
   EXPECT_EQ(scene_root((kDir / "project/scenes/more/s.json").string()),
             fs::canonical(kDir / "project"));
   // The example scenes' root is data/, which holds their meshes.
-  EXPECT_EQ(scene_root(std::string(GFIELD_DATA_DIR) + "/scenes/two-mirror-spheres.json"),
-            fs::canonical(GFIELD_DATA_DIR));
+  EXPECT_EQ(
+      scene_root(std::string(gfield::build_paths::data_dir()) + "/scenes/two-mirror-spheres.json"),
+      fs::canonical(gfield::build_paths::data_dir()));
   fs::remove_all(kDir);
 }
 

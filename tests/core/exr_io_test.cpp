@@ -20,6 +20,7 @@
 #include <random>
 
 #include "gfield/field_lines.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
@@ -27,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string temp_path(const std::string& name) {
-  return (fs::path(GFIELD_TEST_TMP) / ("exr_io_" + name)).string();
+  return (fs::path(gfield::build_paths::test_tmp()) / ("exr_io_" + name)).string();
 }
 
 GeometryImage make_image(int n) {
@@ -475,7 +476,7 @@ TEST(ExrIo, TruncatedFileIsAnErrorAndAFailedSaveLeavesNothing) {
   // This process's temporary files (NAME.tmp-PID-N): other tests' processes write theirs into the
   // same folder at the same time.
   const std::string own = ".tmp-" + std::to_string(getpid()) + "-";
-  for (const auto& entry : fs::directory_iterator(GFIELD_TEST_TMP)) {
+  for (const auto& entry : fs::directory_iterator(gfield::build_paths::test_tmp())) {
     const std::string name = entry.path().filename().string();
     EXPECT_FALSE(name.starts_with("exr_io_") && name.find(own) != std::string::npos) << name;
   }

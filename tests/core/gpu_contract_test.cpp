@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "gfield/scene.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
@@ -79,7 +80,7 @@ TEST(GpuContract, CodesAreTheEnumsValues) {
 // kUnits names every UNIT_ constant of contract.glsl (but UNIT_COUNT), so that the static check
 // above covers a unit added there.
 TEST(GpuContract, UnitsAreAllListed) {
-  std::ifstream in(std::string(GFIELD_TESTS_DIR) + "/../shaders/lib/contract.glsl");
+  std::ifstream in(std::string(gfield::build_paths::tests_dir()) + "/../shaders/lib/contract.glsl");
   ASSERT_TRUE(in);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::regex unit(R"(GF_CONST int (UNIT_\w+) =)");

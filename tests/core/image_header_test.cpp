@@ -1,4 +1,4 @@
-// Issue 26: image headers read without decoding (gfield info), and pictures beyond the limits
+// Image headers read without decoding (gfield info), and pictures beyond the limits
 // refused with their size: a 30000^2 PNG or JPEG was "unknown image type" (stb_image refuses
 // what exceeds its own limit in its header check, and stbi_info then tries the other formats).
 

@@ -12,17 +12,18 @@
 #include "gfield/environment.hpp"
 #include "gfield/image.hpp"
 #include "gfield/scene.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kSpot = std::string(GFIELD_DATA_DIR) + "/meshes/spot.obj";
+const std::string kSpot = std::string(gfield::build_paths::data_dir()) + "/meshes/spot.obj";
 
 /// A scene in the test folder (so relative paths resolve from there).
 std::string scene_path(const std::string& name) {
-  return (fs::path(GFIELD_TEST_TMP) / name).string();
+  return (fs::path(gfield::build_paths::test_tmp()) / name).string();
 }
 
 /// The tests' scenes name the bundled meshes by absolute path: outside paths allowed.
@@ -135,7 +136,7 @@ TEST(Scene, CameraRayMatchesLookAtPerspective) {
 }
 
 TEST(Scene, FindsAssetsBesideTheMeshAndResolvesRelativePaths) {
-  const fs::path dir = fs::path(GFIELD_TEST_TMP) / "scene_assets";
+  const fs::path dir = fs::path(gfield::build_paths::test_tmp()) / "scene_assets";
   fs::create_directories(dir / "meshes");
   fs::copy_file(kSpot, dir / "meshes" / "cow.obj", fs::copy_options::overwrite_existing);
   std::ofstream(dir / "meshes" / "cow.gimage.exr") << "x";
@@ -225,7 +226,7 @@ TEST(Scene, ErrorsNameFileLineAndColumn) {
                "must be in [1, 16384]");
 }
 
-// Issue 26: each value against its own documented range, printed so that it differs visibly from
+// Each value against its own documented range, printed so that it differs visibly from
 // the bound (intensity 1000000.4 was "(is 1e+06)"; 1e30 was measured against "the limit of 1e15"
 // where the docs say [0, 1e6]; an index of refraction of 1e7 was accepted where glTF refused it).
 TEST(Scene, ValuesAreCheckedAgainstTheirOwnRangesAndPrintedExactly) {
@@ -262,7 +263,8 @@ TEST(Scene, LoadSceneReportsAMissingFile) {
 
 TEST(Scene, ExampleScenesLoad) {
   int count = 0;
-  for (const auto& entry : fs::directory_iterator(fs::path(GFIELD_DATA_DIR) / "scenes")) {
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(gfield::build_paths::data_dir()) / "scenes")) {
     if (entry.path().extension() != ".json")
       continue;
     Scene scene;
@@ -372,7 +374,8 @@ TEST(ImageIo, ReadsFlatPngsThatDeflateFarBelowThreeBytesAPixel) {
   for (const char* name : {"black-1bit-4096.png", "black-8bit-1024.png"}) {
     Image image;
     std::string error;
-    ASSERT_TRUE(load_image(std::string(GFIELD_TESTS_DIR) + "/core/data/" + name, image, error))
+    ASSERT_TRUE(load_image(std::string(gfield::build_paths::tests_dir()) + "/core/data/" + name,
+                           image, error))
         << error;
     EXPECT_EQ(image.at(image.width - 1, image.height - 1), glm::vec3(0.0f)) << name;
   }

@@ -1,8 +1,8 @@
-// glTF 2.0 files as scenes (issue 17, "glTF 2.0"): a hand-written file with a node hierarchy, a
+// glTF 2.0 files as scenes: a hand-written file with a node hierarchy, a
 // camera, KHR_lights_punctual lights and the three material mappings (transmission + ior +
 // volume -> dielectric, metallic 1 roughness 0 -> mirror, otherwise diffuse with the mesh's own
 // base colour), each expected value worked out by hand from the glTF specification; a JSON
-// scene including the file as one object; the JSON "texture" defaults of meshes. (Issue 30: the
+// scene including the file as one object; the JSON "texture" defaults of meshes. (The
 // glass gives thicknessFactor 1, a volume: without it KHR_materials_volume is thin-walled, and
 // roughness 0, whose default 1 would be a frosted glass that gfield renders smooth.)
 
@@ -16,6 +16,7 @@
 
 #include "geometry/scene_file.hpp"
 #include "gfield/scene.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
@@ -23,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / "gltf_scene";
+const fs::path kDir = fs::path(gfield::build_paths::test_tmp()) / "gltf_scene";
 
 void write(const fs::path& file, const std::string& text) {
   fs::create_directories(file.parent_path());
@@ -177,8 +178,8 @@ TEST(GltfScene, JsonSceneIncludesAGltfFileAsOneObject) {
 }
 
 TEST(GltfScene, MeshTextureDefaultsOfJsonScenes) {
-  const std::string mesh = std::string(GFIELD_MESH_DIR) + "/spot-painted.obj";
-  const std::string plain = std::string(GFIELD_MESH_DIR) + "/torus.obj";
+  const std::string mesh = std::string(gfield::build_paths::mesh_dir()) + "/spot-painted.obj";
+  const std::string plain = std::string(gfield::build_paths::mesh_dir()) + "/torus.obj";
   const fs::path file = kDir / "defaults.json";
   write(file, R"({"camera": {"position": [0, 0, 10], "target": [0, 0, 0]}, "objects": [
     {"shape": "mesh", "file": ")" +

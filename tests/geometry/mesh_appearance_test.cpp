@@ -1,4 +1,4 @@
-// Mesh attributes (issue 17, "Mesh attributes in"): OBJ vt, vertex colours, mtllib/usemtl with Kd
+// Mesh attributes: OBJ vt, vertex colours, mtllib/usemtl with Kd
 // and map_Kd; PLY u v and red green blue; faces without uv; the base colour at a point against
 // colours worked out by hand from the files (sRGB decoded: (v + 0.055)^2.4 / 1.055^2.4).
 
@@ -11,13 +11,14 @@
 #include "geometry/mesh_appearance.hpp"
 #include "geometry/mesh_io.hpp"
 #include "gfield/image.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / "mesh_appearance";
+const fs::path kDir = fs::path(gfield::build_paths::test_tmp()) / "mesh_appearance";
 
 std::string write_file(const std::string& name, const std::string& contents) {
   fs::create_directories(kDir);
@@ -116,7 +117,7 @@ TEST(MeshAppearance, ObjVertexColoursAreSrgbInTheUnitRangeAndLinearAbove) {
 }
 
 TEST(MeshAppearance, PlainMeshCarriesNoBaseColour) {
-  const Loaded l = load(std::string(GFIELD_MESH_DIR) + "/torus.obj");
+  const Loaded l = load(std::string(gfield::build_paths::mesh_dir()) + "/torus.obj");
   EXPECT_FALSE(carries_base_color(l.appearance));
   EXPECT_TRUE(l.appearance.textures.empty());
 }

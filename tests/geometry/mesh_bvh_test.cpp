@@ -12,6 +12,7 @@
 #include <random>
 
 #include "geometry/mesh_io.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
@@ -25,8 +26,8 @@ Mesh load(const std::string& name) {
   TriangleMesh mesh;
   std::vector<std::string> warnings;
   std::string error;
-  EXPECT_TRUE(load_mesh(MeshSource{std::string(GFIELD_MESH_DIR) + "/" + name, ""}, mesh, nullptr,
-                        warnings, error))
+  EXPECT_TRUE(load_mesh(MeshSource{std::string(gfield::build_paths::mesh_dir()) + "/" + name, ""},
+                        mesh, nullptr, warnings, error))
       << error;
   Mesh m;
   for (const glm::dvec3& p : mesh.positions)

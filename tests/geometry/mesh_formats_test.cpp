@@ -12,13 +12,14 @@
 #include <gtest/gtest.h>
 
 #include "geometry/mesh_io.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / "mesh_formats";
+const fs::path kDir = fs::path(gfield::build_paths::test_tmp()) / "mesh_formats";
 
 void write_file(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
@@ -44,7 +45,7 @@ TEST(MeshFormats, ExtensionsAreFoundInAnyCaseAndListedForTheHelps) {
 // tests/fuzz/CMakeLists.txt makes a reader target per folder corpus/mesh_EXT: there is one for
 // every format and no other, and the regressions have a folder each.
 TEST(MeshFormats, EveryFormatHasAFuzzTargetWithSeedsThatLoad) {
-  const fs::path fuzz(GFIELD_FUZZ_DIR);
+  const fs::path fuzz(gfield::build_paths::fuzz_dir());
   std::set<std::string> formats, corpora;
   for (const MeshFormat& format : mesh_formats()) {
     const std::string target = "mesh_" + std::string(format.extension.substr(1));

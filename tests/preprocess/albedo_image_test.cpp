@@ -1,4 +1,4 @@
-// Albedo in the geometry image (issue 17, "Targets"): the bundled textured mesh's geometry image
+// Albedo in the geometry image: the bundled textured mesh's geometry image
 // at 512^2 against its texture looked up exactly (bilinear, at the point's own texture
 // coordinates) at random points of its surface: mean colour error at most 1/255.
 #include <gtest/gtest.h>
@@ -18,6 +18,7 @@
 #include "gfield/geometry_image.hpp"
 #include "gfield/image.hpp"
 #include "preprocess/geometry_image_build.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
@@ -53,7 +54,7 @@ bool match_corners(const TriangleMesh& input, int s, const ParameterizedMesh& pm
 }
 
 TEST(AlbedoImage, SpotPaintedAt512MatchesTheExactTextureLookup) {
-  const std::string file = std::string(GFIELD_MESH_DIR) + "/spot-painted.obj";
+  const std::string file = std::string(gfield::build_paths::mesh_dir()) + "/spot-painted.obj";
   TriangleMesh input;
   MeshAppearance appearance;
   std::vector<std::string> warnings;
@@ -119,12 +120,12 @@ TEST(AlbedoImage, SpotPaintedAt512MatchesTheExactTextureLookup) {
   EXPECT_LE(mean, 1.0 / 255.0);
 }
 
-// Filtering (issue 17: "each texel averages the texture over its footprint"): a 1024^2 checker
+// Filtering (each texel averages the texture over its footprint): a 1024^2 checker
 // of single black and white texels on a square resampled into a 64^2 image, ~16^2 texture texels
 // per image texel. Its exact average over any footprint of many texels is 1/2; a point sample
 // would read 0 or 1 (aliasing).
 TEST(AlbedoImage, TexelsAverageTheTextureOverTheirFootprint) {
-  const fs::path dir = fs::path(GFIELD_TEST_TMP) / "albedo_image";
+  const fs::path dir = fs::path(gfield::build_paths::test_tmp()) / "albedo_image";
   fs::create_directories(dir);
   Image checker(1024, 1024);
   for (int y = 0; y < 1024; ++y)

@@ -1,4 +1,4 @@
-// An asset is one consistent unit (issue 18, item 3): `gfield build` stamps one build id on all
+// An asset is one consistent unit: `gfield build` stamps one build id on all
 // four files and publishes them together; verify, thickness and the loaders refuse a set of two
 // builds naming both files; a killed build leaves the old asset or the new one, and its build
 // folder is removed by the next run; concurrent builders end with one complete asset.
@@ -22,6 +22,7 @@
 #include "gfield/content_hash.hpp"
 #include "gfield/exr_io.hpp"
 #include "preprocess/asset_files.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -30,9 +31,10 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_cli;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("asset_unit_" + std::to_string(getpid()));
-const std::string kSpot = std::string(GFIELD_MESH_DIR) + "/spot.obj";
-const std::string kCow = std::string(GFIELD_MESH_DIR) + "/cow.obj";
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("asset_unit_" + std::to_string(getpid()));
+const std::string kSpot = std::string(gfield::build_paths::mesh_dir()) + "/spot.obj";
+const std::string kCow = std::string(gfield::build_paths::mesh_dir()) + "/cow.obj";
 const std::string kSmall = " --size 128 --samples 4 --verify-rays 500";
 const std::string kLarger = " --size 192 --samples 6 --verify-rays 500";
 
@@ -84,12 +86,12 @@ pid_t spawn(const std::vector<std::string>& args) {
   if (pid == 0) {
     freopen("/dev/null", "w", stdout);
     freopen("/dev/null", "w", stderr);
-    std::vector<char*> argv{const_cast<char*>(GFIELD_CLI)};
+    std::vector<char*> argv{const_cast<char*>(gfield::build_paths::cli())};
     for (const std::string& a : args) {
       argv.push_back(const_cast<char*>(a.c_str()));
     }
     argv.push_back(nullptr);
-    execv(GFIELD_CLI, argv.data());
+    execv(gfield::build_paths::cli(), argv.data());
     _exit(127);
   }
   return pid;

@@ -1,4 +1,4 @@
-// Publishing an asset is one rename (preprocess/asset_staging.hpp, issue 26): every call that
+// Publishing an asset is one rename (preprocess/asset_staging.hpp): every call that
 // changes a folder during `gfield build`, failed (EPERM: an immutable or busy target) or killed
 // (SIGKILL) in turn by a preloaded shim (tests/fault/fault_shim.c), leaves the whole old asset or
 // the whole new one, for an asset of the linked layout and for one of the older layout (four
@@ -15,6 +15,7 @@
 
 #include "preprocess/asset_files.hpp"
 #include "preprocess/asset_staging.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -22,7 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("asset_publish_" + std::to_string(getpid()));
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("asset_publish_" + std::to_string(getpid()));
 // An octahedron: a build takes a few hundredths of a second, so that the test's 2 x 40 faulty
 // builds take seconds (minutes under the sanitizers with spot).
 const std::string kMesh = (kDir / "octahedron.obj").string();
@@ -44,11 +46,12 @@ std::string complete_asset_id(std::string& why) {
 /// `gfield build` of the new options with the shim making call `call` fail or kill (`mode`),
 /// or counting the calls into `count_file` when `call` is 0. Returns the raw wait status.
 int faulty_build(const std::string& mode, int call, const std::string& count_file = "") {
-  const std::string env = "LD_PRELOAD=" GFIELD_FAULT_SHIM " GFIELD_FAULT=" + mode +
-                          " GFIELD_FAULT_CALL=" + std::to_string(call) +
+  const std::string env = "LD_PRELOAD=" + std::string(gfield::build_paths::fault_shim()) +
+                          " GFIELD_FAULT=" + mode + " GFIELD_FAULT_CALL=" + std::to_string(call) +
                           (count_file.empty() ? "" : " GFIELD_FAULT_COUNT=" + count_file);
-  const std::string command = env + " " GFIELD_CLI " build " + kMesh + " -o " + asset() + kNew +
-                              " > /dev/null 2> " + (kDir / "stderr.txt").string();
+  const std::string command = env + " " + std::string(gfield::build_paths::cli()) + " build " +
+                              kMesh + " -o " + asset() + kNew + " > /dev/null 2> " +
+                              (kDir / "stderr.txt").string();
   return std::system(command.c_str());
 }
 

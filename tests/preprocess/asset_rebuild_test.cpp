@@ -9,13 +9,15 @@
 
 #include "preprocess/asset_build.hpp"
 #include "preprocess/asset_files.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("asset_rebuild_" + std::to_string(getpid()));
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("asset_rebuild_" + std::to_string(getpid()));
 
 AssetOptions small_options(int samples) {
   AssetOptions options;
@@ -31,7 +33,7 @@ std::string build_spot(int samples) {
   nlohmann::json report;
   size_t stale = 0;
   std::string error;
-  const std::string mesh = std::string(GFIELD_MESH_DIR) + "/spot.obj";
+  const std::string mesh = std::string(gfield::build_paths::mesh_dir()) + "/spot.obj";
   EXPECT_TRUE(
       build_asset_at(mesh, (kDir / "spot").string(), small_options(samples), report, stale, error))
       << error;

@@ -1,4 +1,4 @@
-// `gfield batch` as one task of a sharded, resumable batch (issue 16): the shards partition the
+// `gfield batch` as one task of a sharded, resumable batch: the shards partition the
 // meshes, up to date means "the files carry the build id of the current inputs" (never file
 // times), manifests and --summary, and bad input that leaves nothing behind.
 
@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -22,8 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_cli;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("batch_" + std::to_string(getpid()));
-const std::string kMeshes = GFIELD_MESH_DIR;
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("batch_" + std::to_string(getpid()));
+const std::string kMeshes = gfield::build_paths::mesh_dir();
 const std::string kFast = " --size 64 --samples 4 --verify-rays 0";
 
 class Batch : public ::testing::Test {

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace {
@@ -14,14 +15,15 @@ using gfield::test::CliRun;
 using gfield::test::run_cli;
 
 TEST(CliInfo, PrintsTheTopologyOfSpot) {
-  const CliRun run = run_cli(std::string("info ") + GFIELD_MESH_DIR + "/spot.obj");
+  const CliRun run = run_cli(std::string("info ") + gfield::build_paths::mesh_dir() + "/spot.obj");
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("closed, genus 0 (sphere)"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("5856 triangles"), std::string::npos) << run.out;
 }
 
 TEST(CliInfo, JsonOutputParses) {
-  const CliRun run = run_cli(std::string("info --json ") + GFIELD_MESH_DIR + "/rocker-arm.obj");
+  const CliRun run =
+      run_cli(std::string("info --json ") + gfield::build_paths::mesh_dir() + "/rocker-arm.obj");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json j = nlohmann::json::parse(run.out);
   EXPECT_EQ(j["components"][0]["genus"], 1);
@@ -29,7 +31,7 @@ TEST(CliInfo, JsonOutputParses) {
 }
 
 TEST(CliInfo, BadInputExitsWithCodeTwoAndOneLine) {
-  const std::string tmp = GFIELD_TEST_TMP;
+  const std::string tmp = gfield::build_paths::test_tmp();
   std::ofstream(tmp + "/cli_empty.obj").close();
   std::ofstream(tmp + "/cli_range.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n";
   for (const std::string& file : {tmp + "/cli_missing.obj", tmp + "/cli_empty.obj",
@@ -56,10 +58,10 @@ TEST(CliInfo, AnUnknownCommandIsNamed) {
 }
 
 TEST(CliInfo, AnAssetNameThatIsAFolderOrHiddenIsRefusedAndNothingWritten) {
-  const std::string dir = std::string(GFIELD_TEST_TMP) + "/cli_asset_names";
+  const std::string dir = std::string(gfield::build_paths::test_tmp()) + "/cli_asset_names";
   for (const std::string& name : {dir + "/", dir + "/.hidden", dir + "/."}) {
-    const CliRun run =
-        run_cli(std::string("build ") + GFIELD_MESH_DIR + "/woody.obj -o " + name + " --size 32");
+    const CliRun run = run_cli(std::string("build ") + gfield::build_paths::mesh_dir() +
+                               "/woody.obj -o " + name + " --size 32");
     EXPECT_EQ(run.exit_code, 2) << name;
     EXPECT_EQ(run.err, "gfield: error: " + name +
                            ": expected DIR/NAME, the name the asset's files begin with "

@@ -23,6 +23,7 @@
 #include <OpenEXR/ImfOutputFile.h>
 
 #include "gfield/exr_io.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
@@ -36,7 +37,7 @@ struct CliRun {
 
 CliRun run(const std::string& arguments) {
   CliRun r;
-  const std::string command = std::string(GFIELD_CLI) + " " + arguments + " 2>&1";
+  const std::string command = std::string(gfield::build_paths::cli()) + " " + arguments + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) {
     return r;
@@ -52,8 +53,9 @@ CliRun run(const std::string& arguments) {
 }
 
 // One folder per process: CTest runs each test in a process of its own, in parallel.
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("field_cli_" + std::to_string(getpid()));
-const std::string kSpot = std::string(GFIELD_MESH_DIR) + "/spot.obj";
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("field_cli_" + std::to_string(getpid()));
+const std::string kSpot = std::string(gfield::build_paths::mesh_dir()) + "/spot.obj";
 
 class FieldCli : public ::testing::Test {
  protected:
@@ -221,7 +223,8 @@ TEST_F(FieldCli, FieldRefusesBadInput) {
   r = run("field " + kSpot + image + " -o " + out + " --samples 49");
   EXPECT_EQ(r.status, 2);
   // The image was built from spot.obj, not from the bunny.
-  r = run("field " + std::string(GFIELD_MESH_DIR) + "/stanford-bunny.obj" + image + " -o " + out);
+  r = run("field " + std::string(gfield::build_paths::mesh_dir()) + "/stanford-bunny.obj" + image +
+          " -o " + out);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.output.find("built from"), std::string::npos) << r.output;
   // A field is not a geometry image.
@@ -306,8 +309,9 @@ TEST_F(FieldCli, InterruptedFieldBuildLeavesNoPartialFile) {
       freopen("/dev/null", "w", stdout);
       freopen("/dev/null", "w", stderr);
       const std::string image = name() + ".gimage.exr";
-      execl(GFIELD_CLI, GFIELD_CLI, "field", kSpot.c_str(), "--image", image.c_str(), "-o",
-            target.c_str(), "--samples", "16", static_cast<char*>(nullptr));
+      execl(gfield::build_paths::cli(), gfield::build_paths::cli(), "field", kSpot.c_str(),
+            "--image", image.c_str(), "-o", target.c_str(), "--samples", "16",
+            static_cast<char*>(nullptr));
       _exit(127);
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));

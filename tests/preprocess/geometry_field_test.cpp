@@ -17,6 +17,7 @@
 #include "gfield/field_lines.hpp"
 #include "preprocess/field_build.hpp"
 #include "preprocess/verify.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
@@ -225,7 +226,8 @@ TEST_F(GeometryFieldTorus, EveryLineHoldsItsHitsMirroredFromItsOtherEnd) {
 TEST_F(GeometryFieldTorus, LayeredFilesHoldTheFirstHitsOfEveryLine) {
   // `gfield field --format 2`: layer l of every pair is hit l of its line, bit for bit (floats),
   // and read back the lines of at most K hits are whole again.
-  const std::filesystem::path dir = std::filesystem::path(GFIELD_TEST_TMP) / "geometry_field";
+  const std::filesystem::path dir =
+      std::filesystem::path(gfield::build_paths::test_tmp()) / "geometry_field";
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "layered.gfield.exr").string();
   const GeometryField& field = asset_->field;
@@ -360,7 +362,8 @@ TEST(GeometryField, HitsNextToPaddingSnapToTheCoveredPatches) {
 }
 
 TEST_F(GeometryFieldTorus, FilesRoundTripAndBadFilesAreErrors) {
-  const std::filesystem::path dir = std::filesystem::path(GFIELD_TEST_TMP) / "geometry_field";
+  const std::filesystem::path dir =
+      std::filesystem::path(gfield::build_paths::test_tmp()) / "geometry_field";
   std::filesystem::create_directories(dir);
   const std::string field_path = (dir / "torus.gfield.exr").string();
   const std::string image_path = (dir / "torus.gimage.exr").string();

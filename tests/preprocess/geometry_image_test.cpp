@@ -1,4 +1,4 @@
-// Geometry images (issue 3): routes, uv faults, coverage, reconstruction error of the shared
+// Geometry images: routes, uv faults, coverage, reconstruction error of the shared
 // meshes; the uv contract of NAME.gimage.obj checked against the image through the core bilinear
 // lookup; orbifold seamlessness; cut graphs; packing; bad input; determinism; the CLI.
 #include <gtest/gtest.h>
@@ -21,6 +21,7 @@
 #include "preprocess/geometry_image_build.hpp"
 #include "preprocess/surface_distance.hpp"
 #include "preprocess/topology.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -37,7 +38,8 @@ struct Built {
 /// fails (callers wrap it in ASSERT_NO_FATAL_FAILURE).
 void build(const std::string& name, int size, Built& b, bool measure = true, bool split = true) {
   std::string error;
-  ASSERT_TRUE(load_mesh(std::string(GFIELD_MESH_DIR) + "/" + name, b.input, error)) << error;
+  ASSERT_TRUE(load_mesh(std::string(gfield::build_paths::mesh_dir()) + "/" + name, b.input, error))
+      << error;
   GeometryImageOptions options;
   options.size = size;
   options.measure = measure;
@@ -150,7 +152,8 @@ TEST(GeometryImage, SeveralComponentsAreAllCharted) {
 TEST(GeometryImage, LargestComponentSaysWhatItDropped) {
   TriangleMesh teapot;
   std::string error;
-  ASSERT_TRUE(load_mesh(std::string(GFIELD_MESH_DIR) + "/teapot.obj", teapot, error));
+  ASSERT_TRUE(
+      load_mesh(std::string(gfield::build_paths::mesh_dir()) + "/teapot.obj", teapot, error));
   GeometryImageOptions options;
   options.size = 64;
   options.measure = false;
@@ -232,7 +235,8 @@ TEST(GeometryImage, RayOffsetCoversTheImagesDeviationFromTheMesh) {
 TEST(GeometryImage, AutomaticSizeDoublesUntilTheMeanErrorIsReached) {
   TriangleMesh input;
   std::string error;
-  ASSERT_TRUE(load_mesh(std::string(GFIELD_MESH_DIR) + "/spot.obj", input, error)) << error;
+  ASSERT_TRUE(load_mesh(std::string(gfield::build_paths::mesh_dir()) + "/spot.obj", input, error))
+      << error;
   const double targets[3] = {kDefaultMaxMeanError, 0.002, 1e-6};
   const int expected[3] = {512, 1024, 1024};
   float offsets[3];
@@ -372,7 +376,7 @@ TEST(CutGraph, TreeCotreeCutsATorusIntoADisk) {
   // A genus-0 closed mesh needs no cut.
   TriangleMesh spot;
   std::string error;
-  ASSERT_TRUE(load_mesh(std::string(GFIELD_MESH_DIR) + "/spot.obj", spot, error));
+  ASSERT_TRUE(load_mesh(std::string(gfield::build_paths::mesh_dir()) + "/spot.obj", spot, error));
   EXPECT_TRUE(tree_cotree_cut(spot).empty());
 }
 
@@ -431,7 +435,7 @@ TEST(ParameterizedMeshFile, RoundTrip) {
   pm.mesh = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0.5}}, {{0, 1, 2}, {1, 3, 2}}};
   pm.corner_uv = {{0.1f, 0.1f}, {0.9f, 0.1f}, {0.1f, 0.9f},
                   {0.9f, 0.1f}, {0.9f, 0.9f}, {0.1f, 0.9f}};
-  const std::string path = std::string(GFIELD_TEST_TMP) + "/roundtrip.gimage.obj";
+  const std::string path = std::string(gfield::build_paths::test_tmp()) + "/roundtrip.gimage.obj";
   std::string error;
   ASSERT_TRUE(save_parameterized_mesh(path, pm, error)) << error;
   ParameterizedMesh back;
@@ -444,11 +448,11 @@ TEST(ParameterizedMeshFile, RoundTrip) {
 
 TEST(CliImage, WritesTheImageAndTheUvMeshOrNothing) {
   namespace fs = std::filesystem;
-  const std::string tmp = GFIELD_TEST_TMP;
+  const std::string tmp = gfield::build_paths::test_tmp();
   const std::string out = tmp + "/suzanne.gimage.exr", json = tmp + "/suzanne.gimage.json";
   fs::remove(out);
   fs::remove(tmp + "/suzanne.gimage.obj");
-  const test::CliRun run = test::run_cli("image " + std::string(GFIELD_MESH_DIR) +
+  const test::CliRun run = test::run_cli("image " + std::string(gfield::build_paths::mesh_dir()) +
                                          "/suzanne.obj -o " + out + " --size 64 --json " + json);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("route: "), std::string::npos) << run.out;
@@ -470,10 +474,13 @@ TEST(CliImage, WritesTheImageAndTheUvMeshOrNothing) {
   fs::remove(bad);
   for (const std::string& args :
        {"image " + tmp + "/missing.obj -o " + bad,
-        "image " + std::string(GFIELD_MESH_DIR) + "/teapot.obj --method orbifold -o " + bad,
-        "image " + std::string(GFIELD_MESH_DIR) + "/teapot.obj --size 12a -o " + bad,
-        "image " + std::string(GFIELD_MESH_DIR) + "/teapot.obj --size 4 -o " + bad,
-        "image " + std::string(GFIELD_MESH_DIR) + "/teapot.obj --max-image-error 0 -o " + bad}) {
+        "image " + std::string(gfield::build_paths::mesh_dir()) +
+            "/teapot.obj --method orbifold -o " + bad,
+        "image " + std::string(gfield::build_paths::mesh_dir()) + "/teapot.obj --size 12a -o " +
+            bad,
+        "image " + std::string(gfield::build_paths::mesh_dir()) + "/teapot.obj --size 4 -o " + bad,
+        "image " + std::string(gfield::build_paths::mesh_dir()) +
+            "/teapot.obj --max-image-error 0 -o " + bad}) {
     const test::CliRun failed = test::run_cli(args);
     EXPECT_EQ(failed.exit_code, 2) << args;
     EXPECT_EQ(std::count(failed.err.begin(), failed.err.end(), '\n'), 1) << failed.err;

@@ -1,4 +1,4 @@
-// glTF as the ecosystem writes it (issue 30): extensionsRequired refused when gfield does not
+// glTF as the ecosystem writes it: extensionsRequired refused when gfield does not
 // implement the extension, KHR_mesh_quantization, KHR_texture_transform,
 // KHR_draco_mesh_compression and EXT_meshopt_compression, each on a hand-made file whose
 // expected mesh is worked out by hand from the extension's specification (Draco and meshopt data
@@ -26,6 +26,7 @@
 #include "geometry/mesh_io.hpp"
 #include "geometry/scene_file.hpp"
 #include "gfield/image.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -36,7 +37,8 @@ using nlohmann::json;
 using test::CliRun;
 using test::run_cli;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("gltf_ext_" + std::to_string(::getpid()));
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("gltf_ext_" + std::to_string(::getpid()));
 
 void write(const fs::path& file, const std::string& bytes) {
   fs::create_directories(file.parent_path());

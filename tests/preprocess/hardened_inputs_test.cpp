@@ -1,4 +1,4 @@
-// Issue 18's damaged and absurd inputs through the gfield commands: every one exits with code 2,
+// Damaged and absurd inputs through the gfield commands: every one exits with code 2,
 // prints one line on stderr that names the file, nothing on stdout, and leaves no output file.
 // The damaged files themselves are tests/fuzz/regressions/* (README.md there says which case of
 // the issue each is); the cases that need a whole asset are made here from a small build.
@@ -14,6 +14,7 @@
 
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/exr_io.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -24,8 +25,9 @@ using test::CliRun;
 using test::run_cli;
 using test::run_program;
 
-const fs::path kRegressions = fs::path(GFIELD_FUZZ_DIR) / "regressions";
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("hardened_" + std::to_string(::getpid()));
+const fs::path kRegressions = fs::path(gfield::build_paths::fuzz_dir()) / "regressions";
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("hardened_" + std::to_string(::getpid()));
 
 /// `text` in single quotes for the shell (file names may hold any byte but NUL).
 std::string quote(const std::string& text) {
@@ -76,7 +78,8 @@ class HardenedInputs : public ::testing::Test {
   static void SetUpTestSuite() {
     fs::remove_all(kDir);
     fs::create_directories(kDir / "good");
-    const std::string mesh = (fs::path(GFIELD_FUZZ_DIR) / "corpus/mesh_obj/tetrahedron.obj");
+    const std::string mesh =
+        (fs::path(gfield::build_paths::fuzz_dir()) / "corpus/mesh_obj/tetrahedron.obj");
     const CliRun r = run_cli("build " + mesh + " -o " + (kDir / "good/tet").string() +
                              " --size 8 --samples 4 --verify-rays 0");
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -108,11 +111,14 @@ TEST_F(HardenedInputs, ABuildOutOfMemorySaysWhereAndWhatItNeedsAndWritesNothing)
   // 130 MB of address space: the executable and its libraries fit, a geometry image of spot
   // does not. `timeout`: an allocation failure must end the build, not hang it.
   const fs::path out = kDir / "oom-out";
-  const CliRun run = run_program(
-      "ulimit -v 130000; exec timeout 120 " GFIELD_CLI,
-      "build " GFIELD_MESH_DIR "/spot.obj -o " + (out / "spot").string() + " --verify-rays 0");
+  const CliRun run =
+      run_program("ulimit -v 130000; exec timeout 120 " + std::string(gfield::build_paths::cli()),
+                  "build " + std::string(gfield::build_paths::mesh_dir()) + "/spot.obj -o " +
+                      (out / "spot").string() + " --verify-rays 0");
   EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_EQ(run.err.rfind("gfield: error: " GFIELD_MESH_DIR "/spot.obj: out of memory while ", 0),
+  EXPECT_EQ(run.err.rfind("gfield: error: " + std::string(gfield::build_paths::mesh_dir()) +
+                              "/spot.obj: out of memory while ",
+                          0),
             0u)
       << run.err;
   EXPECT_NE(run.err.find("a build of its 5856 triangles needs about"), std::string::npos)
@@ -241,7 +247,8 @@ TEST_F(HardenedInputs, FileNamesThatAreNotUtf8AreEscaped) {
   const fs::path dir = kDir / "names";
   fs::create_directories(dir);
   const std::string name = (dir / "caf\xE9.obj").string();
-  fs::copy_file(fs::path(GFIELD_FUZZ_DIR) / "corpus/mesh_obj/tetrahedron.obj", name);
+  fs::copy_file(fs::path(gfield::build_paths::fuzz_dir()) / "corpus/mesh_obj/tetrahedron.obj",
+                name);
   const CliRun info = run_cli("info --json " + quote(name));
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_EQ(nlohmann::json::parse(info.out)["file"], (dir / "caf\\xE9.obj").string());

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "preprocess/topology.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
@@ -13,7 +14,8 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string write_temp(const std::string& name, const std::string& contents) {
-  const std::string path = (fs::path(GFIELD_TEST_TMP) / ("mesh_io_" + name)).string();
+  const std::string path =
+      (fs::path(gfield::build_paths::test_tmp()) / ("mesh_io_" + name)).string();
   std::ofstream(path, std::ios::binary) << contents;
   return path;
 }
@@ -116,8 +118,8 @@ TEST(MeshIo, BadInputGivesOneLineErrors) {
   const int strip[4] = {3, 0, 1, 2};
   strips.append(reinterpret_cast<const char*>(strip), sizeof strip);
   EXPECT_NE(load_error(write_temp("strips.ply", strips)).find("no faces"), std::string::npos);
-  fs::create_directories(fs::path(GFIELD_TEST_TMP) / "mesh_io_dir.obj");
-  load_error((fs::path(GFIELD_TEST_TMP) / "mesh_io_dir.obj").string());
+  fs::create_directories(fs::path(gfield::build_paths::test_tmp()) / "mesh_io_dir.obj");
+  load_error((fs::path(gfield::build_paths::test_tmp()) / "mesh_io_dir.obj").string());
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 
 #include "preprocess/closest_point.hpp"
 #include "preprocess/geometry_image_build.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -25,7 +26,8 @@ namespace {
 TriangleMesh bundled(const std::string& name) {
   TriangleMesh mesh;
   std::string error;
-  EXPECT_TRUE(load_mesh(std::string(GFIELD_MESH_DIR) + "/" + name, mesh, error)) << error;
+  EXPECT_TRUE(load_mesh(std::string(gfield::build_paths::mesh_dir()) + "/" + name, mesh, error))
+      << error;
   return mesh;
 }
 
@@ -93,7 +95,8 @@ TEST(MeshProxy, AMeshWithoutAreaHasNoProxy) {
   EXPECT_FALSE(build_geometry_image(flat, options, image, pm, report, error));
   EXPECT_NE(error.find("no face with a positive area"), std::string::npos) << error;
   // The command: one line naming the file, exit 2, nothing written.
-  const std::string base = std::string(GFIELD_TEST_TMP) + "/flat-" + std::to_string(::getpid());
+  const std::string base =
+      std::string(gfield::build_paths::test_tmp()) + "/flat-" + std::to_string(::getpid());
   std::ofstream(base + ".obj") << "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n";
   const test::CliRun run =
       test::run_cli("build " + base + ".obj -o " + base + "-asset --proxy-above 1");
@@ -192,8 +195,8 @@ TEST(GeometryImageProxy, AProxyWhoseRouteFailsGivesWayToTheFullMesh) {
 /// `gfield build homer.obj` at 256^2, N = 12, with --proxy-above `proxy_above`: its report.
 nlohmann::json homer_asset(const std::string& proxy_above, std::string& summary) {
   const std::string name =
-      std::string(GFIELD_TEST_TMP) + "/proxy-homer-" + std::to_string(::getpid());
-  const test::CliRun run = test::run_cli("build " + std::string(GFIELD_MESH_DIR) +
+      std::string(gfield::build_paths::test_tmp()) + "/proxy-homer-" + std::to_string(::getpid());
+  const test::CliRun run = test::run_cli("build " + std::string(gfield::build_paths::mesh_dir()) +
                                          "/homer.obj -o " + name + " --proxy-above " + proxy_above +
                                          " --size 256 --samples 12 --verify-rays 5000");
   EXPECT_EQ(run.exit_code, 0) << run.err;

@@ -1,4 +1,4 @@
-// Meshes of every size and place that the readers accept (issue 26): a build either makes a
+// Meshes of every size and place that the readers accept: a build either makes a
 // field that sees the mesh or is refused naming why (float casts lost spot 5e-12 across in a
 // crash, 2.6e-15 across in a field without hits that verify called 100% right), and verify
 // refuses a field that cannot see its mesh.
@@ -17,6 +17,7 @@
 #include "gfield/exr_io.hpp"
 #include "gfield/field_lines.hpp"
 #include "gfield/geometry_field.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -25,7 +26,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_cli;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("mesh_scale_" + std::to_string(getpid()));
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("mesh_scale_" + std::to_string(getpid()));
 const std::string kFast = " --size 96 --samples 8 --verify-rays 4000";
 
 class MeshScale : public ::testing::Test {
@@ -37,7 +39,7 @@ class MeshScale : public ::testing::Test {
   }
   /// spot.obj with every vertex v written as v * scale + (offset, 0, 0).
   static std::string spot_moved(const std::string& name, double scale, double offset) {
-    std::ifstream in(std::string(GFIELD_MESH_DIR) + "/spot.obj");
+    std::ifstream in(std::string(gfield::build_paths::mesh_dir()) + "/spot.obj");
     const std::string path = (kDir / (name + ".obj")).string();
     std::ofstream out(path);
     out.precision(17);
@@ -102,7 +104,10 @@ TEST_F(MeshScale, TheEdgesOfTheRangeBuildFieldsThatSeeTheMesh) {
 
 TEST_F(MeshScale, VerifyRefusesAFieldWithoutHitsWhereTheMeshHasSurface) {
   const std::string asset = (kDir / "spot").string();
-  ASSERT_EQ(run_cli("build " GFIELD_MESH_DIR "/spot.obj -o " + asset + kFast).exit_code, 0);
+  ASSERT_EQ(run_cli("build " + std::string(gfield::build_paths::mesh_dir()) + "/spot.obj -o " +
+                    asset + kFast)
+                .exit_code,
+            0);
   EXPECT_EQ(run_cli("verify " + asset + " --rays 1000").exit_code, 0);
   GeometryField field;
   std::string error;

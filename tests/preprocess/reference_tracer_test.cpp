@@ -15,6 +15,7 @@
 #include "gfield/image_metrics.hpp"
 #include "gfield/optics.hpp"
 #include "preprocess/reference_tracer.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -305,7 +306,7 @@ TEST(ReferenceTracer, HollowCylinderRefractsFourTimes) {
 TEST(ReferenceTracer, MeshInstancesSitWhereTheirTransformsPutThem) {
   Scene scene = base_scene(8);
   MeshAsset torus_mesh;
-  torus_mesh.file = std::string(GFIELD_DATA_DIR) + "/meshes/torus.obj";
+  torus_mesh.file = std::string(gfield::build_paths::data_dir()) + "/meshes/torus.obj";
   scene.meshes.push_back(torus_mesh);
   for (const float x : {-3.0f, 3.0f}) {
     SceneObject torus;
@@ -335,8 +336,9 @@ TEST(ReferenceTracer, MeshInstancesSitWhereTheirTransformsPutThem) {
 TEST(ReferenceTracer, DeterministicAcrossRunsAndThreadCounts) {
   Scene scene;
   std::string error;
-  ASSERT_TRUE(load_scene(std::string(GFIELD_DATA_DIR) + "/scenes/davis-wyman-color-chart.json",
-                         scene, error))
+  ASSERT_TRUE(load_scene(
+      std::string(gfield::build_paths::data_dir()) + "/scenes/davis-wyman-color-chart.json", scene,
+      error))
       << error;
   RenderOptions options;
   options.width = options.height = 32;
@@ -358,7 +360,8 @@ TEST(ReferenceTracer, DeterministicAcrossRunsAndThreadCounts) {
 
 TEST(ReferenceTracer, EveryExampleSceneRenders) {
   int count = 0;
-  for (const auto& entry : fs::directory_iterator(fs::path(GFIELD_DATA_DIR) / "scenes")) {
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(gfield::build_paths::data_dir()) / "scenes")) {
     if (entry.path().extension() != ".json")
       continue;
     Scene scene;
@@ -382,7 +385,7 @@ TEST(ReferenceTracer, EveryExampleSceneRenders) {
 }
 
 TEST(RenderCli, RendersComparesAndRefusesBadInput) {
-  const std::string dir = GFIELD_TEST_TMP;
+  const std::string dir = gfield::build_paths::test_tmp();
   const std::string scene_file = dir + "/tracer_cli_scene.json";
   std::ofstream(scene_file) << R"({"purpose": "cli test",
   "camera": {"position": [0, 0, 4], "target": [0, 0, 0]},
@@ -427,8 +430,9 @@ TEST(RenderCli, RendersComparesAndRefusesBadInput) {
 TEST(RenderCli, ComparesARadiancePictureWithADisplayPictureAsDisplayed) {
   // The studio environment's softboxes reach 6: against its clamped PNG, the EXR of the same
   // render differed by them alone (17.5 dB where the pictures agree to 8 bits).
-  const std::string dir = GFIELD_TEST_TMP;
-  const std::string scene = std::string(GFIELD_DATA_DIR) + "/scenes/two-mirror-spheres.json";
+  const std::string dir = gfield::build_paths::test_tmp();
+  const std::string scene =
+      std::string(gfield::build_paths::data_dir()) + "/scenes/two-mirror-spheres.json";
   const std::string exr = dir + "/display_transform.exr", png = dir + "/display_transform.png";
   for (const std::string& out : {exr, png}) {
     const test::CliRun r =
@@ -446,11 +450,16 @@ TEST(RenderCli, ComparesARadiancePictureWithADisplayPictureAsDisplayed) {
     const test::CliRun r = test::run_cli("compare " + args + " --json");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(r.out);
-    EXPECT_EQ(j["compared"], "as displayed (both clamped to [0, 1])");
-    EXPECT_GT(j["psnr_db"].get<double>(), 45.0) << args;  // 8-bit rounding alone
+    EXPECT_EQ(j["scale"], "display (sRGB 8-bit)");
+    // The EXR as its PNG stores it is the PNG: the same values.
+    EXPECT_EQ(j["psnr_db"], "inf") << args;
+    const test::CliRun lin = test::run_cli("compare " + args + " --json --linear");
+    const nlohmann::json k = nlohmann::json::parse(lin.out);
+    EXPECT_EQ(k["scale"], "linear light");
+    EXPECT_GT(k["psnr_db"].get<double>(), 45.0) << args;  // 8-bit rounding alone
   }
   const test::CliRun same = test::run_cli("compare " + exr + " " + exr + " --json");
-  EXPECT_EQ(nlohmann::json::parse(same.out)["compared"], "linear radiance");
+  EXPECT_EQ(nlohmann::json::parse(same.out)["scale"], "linear light");
 }
 
 }  // namespace

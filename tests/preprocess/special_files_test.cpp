@@ -1,5 +1,5 @@
-// Files that are not plain files, names that are not plain text, and writes the system refuses
-// (issue 26): a symbolic link loop, a dangling link or a FIFO given to a reader is named as such;
+// Files that are not plain files, names that are not plain text, and writes the system refuses:
+// a symbolic link loop, a dangling link or a FIFO given to a reader is named as such;
 // `gfield batch` skips (and lists) such entries of a folder and builds the rest; names with line
 // breaks or bytes that are not UTF-8 print on one line; a refused write says the system's reason.
 
@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -19,7 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_cli;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("special_files_" + std::to_string(getpid()));
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("special_files_" + std::to_string(getpid()));
 
 class SpecialFiles : public ::testing::Test {
  protected:
@@ -30,7 +32,8 @@ class SpecialFiles : public ::testing::Test {
     fs::create_symlink("loop-a.obj", kDir / "in" / "loop-b.obj");
     fs::create_symlink("nowhere.obj", kDir / "in" / "dangling.obj");
     ASSERT_EQ(::mkfifo((kDir / "in" / "pipe.obj").c_str(), 0644), 0);
-    fs::copy_file(GFIELD_MESH_DIR "/woody.obj", kDir / "in" / "woody.obj");
+    fs::copy_file(std::string(gfield::build_paths::mesh_dir()) + "/woody.obj",
+                  kDir / "in" / "woody.obj");
   }
   void TearDown() override {
     std::error_code ec;
@@ -56,7 +59,7 @@ TEST_F(SpecialFiles, ReadersNameWhatTheFileIs) {
 
 TEST_F(SpecialFiles, BatchSkipsAndListsWhatIsNotAFileAndBuildsTheRest) {
   const std::string odd = "we\nird\xFF.obj";
-  fs::copy_file(GFIELD_MESH_DIR "/woody.obj", kDir / "in" / odd);
+  fs::copy_file(std::string(gfield::build_paths::mesh_dir()) + "/woody.obj", kDir / "in" / odd);
   const std::string args = "batch " + (kDir / "in").string() + " -o " + (kDir / "out").string() +
                            " --size 64 --samples 4 --verify-rays 0";
   const test::CliRun list = run_cli(args + " --list");
@@ -96,7 +99,7 @@ TEST_F(SpecialFiles, AReportThatIsAFifoOrAFolderIsNamedAndBlocksNothing) {
 TEST_F(SpecialFiles, ARefusedWriteSaysWhy) {
   std::ofstream(kDir / "file") << "a file, not a folder";
   const std::string target = (kDir / "file" / "out.png").string();
-  const test::CliRun r = run_cli("render " GFIELD_DATA_DIR
+  const test::CliRun r = run_cli("render " + std::string(gfield::build_paths::data_dir()) +
                                  "/scenes/two-mirror-spheres.json -q "
                                  "--size 8x8 --spp 1 -o " +
                                  target);

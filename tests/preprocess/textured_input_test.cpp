@@ -1,4 +1,4 @@
-// Issue 17's bad input, through the gfield commands: a texture that is not an image, uvs that are
+// Bad input, through the gfield commands: a texture that is not an image, uvs that are
 // NaN, glTF files with out-of-range indices, a zero-length or truncated .glb, an unsupported
 // primitive mode, a missing .bin: exit 2, one stderr line naming the file, nothing on stdout, no
 // output file. A missing texture is a warning naming it, exit 0, and mid-grey albedo.
@@ -18,6 +18,7 @@
 
 #include "gfield/exr_io.hpp"
 #include "gfield/geometry_image.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -28,7 +29,8 @@ using nlohmann::json;
 using test::CliRun;
 using test::run_cli;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("textured_input_" + std::to_string(::getpid()));
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("textured_input_" + std::to_string(::getpid()));
 
 /// A tetrahedron with texture coordinates and a material `mtl` (its map_Kd: `texture`).
 const char* kTetrahedronObj =
@@ -158,7 +160,8 @@ TEST_F(TexturedInput, ZeroLengthAndTruncatedGlbAreRefused) {
   const fs::path dir = kDir / "glb";
   write(dir / "empty.glb", "");
   expect_image_refused(dir / "empty.glb", "zero-length .glb");
-  std::ifstream in(fs::path(GFIELD_DATA_DIR) / "scenes/textured-mirror.glb", std::ios::binary);
+  std::ifstream in(fs::path(gfield::build_paths::data_dir()) / "scenes/textured-mirror.glb",
+                   std::ios::binary);
   const std::string glb((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ASSERT_GT(glb.size(), 1000u);
   for (const size_t keep : {size_t(11), size_t(40), glb.size() / 2, glb.size() - 1}) {

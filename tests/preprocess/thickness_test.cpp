@@ -9,6 +9,7 @@
 
 #include "gfield/thickness.hpp"
 #include "preprocess/thickness.hpp"
+#include "test_support/build_paths.hpp"
 
 namespace gfield {
 namespace {
@@ -74,7 +75,8 @@ TEST(Thickness, SphereFarSideIsTheDiameter) {
   }
 
   const std::string path =
-      (std::filesystem::path(GFIELD_TEST_TMP) / "thickness_test.thickness.exr").string();
+      (std::filesystem::path(gfield::build_paths::test_tmp()) / "thickness_test.thickness.exr")
+          .string();
   ASSERT_TRUE(save_thickness_map(path, map, error)) << error;
   ThicknessMap loaded;
   ASSERT_TRUE(load_thickness_map(path, loaded, error)) << error;

@@ -1,4 +1,5 @@
 #include "preprocess/topology.hpp"
+#include "test_support/build_paths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,7 @@ namespace {
 bool bundled_topology(const std::string& name, TopologyReport& report) {
   TriangleMesh mesh;
   std::string error;
-  if (!load_mesh(std::string(GFIELD_MESH_DIR) + "/" + name, mesh, error)) {
+  if (!load_mesh(std::string(gfield::build_paths::mesh_dir()) + "/" + name, mesh, error)) {
     ADD_FAILURE() << error;
     return false;
   }

@@ -85,8 +85,26 @@ def test_compare_files_is_the_cli_compare(tmp_path):
     result = gfield.compare(first, second)
     done = run_cli("compare", first, second, "--json")
     expected = json.loads(done.stdout)
-    for key in ["pixels", "psnr_db", "ssim", "mse", "max_abs_error", "mean_abs_error"]:
+    for key in ["pixels", "psnr_db", "ssim", "mse", "max_abs_error", "mean_abs_error", "scale"]:
         assert result[key] == expected[key], key
+    assert result["scale"] == "display (sRGB 8-bit)"
+    linear = gfield.compare(first, second, linear=True)
+    assert linear["scale"] == "linear light" and linear["psnr_db"] != result["psnr_db"]
+
+
+def test_compare_of_pngs_is_on_their_stored_values(tmp_path):
+    """PSNR as ImageMagick and scikit-image compute it for PNGs: on the stored 8-bit values."""
+    import matplotlib.image
+
+    first, second = tmp_path / "a.png", tmp_path / "b.png"
+    for path, spp in [(first, 1), (second, 4)]:
+        done = run_cli("render", SPHERES, "-o", path, "--size", "32x24", "--spp", spp, "-q")
+        assert done.returncode == 0, done.stderr
+    stored = [matplotlib.image.imread(str(p))[..., :3].astype(np.float64) for p in (first, second)]
+    mse = np.mean((stored[0] - stored[1]) ** 2)
+    assert mse > 0.0
+    result = gfield.compare(first, second)
+    assert result["psnr_db"] == pytest.approx(10.0 * np.log10(1.0 / mse), abs=1e-3)
     missing = tmp_path / "missing.png"
     with pytest.raises(gfield.Error) as error:
         gfield.compare(first, missing)

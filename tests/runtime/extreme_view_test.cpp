@@ -1,4 +1,4 @@
-// Scenes of any extent and cameras of any field of view gfield-view renders (issue 26): a unit
+// Scenes of any extent and cameras of any field of view gfield-view renders: a unit
 // object beside a floor of 1e6 is neither clipped (the depth range follows the objects, not the
 // scene's extent) nor loses its shadow (ray offsets follow the hit's coordinates), fields of
 // view up to 179.9 degrees and down to kMinViewFovDegrees match the reference tracer, and a
@@ -15,6 +15,7 @@
 #include "gfield/image.hpp"
 #include "gfield/image_metrics.hpp"
 #include "runtime/gpu_scene.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -22,16 +23,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / "extreme_view";
+const fs::path kDir = fs::path(gfield::build_paths::test_tmp()) / "extreme_view";
 
 /// spot and a mirror sphere on a checkered floor `floor` units wide, seen with `fov` degrees.
 std::string floor_scene(double floor, double fov) {
   std::ostringstream s;
-  s << R"({"camera": {"position": [0, 1.2, 3.4], "target": [0, 0.2, 0], "fov": )" << fov << R"(},
+  s << R"({"camera": {"position": [0, 1.2, 3.4], "target": [0, 0.2, 0], "fov": )" << fov
+    << R"(},
   "image": {"width": 96, "height": 96}, "environment": {"type": "studio"}, "ambient": 0.3,
   "lights": [{"type": "directional", "direction": [-0.3, -1, -0.4], "intensity": 0.8}],
   "objects": [
-    {"shape": "mesh", "file": ")" GFIELD_MESH_DIR R"(/spot.obj", "gimage": ")"
+    {"shape": "mesh", "file": ")" +
+           std::string(gfield::build_paths::mesh_dir()) + R"(/spot.obj", "gimage": ")"
     << (kDir / "spot.gimage.exr").string() << R"(", "gfield": ")"
     << (kDir / "spot.gfield.exr").string() << R"(", "transform": {"translate": [0, 0.1, 0]},
      "material": {"type": "diffuse", "color": [0.8, 0.5, 0.3]}},
@@ -63,8 +66,8 @@ class ExtremeView : public ::testing::Test {
   static void SetUpTestSuite() {
     fs::create_directories(kDir);
     const test::CliRun r =
-        test::run_cli("build " GFIELD_MESH_DIR "/spot.obj -o " + (kDir / "spot").string() +
-                      " --size 256 --samples 12 --verify-rays 0");
+        test::run_cli("build " + std::string(gfield::build_paths::mesh_dir()) + "/spot.obj -o " +
+                      (kDir / "spot").string() + " --size 256 --samples 12 --verify-rays 0");
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   /// PSNR of gfield-view against gfield render on `scene`.
@@ -76,8 +79,8 @@ class ExtremeView : public ::testing::Test {
     const test::CliRun a = test::run_cli(
         "render " + file + " --allow-outside-paths --spp 1 --strata-centres -q -o " + reference);
     EXPECT_EQ(a.exit_code, 0) << a.err;
-    const test::CliRun b =
-        test::run_program(GFIELD_VIEW, file + " --allow-outside-paths --headless -o " + view);
+    const test::CliRun b = test::run_program(gfield::build_paths::view(),
+                                             file + " --allow-outside-paths --headless -o " + view);
     EXPECT_EQ(b.exit_code, 0) << b.err;
     Image x, y;
     std::string error;
@@ -95,15 +98,13 @@ class ExtremeView : public ::testing::Test {
 };
 
 TEST_F(ExtremeView, AUnitObjectBesideAFloorOfAnyExtentRendersLikeTheReference) {
-  // Measured 2026-11-25: 42.8, 42.8, 41.1 dB (before: 47.5, 9.4, 7.7: spot and the sphere
-  // clipped by a near plane at 1e-4 of the scene's extent).
+  // A near plane at a fixed fraction of the scene's extent would clip spot and the sphere.
   for (double floor : {10.0, 1e4, 1e6})
     EXPECT_GT(view_psnr("floor", floor_scene(floor, 40.0)), 38.0) << floor;
 }
 
 TEST_F(ExtremeView, FieldsOfViewFromTheNarrowestToTheWidestRenderLikeTheReference) {
-  // Measured 2026-11-25: 179 degrees 44.2 dB, 179.9 48.2 (a near plane fitted to the view's
-  // axis clipped the edges: 9.9 dB); the telephoto checker exact at 0.001 degrees.
+  // A near plane fitted to the view's axis alone would clip the edges of the widest views.
   for (double fov : {179.0, 179.9})
     EXPECT_GT(view_psnr("wide", floor_scene(10.0, fov)), 38.0) << fov;
   EXPECT_GT(view_psnr("narrow", telephoto_scene(kMinViewFovDegrees)), 38.0);
@@ -114,7 +115,8 @@ TEST_F(ExtremeView, AFieldOfViewNarrowerThanFloatResolvesIsRefusedNamingTheFile)
   std::ofstream(file) << telephoto_scene(1e-9);
   const std::string out = (kDir / "too-narrow.png").string();
   fs::remove(out);
-  const test::CliRun r = test::run_program(GFIELD_VIEW, file + " --headless -o " + out);
+  const test::CliRun r =
+      test::run_program(gfield::build_paths::view(), file + " --headless -o " + out);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find(file + ": /camera/fov: the camera's field of view of 1e-09 degrees"),
             std::string::npos)

@@ -9,6 +9,7 @@
 #include "runtime/framebuffer.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/shader_program.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/gl_suite.hpp"
 
 namespace gfield {
@@ -22,7 +23,7 @@ void write_file(const fs::path& path, const std::string& text) {
 
 class GlTest : public test::GlSuite {
  protected:
-  fs::path dir_ = fs::path(GFIELD_TEST_TMP) / "gl_context_test";
+  fs::path dir_ = fs::path(gfield::build_paths::test_tmp()) / "gl_context_test";
 };
 
 TEST_F(GlTest, ContextIsOpenGl45Core) {

@@ -24,6 +24,7 @@
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/methods/glass.hpp"
 #include "runtime/shader_program.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/gl_suite.hpp"
 
 namespace gfield {
@@ -168,7 +169,9 @@ void compare_scene(const std::string& name, ImageComparison& out, FrameStats* st
                    ImageComparison* no_fresnel = nullptr, ImageComparison* traced_verge = nullptr) {
   std::string error;
   Scene scene;
-  ASSERT_TRUE(load_scene(std::string(GFIELD_DATA_DIR) + "/scenes/" + name, scene, error)) << error;
+  ASSERT_TRUE(
+      load_scene(std::string(gfield::build_paths::data_dir()) + "/scenes/" + name, scene, error))
+      << error;
   ReferenceTracer tracer;
   ASSERT_TRUE(tracer.build(scene, error)) << error;
   RenderOptions options;
@@ -263,15 +266,15 @@ TEST_F(GlassTest, HollowCylinderMatchesTheReferenceBehindTheGlass) {
 /// partly behind the plate, read as the tools read it.
 Scene textured_plate_scene(const std::string& texture) {
   const std::filesystem::path source =
-      std::filesystem::path(GFIELD_DATA_DIR) / "scenes/mukai-plate-tilt05-w02.json";
+      std::filesystem::path(gfield::build_paths::data_dir()) / "scenes/mukai-plate-tilt05-w02.json";
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
   nlohmann::json& spot = scene["objects"][0];
   spot["name"] = "spot";
-  spot["file"] = std::string(GFIELD_MESH_DIR) + "/spot-painted.obj";
+  spot["file"] = std::string(gfield::build_paths::mesh_dir()) + "/spot-painted.obj";
   spot["transform"] = {{"translate", {0.6, 0.75, -0.5}}, {"rotate", {0, -30, 0}}};
   spot["material"] = {{"type", "diffuse"}, {"texture", texture}};
-  const std::filesystem::path file =
-      std::filesystem::path(GFIELD_TEST_TMP) / ("glass-textured-" + texture + ".json");
+  const std::filesystem::path file = std::filesystem::path(gfield::build_paths::test_tmp()) /
+                                     ("glass-textured-" + texture + ".json");
   std::ofstream(file) << scene.dump();
   Scene out;
   std::vector<std::string> warnings;
@@ -281,7 +284,7 @@ Scene textured_plate_scene(const std::string& texture) {
   return out;
 }
 
-// Issue 17: the glass method draws a textured mesh with its own uvs and texture, behind the glass
+// The glass method draws a textured mesh with its own uvs and texture, behind the glass
 // and beside it. Its picture matches the reference of the textured scene much better than the
 // reference of the same scene with the texture ignored: the texture is seen, not a plain colour.
 TEST_F(GlassTest, TexturedMeshBehindThePlateMatchesTheReference) {
@@ -323,7 +326,8 @@ TEST_F(GlassTest, RefusesScenesWithoutOneSlabOrHollowCylinder) {
   std::string error;
   Scene scene;
   ASSERT_TRUE(
-      load_scene(std::string(GFIELD_DATA_DIR) + "/scenes/two-mirror-spheres.json", scene, error))
+      load_scene(std::string(gfield::build_paths::data_dir()) + "/scenes/two-mirror-spheres.json",
+                 scene, error))
       << error;
   GpuScene gpu;
   ASSERT_TRUE(gpu.load(scene, error)) << error;

@@ -17,6 +17,7 @@
 #include "runtime/methods/cube_map.hpp"
 #include "runtime/methods/image_space_refraction.hpp"
 #include "runtime/shader_program.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 #include "test_support/gl_suite.hpp"
 
@@ -40,14 +41,14 @@ class ImageSpaceTest : public test::GlSuite {
   static void SetUpTestSuite() {
     ASSERT_TRUE(make_context());
     std::string error;
-    const fs::path dir = fs::path(GFIELD_TEST_TMP) / "image_space";
+    const fs::path dir = fs::path(gfield::build_paths::test_tmp()) / "image_space";
     fs::create_directories(dir);
-    const std::string mesh = std::string(GFIELD_DATA_DIR) + "/meshes/spot.obj";
+    const std::string mesh = std::string(gfield::build_paths::data_dir()) + "/meshes/spot.obj";
     const std::string name = (dir / "spot").string();
     // The geometry image the runtime rasterises (a small field: these methods do not use it),
     // its thickness map, and the reference picture, made once for the suite's tests.
     const std::string scene_file =
-        std::string(GFIELD_DATA_DIR) + "/scenes/davis-wyman-color-chart.json";
+        std::string(gfield::build_paths::data_dir()) + "/scenes/davis-wyman-color-chart.json";
     const std::string reference = (dir / "reference_tir_only.exr").string();
     if (!test::up_to_date(reference, {mesh, scene_file})) {
       test::CliRun run = test::run_cli("build " + mesh + " -o " + name +
@@ -120,13 +121,13 @@ class ImageSpaceTest : public test::GlSuite {
 Scene* ImageSpaceTest::scene_ = nullptr;
 Image* ImageSpaceTest::reference_ = nullptr;
 
-// Issue 17: the image-space methods draw an opaque textured mesh from its mesh file with its own
+// The image-space methods draw an opaque textured mesh from its mesh file with its own
 // uvs and texture. The glass spot of the suite's scene made diffuse spot-painted (ambient light
 // only: the picture is its texture), drawn by cubemap and davis-wyman, against the reference
 // tracer over the pixels where spot is seen; and against the reference with the texture ignored.
 TEST_F(ImageSpaceTest, OpaqueTexturedMeshShowsItsOwnTexture) {
-  const fs::path dir = fs::path(GFIELD_TEST_TMP) / "image_space";
-  const std::string mesh = std::string(GFIELD_MESH_DIR) + "/spot-painted.obj";
+  const fs::path dir = fs::path(gfield::build_paths::test_tmp()) / "image_space";
+  const std::string mesh = std::string(gfield::build_paths::mesh_dir()) + "/spot-painted.obj";
   const std::string name = (dir / "spot-painted").string();
   if (!test::up_to_date(name + ".gimage.exr", {mesh})) {
     const test::CliRun run =
@@ -225,7 +226,7 @@ TEST_F(ImageSpaceTest, CubemapWithIndexOneReproducesTheEnvironment) {
 TEST_F(ImageSpaceTest, WymanBuildsItsThicknessMapsOnDemand) {
   // A copy of the geometry image without its thickness map: wyman2005 makes it (gfield
   // thickness, as the other assets are made on demand), the same d_n as the suite's own map.
-  const fs::path dir = fs::path(GFIELD_TEST_TMP) / "image_space";
+  const fs::path dir = fs::path(gfield::build_paths::test_tmp()) / "image_space";
   const std::string own = (dir / "spot").string(), copy = (dir / "ondemand").string();
   for (const char* suffix : {".gimage.exr", ".gimage.obj"})
     fs::copy_file(own + suffix, copy + suffix, fs::copy_options::overwrite_existing);
@@ -278,7 +279,7 @@ TEST_F(ImageSpaceTest, DavisWymanBeatsWyman2005AgainstTheTirOnlyReference) {
       settings.bounces = bounces;
       const Image image = render(*scene_, settings);
       std::string error;
-      save_image((fs::path(GFIELD_TEST_TMP) / "image_space" /
+      save_image((fs::path(gfield::build_paths::test_tmp()) / "image_space" /
                   (name + "_" + std::to_string(bounces) + ".png"))
                      .string(),
                  image, error);

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
@@ -44,35 +45,40 @@ TEST(IntersectRoute, NoFieldMeansTheBvhAndAnOversizedBvhMeansTheField) {
 
 TEST(IntersectRoute, TheViewerTracesEachMeshTheWayTheModelSaysAndSaysWhy) {
   const fs::path dir =
-      fs::path(GFIELD_TEST_TMP) / ("intersect_route_" + std::to_string(::getpid()));
+      fs::path(gfield::build_paths::test_tmp()) / ("intersect_route_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   for (const char* mesh : {"spot", "torus"}) {
-    const test::CliRun run =
-        test::run_cli(std::string("build " GFIELD_MESH_DIR "/") + mesh + ".obj -o " +
-                      (dir / mesh).string() + " --size 64 --samples 4 --verify-rays 0");
+    const test::CliRun run = test::run_cli(
+        std::string("build " + std::string(gfield::build_paths::mesh_dir()) + "/") + mesh +
+        ".obj -o " + (dir / mesh).string() + " --size 64 --samples 4 --verify-rays 0");
     ASSERT_EQ(run.exit_code, 0) << run.err;
   }
-  std::ofstream(dir / "scene.json") << R"({
+  std::ofstream(dir / "scene.json")
+      << R"({
     "camera": {"position": [0, 1, 3.5], "target": [0, 0, 0], "fov": 40},
     "image": {"width": 48, "height": 48}, "environment": {"type": "studio"},
     "objects": [
-      {"name": "torus", "shape": "mesh", "file": ")" GFIELD_MESH_DIR R"(/torus.obj",
+      {"name": "torus", "shape": "mesh", "file": ")" +
+             std::string(gfield::build_paths::mesh_dir()) + R"(/torus.obj",
        "material": {"type": "mirror"}},
-      {"name": "spot", "shape": "mesh", "file": ")" GFIELD_MESH_DIR R"(/spot.obj",
+      {"name": "spot", "shape": "mesh", "file": ")" +
+             std::string(gfield::build_paths::mesh_dir()) + R"(/spot.obj",
        "transform": {"translate": [0.9, 0, 0], "scale": 0.5},
        "material": {"type": "dielectric", "ior": 1.5}}]})";
   const std::string view = (dir / "scene.json").string() + " --assets " + dir.string() +
                            " --allow-outside-paths --headless --depth 4 --intersect ";
-  const test::CliRun automatic =
-      test::run_program(GFIELD_VIEW, view + "auto --bench -o " + (dir / "auto.png").string());
+  const test::CliRun automatic = test::run_program(
+      gfield::build_paths::view(), view + "auto --bench -o " + (dir / "auto.png").string());
   ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
   EXPECT_NE(automatic.out.find("meshes by field: none; by BVH: torus.obj (auto: ~37 BVH nodes "
                                "per mirror ray < 70), spot.obj (auto: ~53 BVH nodes per glass "
                                "ray < 117)"),
             std::string::npos)
       << automatic.out;
-  ASSERT_EQ(test::run_program(GFIELD_VIEW, view + "bvh -o " + (dir / "bvh.png").string()).exit_code,
-            0);
+  ASSERT_EQ(
+      test::run_program(gfield::build_paths::view(), view + "bvh -o " + (dir / "bvh.png").string())
+          .exit_code,
+      0);
   const test::CliRun same =
       test::run_cli("compare " + (dir / "auto.png").string() + " " + (dir / "bvh.png").string());
   EXPECT_NE(same.out.find("max |a-b|       0\n"), std::string::npos) << same.out;

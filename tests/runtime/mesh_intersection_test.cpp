@@ -1,4 +1,4 @@
-// The geometry-field method's two ways of meeting meshes (issue 27): looked up in their geometry
+// The geometry-field method's two ways of meeting meshes: looked up in their geometry
 // fields, or traced exactly through a BVH of their triangles (--intersect bvh), which also traces
 // the meshes that have no field. The BVH renders every example scene with meshes as well as the
 // reference tracer itself can at one sample per pixel: against the reference's converged picture
@@ -19,6 +19,7 @@
 #include "preprocess/reference_tracer.hpp"
 #include "runtime/methods/geometry_field.hpp"
 #include "runtime/shader_program.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 #include "test_support/gl_suite.hpp"
 
@@ -27,7 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / "mesh_intersection";
+const fs::path kDir = fs::path(gfield::build_paths::test_tmp()) / "mesh_intersection";
 constexpr int kSize = 128;
 constexpr int kDepth = 4;
 
@@ -51,8 +52,9 @@ Image reference_render(const Scene& scene, int spp) {
 bool load_without_assets(const std::string& name, Scene& scene) {
   std::vector<std::string> warnings;
   std::string error;
-  const bool loaded = load_scene_file(std::string(GFIELD_DATA_DIR) + "/scenes/" + name + ".json",
-                                      scene, warnings, error);
+  const bool loaded =
+      load_scene_file(std::string(gfield::build_paths::data_dir()) + "/scenes/" + name + ".json",
+                      scene, warnings, error);
   EXPECT_TRUE(loaded) << error;
   for (MeshAsset& mesh : scene.meshes) {
     mesh.geometry_image.clear();

@@ -19,13 +19,14 @@
 #include "runtime/methods/geometry_field.hpp"
 #include "runtime/shader_program.hpp"
 #include "runtime/work_counters.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / "runtime_render";
+const fs::path kDir = fs::path(gfield::build_paths::test_tmp()) / "runtime_render";
 constexpr int kSize = 128;
 constexpr int kSamples = 4;  // per pixel, both renderers, at the same positions
 
@@ -33,8 +34,8 @@ constexpr int kSamples = 4;  // per pixel, both renderers, at the same positions
 std::string spot_object(const std::string& name, const std::string& transform,
                         const std::string& material) {
   const fs::path asset = kDir / "spot";
-  return R"({"name": ")" + name +
-         R"(", "shape": "mesh", "file": ")" GFIELD_MESH_DIR R"(/spot.obj", "gimage": ")" +
+  return R"({"name": ")" + name + R"(", "shape": "mesh", "file": ")" +
+         std::string(gfield::build_paths::mesh_dir()) + R"(/spot.obj", "gimage": ")" +
          asset.string() + R"(.gimage.exr", "gfield": ")" + asset.string() +
          R"(.gfield.exr", "transform": )" + transform + R"(, "material": )" + material + "}";
 }
@@ -102,8 +103,8 @@ class RenderTest : public test::GlSuite {
   static void SetUpTestSuite() {
     ASSERT_TRUE(make_context());
     fs::create_directories(kDir);
-    const std::string command = std::string("\"") + GFIELD_CLI +
-                                "\" build \"" GFIELD_MESH_DIR "/spot.obj\" -o \"" +
+    const std::string command = std::string("\"") + gfield::build_paths::cli() + "\" build \"" +
+                                std::string(gfield::build_paths::mesh_dir()) + "/spot.obj\" -o \"" +
                                 (kDir / "spot").string() +
                                 "\" --size 256 --samples 12 --method square --verify-rays 0 "
                                 "> \"" +
@@ -177,7 +178,7 @@ TEST_F(RenderTest, MatchesReferenceTracerAndRefinedBeatsLinearBeatsNearest) {
 /// rebuilds an asset whose build id no longer matches its mesh and options, so a test folder
 /// left by an older build is never used.
 std::string example_scene(const std::string& name) {
-  const fs::path source = fs::path(GFIELD_DATA_DIR) / "scenes" / (name + ".json");
+  const fs::path source = fs::path(gfield::build_paths::data_dir()) / "scenes" / (name + ".json");
   nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
   const fs::path folder = kDir / "examples";
   for (auto& object : scene["objects"]) {
@@ -186,8 +187,8 @@ std::string example_scene(const std::string& name) {
     const fs::path mesh =
         fs::weakly_canonical(source.parent_path() / object["file"].get<std::string>());
     const fs::path asset = folder / mesh.stem();
-    const std::string command = std::string("\"") + GFIELD_CLI + "\" batch \"" + mesh.string() +
-                                "\" -o \"" + folder.string() +
+    const std::string command = std::string("\"") + gfield::build_paths::cli() + "\" batch \"" +
+                                mesh.string() + "\" -o \"" + folder.string() +
                                 "\" --verify-rays 0 > /dev/null 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
     object["file"] = mesh.string();
@@ -201,15 +202,8 @@ TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
   // The issue's setting: 256^2, depth 4, default assets; 4 samples per pixel at the same strata
   // centres in both renderers (at 1 spp the refraction's chaotic pixels dominate: 22.8 dB).
   constexpr int kDepth = 4, kExampleSize = 256, kExampleSamples = 4;
-  // Refined-mode PSNR measured on llvmpipe minus a margin (docs/runtime.md). two-mirror-spheres
-  // has no mesh objects: no field lookups, the three modes are the same picture.
-  // Measured with the layered fields (K chosen: 4 for spot and the torus) at 8 bits, rays leaving
-  // a mesh 1e-4 of its size off it and looking it up as gf_trace_leaving (from the geometry
-  // image's ray offset off a rasterised point): 44.3, 54.3, 32.1 and 43.3 dB (all from
-  // 1e-4: 44.3, 54.3, 31.5, 43.3; from 1e-3: 39.8, 54.3, 28.9 and 39.4; before the
-  // layers 32.9, 54.3, 26.0 and 32.9). Issue 15's targets: 38 and 30 dB; textured-mirror is issue
-  // 17's (30 dB). With rays inside a dielectric meeting every object (issue 27): 44.2, 55.1, 32.8
-  // and 43.2 dB.
+  // Refined-mode PSNR measured on llvmpipe minus a margin (docs/results.md prints today's).
+  // two-mirror-spheres has no mesh objects: no field lookups, the three modes are the same picture.
   const std::pair<const char*, double> scenes[] = {{"mirror-torus-instances", 43.5},
                                                    {"two-mirror-spheres", 53.5},
                                                    {"davis-wyman-color-chart", 31.0},
@@ -269,7 +263,8 @@ TEST_F(RenderTest, WorkPerFrameStaysWithinItsCommittedBaseline) {
   // any device. The mirror scene and the refraction (glass) scene; a rise over 10% fails; after a
   // change that is meant to do more (or less) work, GFIELD_WRITE_WORK_BASELINES=1 rewrites the
   // baseline file, to be committed.
-  const fs::path baselines = fs::path(GFIELD_TESTS_DIR) / "runtime" / "work_baselines.json";
+  const fs::path baselines =
+      fs::path(gfield::build_paths::tests_dir()) / "runtime" / "work_baselines.json";
   nlohmann::json work;
   for (const TestScene& test : test_scenes()) {
     if (std::string(test.name) == "mirror" || std::string(test.name) == "refraction")

@@ -11,13 +11,15 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 
 namespace gfield {
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / ("scene_assets_" + std::to_string(getpid()));
+const fs::path kDir =
+    fs::path(gfield::build_paths::test_tmp()) / ("scene_assets_" + std::to_string(getpid()));
 const char* kFiles[] = {".gimage.exr", ".gimage.obj", ".gfield.exr", ".report.json"};
 
 class SceneAssets : public ::testing::Test {
@@ -26,9 +28,9 @@ class SceneAssets : public ::testing::Test {
     fs::remove_all(kDir);
     fs::create_directories(kDir / "built");
     for (const char* mesh : {"spot", "torus"}) {
-      const test::CliRun run = test::run_cli(std::string("build " GFIELD_MESH_DIR "/") + mesh +
-                                             ".obj -o " + (kDir / "built" / mesh).string() +
-                                             " --size 64 --samples 4 --verify-rays 0");
+      const test::CliRun run = test::run_cli(
+          std::string("build " + std::string(gfield::build_paths::mesh_dir()) + "/") + mesh +
+          ".obj -o " + (kDir / "built" / mesh).string() + " --size 64 --samples 4 --verify-rays 0");
       ASSERT_EQ(run.exit_code, 0) << run.err;
     }
   }
@@ -39,7 +41,8 @@ class SceneAssets : public ::testing::Test {
   void SetUp() override {
     fs::remove_all(kDir / "case");
     fs::create_directories(kDir / "case" / "assets");
-    fs::copy_file(GFIELD_MESH_DIR "/spot.obj", kDir / "case" / "spot.obj");
+    fs::copy_file(std::string(gfield::build_paths::mesh_dir()) + "/spot.obj",
+                  kDir / "case" / "spot.obj");
     std::ofstream(kDir / "case" / "scene.json") << R"({
       "camera": {"position": [0, 0.5, 3], "target": [0, 0, 0], "fov": 40},
       "image": {"width": 32, "height": 32}, "environment": {"type": "studio"},
@@ -54,9 +57,10 @@ class SceneAssets : public ::testing::Test {
                     fs::copy_options::overwrite_existing);
   }
   static test::CliRun view(const std::string& extra = "") {
-    return test::run_program(GFIELD_VIEW, (kDir / "case" / "scene.json").string() + " --assets " +
-                                              (kDir / "case" / "assets").string() +
-                                              " --headless --bench --size 16x16 " + extra);
+    return test::run_program(gfield::build_paths::view(),
+                             (kDir / "case" / "scene.json").string() + " --assets " +
+                                 (kDir / "case" / "assets").string() +
+                                 " --headless --bench --size 16x16 " + extra);
   }
   static std::string report() { return (kDir / "case" / "assets" / "spot.report.json").string(); }
 };

@@ -14,6 +14,7 @@
 #include "runtime/method_registry.hpp"
 #include "runtime/shader_program.hpp"
 #include "runtime/view_session.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
 #include "test_support/gl_suite.hpp"
 
@@ -21,7 +22,7 @@ namespace gfield {
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(GFIELD_TEST_TMP) / "view_session";
+const fs::path kDir = fs::path(gfield::build_paths::test_tmp()) / "view_session";
 constexpr int kSize = 64;
 
 /// A scene every method can draw: diffuse spot (assets built at set-up), one glass slab (the
@@ -32,7 +33,8 @@ std::string session_scene() {
   "image": {"width": 64, "height": 64}, "environment": {"type": "studio"}, "ambient": 0.2,
   "lights": [{"type": "directional", "direction": [-0.3, -1, -0.4], "intensity": 1.2}],
   "objects": [
-    {"name": "spot", "shape": "mesh", "file": ")" GFIELD_MESH_DIR R"(/spot.obj",
+    {"name": "spot", "shape": "mesh", "file": ")" +
+         std::string(gfield::build_paths::mesh_dir()) + R"(/spot.obj",
      "gimage": ")" +
          asset + R"(.gimage.exr", "gfield": ")" + asset + R"(.gfield.exr",
      "transform": {"translate": [0, 0, -0.6]}, "material": {"type": "diffuse",
@@ -51,8 +53,8 @@ class ViewSessionTest : public test::GlSuite {
     ASSERT_TRUE(make_context());
     fs::create_directories(kDir);
     const test::CliRun run =
-        test::run_cli("build " GFIELD_MESH_DIR "/spot.obj -o " + (kDir / "spot").string() +
-                      " --size 128 --samples 8 --verify-rays 0");
+        test::run_cli("build " + std::string(gfield::build_paths::mesh_dir()) + "/spot.obj -o " +
+                      (kDir / "spot").string() + " --size 128 --samples 8 --verify-rays 0");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     std::ofstream(kDir / "scene.json") << session_scene();
     ready_ = true;
@@ -88,14 +90,15 @@ TEST(MethodRegistry, NamesAreUniqueAndEachMethodCarriesItsName) {
 }
 
 TEST(MethodRegistry, HelpListsEveryMethodAndItsOptions) {
-  const test::CliRun help = test::run_program(GFIELD_VIEW, "--help");
+  const test::CliRun help = test::run_program(gfield::build_paths::view(), "--help");
   ASSERT_EQ(help.exit_code, 0) << help.err;
   for (const MethodEntry& entry : method_registry()) {
     EXPECT_NE(help.out.find(entry.name), std::string::npos) << entry.name;
     for (const MethodOption& o : entry.make()->options())
       EXPECT_NE(help.out.find("--" + o.name), std::string::npos) << o.name;
   }
-  const test::CliRun bad = test::run_program(GFIELD_VIEW, "scene.json --method no-such");
+  const test::CliRun bad =
+      test::run_program(gfield::build_paths::view(), "scene.json --method no-such");
   EXPECT_NE(bad.exit_code, 0);
 }
 

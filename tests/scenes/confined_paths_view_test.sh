@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CTest (issue 26): gfield-view confines the files a scene names as gfield does, and
+# CTest: gfield-view confines the files a scene names as gfield does, and
 # --allow-outside-paths lifts the rule, for its own reading and for the `gfield assets` it runs: a
 # JSON scene naming an environment image above its folder, and a glTF file whose buffer lies
 # above its folder, are refused (exit 2, one line naming the scene, the place and the path) and

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CTest: gfield-view refuses damaged assets and absurd scenes as gfield does (issue 18): a
+# CTest: gfield-view refuses damaged assets and absurd scenes as gfield does: a
 # geometry image whose header claims 60000^2 texels (it used to abort on std::bad_alloc), the
 # other damaged geometry images and fields of tests/fuzz/regressions, and the damaged scenes
 # there: exit 2, one line on stderr naming the file, no picture.

@@ -1,11 +1,10 @@
 #!/usr/bin/env bash
-# CTest (issue 30): glTF as the ecosystem writes it, with the real tools. Makes third-party files
+# CTest: glTF as the ecosystem writes it, with the real tools. Makes third-party files
 # from the bundled meshes (scripts/make-gltf-conformance-files.sh: obj2gltf, gltf-pipeline,
 # gltfpack) and checks each: `gfield info` and a 64^2 `gfield render` of the file succeed, and the
 # file, placed in a scene with a fixed camera and light, renders (reference tracer, 64^2, 4
 # samples at the strata centres) like its source OBJ in the same scene: PSNR >= 40 dB, also for
-# gltfpack's coarse quantisation (-vp 10 -vt 10: positions on a grid of 1/1023 of the box; 43.6
-# dB on 2026-11-25). A file requiring an extension gfield does not implement exits 2 naming it,
+# gltfpack's coarse quantisation (-vp 10 -vt 10: positions on a grid of 1/1023 of the box). A file requiring an extension gfield does not implement exits 2 naming it,
 # with no picture. Every example scene exported by `gfield export-gltf` validates with
 # Khronos' glTF Validator: 0 errors, 0 warnings. Prints the table of docs/scenes.md.
 # Usage: gltf_conformance_test.sh GFIELD SOURCE_DIR

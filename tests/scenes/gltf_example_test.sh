@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CTest (issue 17): the glTF example data/scenes/textured-mirror.glb is what `gfield export-gltf`
+# CTest: the glTF example data/scenes/textured-mirror.glb is what `gfield export-gltf`
 # writes for textured-mirror.json today; it loads (`gfield info`), `gfield-view --headless` builds
 # its meshes' assets on demand into --assets DIR (then finds them up to date) and renders it;
 # `gfield render` renders it with the reference tracer; the two pictures agree (PSNR).

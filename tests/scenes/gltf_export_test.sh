@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CTest (issue 30): `gfield export-gltf` exports every example scene (spheres, boxes, slabs,
+# CTest: `gfield export-gltf` exports every example scene (spheres, boxes, slabs,
 # hollow cylinders tessellated, procedural textures baked), and the exported file read back
 # renders like the original: the reference tracer at 128^2, 4 samples per pixel at the strata
 # centres, PSNR >= 40 dB against the original scene's render. mukai-hollow-cylinder's glass stands

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 16 on a real one-node Slurm cluster (tests/slurm/cluster.sh): the bundled meshes built by
+# On a real one-node Slurm cluster (tests/slurm/cluster.sh): the bundled meshes built by
 # scripts/slurm/gfield-batch.sbatch as a 4-task job array equal a single-process `gfield batch`
 # of the same inputs (same files; images, meshes and fields byte-identical; reports equal but for
 # their times); then one task of a second array is cancelled with scancel in the middle of a

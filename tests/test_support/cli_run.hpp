@@ -1,6 +1,7 @@
 #pragma once
-// Runs the built executables (`gfield`: GFIELD_CLI; `gfield-view`: GFIELD_VIEW in the runtime
-// tests) for end-to-end tests: exit code, stdout, stderr.
+// Runs the built executables (`gfield`: gfield::build_paths::cli(); `gfield-view`:
+// gfield::build_paths::view() in the runtime tests) for end-to-end tests: exit code, stdout,
+// stderr.
 
 #include <sys/wait.h>
 
@@ -13,6 +14,8 @@
 #include <iterator>
 #include <string>
 
+#include "test_support/build_paths.hpp"
+
 namespace gfield::test {
 
 struct CliRun {
@@ -23,8 +26,8 @@ struct CliRun {
 
 /// Runs `EXECUTABLE ARGS` through the shell (ARGS is shell syntax).
 inline CliRun run_program(const std::string& executable, const std::string& args) {
-  const std::string err_path =
-      std::string(GFIELD_TEST_TMP) + "/cli_stderr_" + std::to_string(::getpid()) + ".txt";
+  const std::string err_path = std::string(gfield::build_paths::test_tmp()) + "/cli_stderr_" +
+                               std::to_string(::getpid()) + ".txt";
   const std::string command = executable + " " + args + " 2>" + err_path;
   CliRun run;
   FILE* pipe = popen(command.c_str(), "r");
@@ -43,7 +46,7 @@ inline CliRun run_program(const std::string& executable, const std::string& args
 
 /// Runs `gfield ARGS`.
 inline CliRun run_cli(const std::string& args) {
-  return run_program(GFIELD_CLI, args);
+  return run_program(gfield::build_paths::cli(), args);
 }
 
 /// True when `output` exists and is newer than `gfield` itself and every one of `inputs`. CTest
@@ -54,7 +57,7 @@ inline bool up_to_date(const std::string& output, std::initializer_list<std::str
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_time_type made = fs::last_write_time(output, ec);
-  if (ec || fs::last_write_time(GFIELD_CLI, ec) >= made || ec)
+  if (ec || fs::last_write_time(gfield::build_paths::cli(), ec) >= made || ec)
     return false;
   for (const std::string& input : inputs) {
     if (fs::last_write_time(input, ec) >= made || ec)

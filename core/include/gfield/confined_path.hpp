@@ -32,9 +32,11 @@ std::filesystem::path scene_root(const std::string& scene_file);
 /// Resolves `name`, a path a file in folder `base` names, to `resolved` (base / name, lexically
 /// normal; `name` itself when absolute). Unless `outside` is kAllowed, an absolute `name` and one
 /// whose canonical path is not inside the canonical `root` are refused: false with `problem`
-/// saying why ("is an absolute path", "leaves ROOT"), without touching the file.
+/// saying why ("is an absolute path", "leaves ROOT"), without touching the file. With
+/// `root_by_marker` (a JSON scene's root: scene_root) the message of a path that leaves the root
+/// names the kPathRootMarker file that would move it.
 bool resolve_named_path(const std::filesystem::path& base, const std::string& name,
                         const std::filesystem::path& root, OutsidePaths outside,
-                        std::string& resolved, std::string& problem);
+                        std::string& resolved, std::string& problem, bool root_by_marker = false);
 
 }  // namespace gfield

@@ -6,6 +6,7 @@
 // linear, writing clamps to [0,1] and encodes sRGB. EXR holds linear FLOAT R, G, B; HDR (Radiance)
 // is read only.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,8 @@ glm::vec3 sample_bilinear(const Image& image, float x, float y, bool wrap_x);
 /// sRGB transfer functions on one channel (IEC 61966-2-1).
 float srgb_to_linear(float v);
 float linear_to_srgb(float v);
+/// A linear value as the 8-bit sRGB code a PNG stores: clamped to [0, 1], encoded, rounded.
+std::uint8_t srgb_byte(float linear);
 
 /// Reads .exr (channels R, G, B; a single Y channel is grey), .hdr (Radiance RGBE), .png (8/16
 /// bit) or .jpg/.jpeg (8-bit sRGB -> linear; alpha ignored; grey expands to RGB), at most

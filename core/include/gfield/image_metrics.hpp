@@ -1,6 +1,7 @@
 #pragma once
-// Image comparison: PSNR and SSIM of two linear RGB images, optionally restricted to a mask
-// (e.g. the pixels an object covers).
+// Image comparison: PSNR and SSIM of two RGB images, optionally restricted to a mask (e.g. the
+// pixels an object covers), on one of two scales: the values a display picture stores (as
+// ImageMagick, scikit-image and OpenCV compare PNGs) or linear light.
 
 #include <string>
 #include <vector>
@@ -24,12 +25,26 @@ Image clamped_to_display(Image image);
 /// rather than radiance (EXR, HDR).
 bool is_display_image_file(const std::string& filename);
 
-/// Gives two pictures read from `a_file` and `b_file` the same display transform before they are
-/// compared: where either is a display picture, both are clamped to [0, 1] (a radiance picture
-/// against a clamped one would count every highlight above 1 as error); two radiance pictures
-/// stay linear. Returns whether they were clamped.
-bool match_display_transform(Image& a, const std::string& a_file, Image& b,
-                             const std::string& b_file);
+/// The picture as a PNG stores it: every channel clamped to [0, 1], sRGB-encoded and rounded to
+/// k / 255. A PNG read by load_image comes back to its stored values exactly.
+Image display_encoded(Image image);
+
+/// The values two pictures are compared on.
+enum class MetricScale {
+  display,  ///< display_encoded values: the scale of ImageMagick's and scikit-image's PSNR
+  linear,   ///< linear light, clamped to [0, 1] where either picture is a display picture
+};
+
+/// How `scale` is named in the tools' output: "display (sRGB 8-bit)" or "linear light".
+const char* metric_scale_name(MetricScale scale);
+
+/// Puts two pictures read from `a_file` and `b_file` ("" for one that is not a file) on one
+/// scale before they are compared, and returns it: where either is a display picture (PNG,
+/// JPEG) and `linear` is not asked, both become display_encoded; otherwise linear light, both
+/// clamped to [0, 1] where either is a display picture (a radiance picture against a clamped
+/// one would count every highlight above 1 as error); two radiance pictures stay as they are.
+MetricScale match_metric_scale(Image& a, const std::string& a_file, Image& b,
+                               const std::string& b_file, bool linear = false);
 
 struct ImageComparison {
   double mse = 0.0;             ///< mean over counted pixels and the 3 channels of (a - b)^2

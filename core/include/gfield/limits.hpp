@@ -25,7 +25,7 @@ inline constexpr double kMaxAssetDistance = 1e17;
 /// spot 5e-12 across crashed the cast, 2.6e-15 across got no hit, 2.6e14 across 94% of the box
 /// rays' hits right (99% within the range); 1,000 diagonals from the origin 79%, 100 as at the
 /// origin, where float positions are 1.2e-5 of the diagonal apart, below the geometry image's
-/// error (measured 2026-11-25, docs/reliability.md). Margins: 26x below, 26x above.
+/// error (docs/reliability.md). Margins: 26x below, 26x above.
 inline constexpr double kMinAssetDiagonal = 1e-9;
 inline constexpr double kMaxAssetDiagonal = 1e12;
 inline constexpr double kMaxAssetOffsetRatio = 100.0;
