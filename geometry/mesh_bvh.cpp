@@ -4,12 +4,13 @@
 #include <array>
 #include <limits>
 
+#include "gfield/glsl_names.hpp"
 #include "gfield/gpu_contract.hpp"
 
 namespace gfield {
 namespace {
 
-using namespace glm;  // the GLSL vocabulary of bvh_trace.glsl
+using namespace gfield::glsl;  // the GLSL vocabulary of bvh_trace.glsl
 
 constexpr int kBins = 16;
 /// Below this depth the SAH chooses the split; at it the median along the widest axis does, so
@@ -149,7 +150,11 @@ struct GlslBvhTrace {
   vec3 gb_triangle_e1(int s) const { return corner(s, 1) - corner(s, 0); }
   vec3 gb_triangle_e2(int s) const { return corner(s, 2) - corner(s, 0); }
 
+#include "gfield/glsl_begin.hpp"
+
 #include "../shaders/lib/bvh_trace.glsl"
+
+#include "gfield/glsl_end.hpp"
 };
 
 }  // namespace

@@ -171,14 +171,13 @@ const char* dielectric_mode_name(DielectricMode mode) {
 InterfaceSplit split_at_interface(glm::dvec3 incident, glm::dvec3 normal, double n1, double n2,
                                   DielectricMode mode) {
   InterfaceSplit s;
-  const glm::vec3 i(incident), n(normal);
-  const float cos_i = std::clamp(-glm::dot(i, n), 0.0f, 1.0f);
-  s.reflected = glm::normalize(to_d(reflect(i, n)));
-  const std::optional<glm::vec3> t = refract(i, n, float(n1 / n2));
+  const double cos_i = std::clamp(-glm::dot(incident, normal), 0.0, 1.0);
+  s.reflected = glm::normalize(reflect(incident, normal));
+  const std::optional<glm::dvec3> t = refract(incident, normal, n1 / n2);
   s.total_internal_reflection = !t.has_value();
   if (t)
-    s.transmitted = glm::normalize(to_d(*t));
-  const double r = fresnel_dielectric(cos_i, float(n1), float(n2));
+    s.transmitted = glm::normalize(*t);
+  const double r = fresnel_dielectric(cos_i, n1, n2);
   switch (mode) {
     case DielectricMode::kFull:
       s.reflected_weight = s.total_internal_reflection ? 1.0 : r;
@@ -519,11 +518,11 @@ struct ReferenceTracer::Impl {
       case MaterialType::kMirror: {
         if (depth >= options.max_depth)
           return glm::dvec3(0.0);
-        glm::dvec3 r = glm::normalize(to_d(reflect(glm::vec3(d), glm::vec3(n))));
+        glm::dvec3 r = glm::normalize(reflect(d, n));
         if (glm::dot(r, front ? hit.geometric_normal : -hit.geometric_normal) <= 0.0) {
           // An interpolated normal can send the reflection into the surface: use the face's.
           const glm::dvec3 g = front ? hit.geometric_normal : -hit.geometric_normal;
-          r = glm::normalize(to_d(reflect(glm::vec3(d), glm::vec3(g))));
+          r = glm::normalize(reflect(d, g));
         }
         ++counters.secondary;
         const glm::dvec3 tint(material.color);
@@ -606,7 +605,7 @@ std::vector<PathEvent> ReferenceTracer::follow_path(const TracerRay& start, int 
     }
     if (material.type == MaterialType::kMirror) {
       e.kind = PathEvent::kMirror;
-      e.direction = glm::normalize(to_d(reflect(glm::vec3(ray.direction), glm::vec3(n))));
+      e.direction = glm::normalize(reflect(ray.direction, n));
     } else {
       const double n1 = front ? 1.0 : material.ior, n2 = front ? material.ior : 1.0;
       const InterfaceSplit s =

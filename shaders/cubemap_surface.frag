@@ -30,7 +30,7 @@ void main() {
   vec3 v = camera_direction();
   vec3 n = dot(v, s.normal) > 0.0f ? -s.normal : s.normal;
   int k = u_object;
-  vec3 reflected = cube_radiance(normalize(reflect(v, n)));
+  vec3 reflected = cube_radiance(normalize(gf_reflect(v, n)));
   if (u_reflect_only || objects[k].kind.y == MATERIAL_MIRROR) {
     vec3 tint = objects[k].kind.y == MATERIAL_MIRROR ? objects[k].color.rgb : vec3(1.0f);
     o_color = vec4(tint * reflected, 1.0f);
@@ -44,8 +44,8 @@ void main() {
     t = normalize(v_hurley);
     total_reflection = ior < 1.0f && 1.0f - cos_i * cos_i > ior * ior;
   } else {
-    // Index 1 does not bend the ray: v itself, not refract()'s rounding of it.
-    vec3 r = refract(v, n, 1.0f / ior);
+    // Index 1 does not bend the ray: v itself, not gf_refract()'s rounding of it.
+    vec3 r = gf_refract(v, n, 1.0f / ior);
     total_reflection = dot(r, r) == 0.0f;
     t = ior == 1.0f ? v : total_reflection ? r : normalize(r);
   }

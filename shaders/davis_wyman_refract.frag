@@ -43,8 +43,8 @@ void main() {
   vec3 v = camera_direction();
   vec3 n1 = dot(v, s.normal) > 0.0f ? -s.normal : s.normal;
   vec3 o = s.position;
-  vec3 d = refract(v, n1, 1.0f / ior);
-  if (dot(d, d) == 0.0f) d = reflect(v, n1);
+  vec3 d = gf_refract(v, n1, 1.0f / ior);
+  if (dot(d, d) == 0.0f) d = gf_reflect(v, n1);
   for (int b = 0; b < u_bounces; b++) {
     int iterations = b == 0 ? u_iterations_first : u_iterations_later;
     float t_max = box_exit(o, d);
@@ -63,9 +63,9 @@ void main() {
     vec3 n = front ? texelFetch(u_front, best.texel, 0).xyz : texelFetch(u_back, best.texel, 0).xyz;
     if (dot(d, n) > 0.0f) n = -n;
     o = best.position;
-    vec3 t = refract(d, n, ior);
+    vec3 t = gf_refract(d, n, ior);
     if (dot(t, t) == 0.0f) {
-      d = reflect(d, n);  // total internal reflection: one more bounce
+      d = gf_reflect(d, n);  // total internal reflection: one more bounce
       continue;
     }
     d = t;

@@ -99,8 +99,8 @@ void shade_hit(SceneHit hit, vec3 geometric, PathRay ray, inout vec3 radiance) {
   vec3 g = front ? geometric : -geometric;
   if (material == MATERIAL_MIRROR) {
     if (ray.depth >= u_max_depth) return;
-    vec3 r = reflect(d, n);
-    if (dot(r, g) <= 0.0f) r = reflect(d, g);
+    vec3 r = gf_reflect(d, n);
+    if (dot(r, g) <= 0.0f) r = gf_reflect(d, g);
     push_ray(hit, g, r, ray.weight * objects[k].color.rgb, ray.depth + 1, -1);
     return;
   }
@@ -112,8 +112,8 @@ void shade_hit(SceneHit hit, vec3 geometric, PathRay ray, inout vec3 radiance) {
   float n1 = front ? 1.0f : ior;
   float n2 = front ? ior : 1.0f;
   float r = fresnel_dielectric(-dot(d, n), n1, n2);
-  vec3 reflected = reflect(d, n);
-  vec3 transmitted = refract(d, n, n1 / n2);
+  vec3 reflected = gf_reflect(d, n);
+  vec3 transmitted = gf_refract(d, n, n1 / n2);
   bool tir = r >= 1.0f || dot(transmitted, transmitted) == 0.0f;
   int outside_of = front ? -1 : k;  // where the reflected ray travels
   if (tir) {

@@ -97,12 +97,12 @@ bool path_matches(int cls, int in_front, vec3 o, vec3 d) {
     vec3 n = normalize(transpose(mat3(u_glass_to_object)) * h.normal);
     bool front = dot(d, n) < 0.0f;
     vec3 m = front ? n : -n;
-    vec3 t = refract(d, m, front ? 1.0f / u_ior : u_ior);
+    vec3 t = gf_refract(d, m, front ? 1.0f / u_ior : u_ior);
     bool total = dot(t, t) == 0.0f;
     events[event_count] = 2 * glass_surface(lo + h.t * ld, h.normal) + (total ? 1 : 0);
     event_count++;
     if (total) {
-      d = reflect(d, m);
+      d = gf_reflect(d, m);
     } else {
       d = normalize(t);
       inside = !inside;
@@ -296,7 +296,7 @@ vec3 glass_exit_radiance(vec3 origin, vec3 direction, bool inside_glass, int dep
     vec3 m = front ? n : -n;
     float n1 = front ? 1.0f : u_ior;
     float n2 = front ? u_ior : 1.0f;
-    vec3 t = refract(d, m, n1 / n2);
+    vec3 t = gf_refract(d, m, n1 / n2);
     float r = dot(t, t) == 0.0f ? 1.0f : fresnel_dielectric(-dot(d, m), n1, n2);
     if (r < 1.0f && w * (1.0f - r) >= GLASS_MIN_WEIGHT && top < GLASS_STACK) {
       stack_o[top] = p;
@@ -309,7 +309,7 @@ vec3 glass_exit_radiance(vec3 origin, vec3 direction, bool inside_glass, int dep
     }
     if (w * r >= GLASS_MIN_WEIGHT && top < GLASS_STACK) {
       stack_o[top] = p;
-      stack_d[top] = reflect(d, m);
+      stack_d[top] = gf_reflect(d, m);
       stack_tint[top] = tint * r;
       stack_w[top] = w * r;
       stack_depth[top] = event + 1;
@@ -381,14 +381,14 @@ void main() {
     vec3 m = front ? n : -n;
     float n1 = front ? 1.0f : u_ior;
     float n2 = front ? u_ior : 1.0f;
-    vec3 t = refract(d, m, n1 / n2);
+    vec3 t = gf_refract(d, m, n1 / n2);
     if (dot(t, t) == 0.0f) {
-      d = reflect(d, m);  // total internal reflection
+      d = gf_reflect(d, m);  // total internal reflection
     } else {
       if (u_fresnel) {
         float r = fresnel_dielectric(-dot(d, m), n1, n2);
         reflections += transmittance * r *
-                       glass_exit_radiance(p, reflect(d, m), inside, event + 1, weight * r);
+                       glass_exit_radiance(p, gf_reflect(d, m), inside, event + 1, weight * r);
         weight *= 1.0f - r;
         transmittance *= 1.0f - r;
       }

@@ -31,9 +31,9 @@ void main() {
   float ior = objects[k].color.w;
   vec3 v = camera_direction();
   vec3 n1 = dot(v, s.normal) > 0.0f ? -s.normal : s.normal;
-  vec3 t1 = refract(v, n1, 1.0f / ior);
+  vec3 t1 = gf_refract(v, n1, 1.0f / ior);
   if (dot(t1, t1) == 0.0f) {
-    o_color = vec4(leave(s.position, reflect(v, n1)), 1.0f);
+    o_color = vec4(leave(s.position, gf_reflect(v, n1)), 1.0f);
     return;
   }
   float d_n = v_thickness;
@@ -57,8 +57,8 @@ void main() {
     vec4 back = texelFetch(u_back, ivec2(q.xy * vec2(size)), 0);
     if (back.a < IS_FAR) {
       vec3 n2 = dot(t1, back.xyz) > 0.0f ? -back.xyz : back.xyz;
-      vec3 t2 = refract(t1, n2, ior);
-      d = dot(t2, t2) == 0.0f ? reflect(t1, n2) : t2;
+      vec3 t2 = gf_refract(t1, n2, ior);
+      d = dot(t2, t2) == 0.0f ? gf_reflect(t1, n2) : t2;
     }
   }
   o_color = vec4(leave(p2, d), 1.0f);

@@ -4,23 +4,30 @@
 
 #include <cmath>
 
+#include "gfield/glsl_names.hpp"
+#include "gfield/gpu_contract.hpp"
+
 namespace gfield {
-namespace glsl {
-using namespace glm;
-using namespace gfield::gpu;  // GF_PI
+namespace environment_glsl {
+using namespace gfield::glsl;
+using gpu::GF_PI;
+#include "gfield/glsl_begin.hpp"
+
 #include "../../shaders/lib/environment.glsl"
-}  // namespace glsl
+
+#include "gfield/glsl_end.hpp"
+}  // namespace environment_glsl
 
 glm::vec3 studio_environment_radiance(glm::vec3 direction) {
-  return glsl::studio_environment(direction);
+  return environment_glsl::studio_environment(direction);
 }
 
 glm::vec2 equirect_uv(glm::vec3 direction) {
-  return glsl::env_equirect_uv(direction);
+  return environment_glsl::env_equirect_uv(direction);
 }
 
 glm::vec3 cube_coords(glm::vec3 direction) {
-  return glsl::env_cube_coords(direction);
+  return environment_glsl::env_cube_coords(direction);
 }
 
 bool load_environment(const EnvironmentDesc& desc, Environment& environment, std::string& error) {
@@ -52,20 +59,20 @@ glm::vec3 environment_radiance(const Environment& environment, glm::vec3 directi
   glm::vec3 radiance(0.0f);
   switch (desc.type) {
     case EnvironmentType::kStudio:
-      radiance = glsl::studio_environment(direction);
+      radiance = environment_glsl::studio_environment(direction);
       break;
     case EnvironmentType::kConstant:
       radiance = desc.color;
       break;
     case EnvironmentType::kEquirect: {
       const Image& image = environment.equirect;
-      const glm::vec2 uv = glsl::env_equirect_uv(direction);
+      const glm::vec2 uv = environment_glsl::env_equirect_uv(direction);
       radiance =
           sample_bilinear(image, uv.x * float(image.width), uv.y * float(image.height), true);
       break;
     }
     case EnvironmentType::kCube: {
-      const glm::vec3 c = glsl::env_cube_coords(direction);
+      const glm::vec3 c = environment_glsl::env_cube_coords(direction);
       const Image& image = environment.faces[size_t(c.z)];
       radiance = sample_bilinear(image, c.x * float(image.width), c.y * float(image.height), false);
       break;

@@ -4,18 +4,23 @@
 #include <utility>
 
 #include "gfield/check.hpp"
+#include "gfield/glsl_names.hpp"
 #include "gfield/gpu_contract.hpp"
 #include "glsl_field_tables.hpp"
 
 namespace gfield {
 namespace {
 
-using namespace glm;          // the GLSL vocabulary of field_lines.glsl
-using namespace gfield::gpu;  // and the contract's addressing
+using namespace gfield::glsl;  // the GLSL vocabulary of field_lines.glsl
+using namespace gfield::gpu;   // and the contract's addressing
 
 /// shaders/lib/field_lines.glsl compiled as C++ over the CPU copy of a field.
 struct GlslFieldLines : GlslFieldTables {
+#include "gfield/glsl_begin.hpp"
+
 #include "../../shaders/lib/field_lines.glsl"
+
+#include "gfield/glsl_end.hpp"
 };
 
 int face_of(int n, int sample) {

@@ -5,6 +5,7 @@
 
 #include "gfield/build_id.hpp"
 #include "gfield/check.hpp"
+#include "gfield/glsl_names.hpp"
 #include "gfield/gpu_contract.hpp"
 #include "gfield/printable.hpp"
 #include "glsl_field_tables.hpp"
@@ -12,8 +13,8 @@
 namespace gfield {
 namespace {
 
-using namespace glm;          // the GLSL vocabulary of field_lookup.glsl
-using namespace gfield::gpu;  // and the contract's field addressing (field_lines.glsl)
+using namespace gfield::glsl;  // the GLSL vocabulary of field_lookup.glsl
+using namespace gfield::gpu;   // and the contract's field addressing (field_lines.glsl)
 
 /// shaders/lib/field_lookup.glsl compiled as C++: its functions become members of this struct,
 /// whose fetch functions read the CPU copies of the textures.
@@ -35,10 +36,13 @@ struct GlslFieldLookup : GlslFieldTables {
   vec3 gf_box_min() const { return field.box.min; }
   vec3 gf_box_max() const { return field.box.max; }
 
-#define GF_COUNT(kind, n) count_work(kind, n)
+#include "gfield/glsl_begin.hpp"
+
+#define GF_COUNT(kind, n) count_work(kind, n)  // field_lookup.glsl's hook, undefined at its end
 #include "../../shaders/lib/field_lines.glsl"
 #include "../../shaders/lib/field_lookup.glsl"
-#undef GF_COUNT
+
+#include "gfield/glsl_end.hpp"
 };
 
 bool same_box(const Box& a, const Box& b) {

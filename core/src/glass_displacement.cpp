@@ -2,33 +2,38 @@
 
 #include <cmath>
 
+#include "gfield/glsl_names.hpp"
 #include "gfield/gpu_contract.hpp"
 
 // shaders/lib/glass_displacement.glsl compiled as C++ (outside namespace gfield, whose own
 // refract/reflect would hide GLM's).
 namespace gfield_glass_glsl {
-using namespace glm;          // the GLSL vocabulary of glass_displacement.glsl
-using namespace gfield::gpu;  // and the contract's GF_FAR
+using namespace gfield::glsl;  // the GLSL vocabulary of glass_displacement.glsl
+using namespace gfield::gpu;   // and the contract's GF_FAR
+#include "gfield/glsl_begin.hpp"
+
 #include "../../shaders/lib/glass_displacement.glsl"
+
+#include "gfield/glsl_end.hpp"
 }  // namespace gfield_glass_glsl
 
 namespace gfield {
-namespace glsl = gfield_glass_glsl;
+namespace glass_glsl = gfield_glass_glsl;
 
 float plate_incidence_sine(float x, float y, float thickness, float ior) {
-  return glsl::gd_plate_incidence_sine(x, y, thickness, ior);
+  return glass_glsl::gd_plate_incidence_sine(x, y, thickness, ior);
 }
 
 glm::vec3 plate_displace(const GlassPlate& plate, glm::vec3 eye, glm::vec3 vertex) {
-  return glsl::gd_plate_displace(eye, vertex, plate.centre, glm::normalize(plate.normal),
-                                 plate.thickness, plate.ior);
+  return glass_glsl::gd_plate_displace(eye, vertex, plate.centre, glm::normalize(plate.normal),
+                                       plate.thickness, plate.ior);
 }
 
 bool cylinder_displace(const GlassCylinder& cylinder, CylinderPath path, glm::vec3 eye,
                        glm::vec3 vertex, glm::vec3& seen) {
   bool ok = false;
-  seen = glsl::gd_cylinder_displace(int(path), cylinder.outer_radius, cylinder.inner_radius,
-                                    cylinder.ior, eye, vertex, ok);
+  seen = glass_glsl::gd_cylinder_displace(int(path), cylinder.outer_radius, cylinder.inner_radius,
+                                          cylinder.ior, eye, vertex, ok);
   return ok;
 }
 

@@ -6,57 +6,58 @@
 #include <cmath>
 #include <string>
 
+#include "gfield/glsl_names.hpp"
+
 namespace gfield {
-namespace glsl {
-using namespace glm;  // the GLSL vocabulary of optics.glsl
+namespace optics_glsl {
+// shaders/lib/optics.glsl in double.
+using namespace gfield::glsl;
+using real = double;
+using rvec3 = dvec3;
+#include "gfield/glsl_begin.hpp"
+
 #include "../../shaders/lib/optics.glsl"
-}  // namespace glsl
 
-glm::vec3 reflect(glm::vec3 incident, glm::vec3 normal) {
-  return incident - 2.0f * glm::dot(normal, incident) * normal;
+#include "gfield/glsl_end.hpp"
+}  // namespace optics_glsl
+
+glm::dvec3 reflect(glm::dvec3 incident, glm::dvec3 normal) {
+  return optics_glsl::gf_reflect(incident, normal);
 }
 
-std::optional<glm::vec3> refract(glm::vec3 incident, glm::vec3 normal, float eta) {
-  const float cos_i = -glm::dot(normal, incident);
-  const float k = 1.0f - eta * eta * (1.0f - cos_i * cos_i);
-  if (k < 0.0f) {
+std::optional<glm::dvec3> refract(glm::dvec3 incident, glm::dvec3 normal, double eta) {
+  const glm::dvec3 transmitted = optics_glsl::gf_refract(incident, normal, eta);
+  if (transmitted == glm::dvec3(0.0))  // total internal reflection, as the shaders tell it
     return std::nullopt;
-  }
-  return eta * incident + (eta * cos_i - std::sqrt(k)) * normal;
+  return transmitted;
 }
 
-std::optional<float> critical_angle(float n1, float n2) {
+std::optional<double> critical_angle(double n1, double n2) {
   if (!(n1 > n2)) {
     return std::nullopt;
   }
   return std::asin(n2 / n1);
 }
 
-bool total_internal_reflection(float cos_i, float n1, float n2) {
-  const float eta = n1 / n2;
-  const float sin2_t = eta * eta * std::max(0.0f, 1.0f - cos_i * cos_i);
-  return sin2_t >= 1.0f;
+bool total_internal_reflection(double cos_i, double n1, double n2) {
+  return optics_glsl::gf_total_internal_reflection(cos_i, n1, n2);
 }
 
-float fresnel_dielectric(float cos_i, float n1, float n2) {
-  return glsl::fresnel_dielectric(cos_i, n1, n2);
+double fresnel_dielectric(double cos_i, double n1, double n2) {
+  return optics_glsl::fresnel_dielectric(cos_i, n1, n2);
 }
 
-float fresnel_schlick(float cos_i, float n1, float n2) {
-  cos_i = std::clamp(cos_i, 0.0f, 1.0f);
-  float r0 = (n1 - n2) / (n1 + n2);
+double fresnel_schlick(double cos_i, double n1, double n2) {
+  cos_i = std::clamp(cos_i, 0.0, 1.0);
+  if (total_internal_reflection(cos_i, n1, n2))
+    return 1.0;
+  double r0 = (n1 - n2) / (n1 + n2);
   r0 *= r0;
-  float c = cos_i;
-  if (n1 > n2) {
-    const float eta = n1 / n2;
-    const float sin2_t = eta * eta * (1.0f - cos_i * cos_i);
-    if (sin2_t >= 1.0f) {
-      return 1.0f;
-    }
-    c = std::sqrt(1.0f - sin2_t);
-  }
-  const float m = 1.0f - c;
-  return r0 + (1.0f - r0) * m * m * m * m * m;
+  // From the denser side the transmitted cosine stands for the incident one.
+  const double eta = n1 / n2;
+  const double c = n1 > n2 ? std::sqrt(1.0 - eta * eta * (1.0 - cos_i * cos_i)) : cos_i;
+  const double m = 1.0 - c;
+  return r0 + (1.0 - r0) * m * m * m * m * m;
 }
 
 namespace {

@@ -1,9 +1,9 @@
 // Exact ray tracing of a mesh through its bounding volume hierarchy (geometry/mesh_bvh.hpp): the
 // peer an engine programmer would use instead of a geometry field.
 //
-// ONE source for the CPU and the GPU, like field_lookup.glsl: valid GLSL 4.50 and valid C++ with
-// GLM, included by geometry/mesh_bvh.cpp (inside a struct whose members supply the fetches) and
-// by shaders/lib/gpu_bvh.glsl. Keep to the common subset (see field_lookup.glsl).
+// ONE source for the CPU and the GPU, in the CPU/GPU dialect (docs/architecture.md; float),
+// included by geometry/mesh_bvh.cpp (inside a struct whose members supply the fetches) and by
+// shaders/lib/gpu_bvh.glsl.
 //
 // The includer defines, before including this file (GLSL) or as members (C++):
 //   vec3 gb_node_lo(int i);  vec3 gb_node_hi(int i);  bounds of node i (mesh coordinates)
@@ -15,13 +15,12 @@
 // Rays are origin + t * direction (mesh coordinates), t in [t_min, t_max]; t is along the given
 // direction.
 
-// GF_OUT, GF_INOUT (parameter qualifiers for both languages): contract.glsl.
 #ifndef __cplusplus
 #include "lib/contract.glsl"
 #endif
 
 // Pending far children at most: the builder keeps the tree shallower than this.
-#define GB_STACK_SIZE 64
+GF_CONST int GB_STACK_SIZE = 64;
 
 struct GbHit {
   bool hit;

@@ -3,29 +3,24 @@
 // includes it into namespace gfield::gpu. It holds the codes both sides use (shapes, materials,
 // textures, environments), the numbers both sides use (pi, the far sentinels, the glass method's
 // layers), the binding slots of storage buffers and texture units, the std430 layouts of the scene
-// buffers, and the camera ray. Keep to the common subset: `GF_CONST int` and `GF_CONST float`
-// constants, GF_INLINE functions, structs of vec4 / ivec4 / mat4 members only (their std430
-// layout is the C++ layout), float literals with an f suffix.
+// buffers, and the camera ray. It is written in the CPU/GPU dialect (docs/architecture.md, "The
+// CPU/GPU dialect"), with structs of vec4 / ivec4 / mat4 members only (their std430 layout is the
+// C++ layout).
 
-#ifdef __cplusplus
-#define GF_CONST inline constexpr
-#define GF_INLINE inline
-#else
+// The dialect's words in GLSL; C++ defines them in gfield/glsl_begin.hpp. GF_CONST: a constant;
+// GF_INLINE: a function of this header; GF_IN(T), GF_OUT(T), GF_INOUT(T): a parameter passed in,
+// out, in and out. `real` and its vectors: the precision of the files that C++ compiles in
+// double (shapes.glsl, optics.glsl), float on the GPU.
+#ifndef __cplusplus
 #define GF_CONST const
 #define GF_INLINE
-#endif
-
-// Parameter qualifiers for both languages, for the files compiled by both (field_lines.glsl,
-// field_lookup.glsl, shapes.glsl, bvh_trace.glsl, glass_displacement.glsl): a struct passed in (a
-// const reference in C++), an output and an in-out parameter.
-#ifdef __cplusplus
-#define GF_IN(T) const T&
-#define GF_OUT(T) T&
-#define GF_INOUT(T) T&
-#else
 #define GF_IN(T) in T
 #define GF_OUT(T) out T
 #define GF_INOUT(T) inout T
+#define real float
+#define rvec2 vec2
+#define rvec3 vec3
+#define rvec4 vec4
 #endif
 
 // pi, as a float.
@@ -36,6 +31,11 @@ GF_CONST float GF_FAR = 3.0e38f;
 // The image-space methods' eye depth of a texel where nothing was drawn (shaders/lib/
 // image_space.glsl; runtime/methods/image_space_refraction.cpp clears its maps to it).
 GF_CONST float IS_FAR = 1.0e30f;
+
+// Geometry-field lookup modes (gfield::LookupMode; field_lookup.glsl).
+GF_CONST int GF_MODE_NEAREST = 0;
+GF_CONST int GF_MODE_LINEAR = 1;
+GF_CONST int GF_MODE_REFINED = 2;
 
 // Shapes (gfield::ShapeType).
 GF_CONST int SHAPE_MESH = 0;

@@ -1,7 +1,5 @@
-// Environment lookups by direction, shared by the CPU reference tracer (core/src/environment.cpp
-// includes this file with GLM and the contract in scope) and the GLSL 4.50 shaders. Keep to the
-// common subset of GLSL and GLM: no qualifiers (in/out), float literals with an f suffix, no
-// integer-vector math.
+// Environment lookups by direction, shared by the CPU reference tracer (core/src/environment.cpp)
+// and the shaders, in the CPU/GPU dialect (docs/architecture.md; float).
 //
 // Directions are unit vectors in world space, +Y up.
 

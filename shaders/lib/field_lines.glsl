@@ -1,8 +1,8 @@
 // Reading a compact geometry field (contract.glsl, "The compact geometry field"): the hits of one
 // line, from either of its samples.
 //
-// ONE source for the CPU and the GPU, like field_lookup.glsl (its rules hold here): valid GLSL
-// 4.50 and valid C++ with GLM, included verbatim by core/src/field_lines.cpp and
+// ONE source for the CPU and the GPU, in the CPU/GPU dialect (docs/architecture.md; float),
+// included by core/src/field_lines.cpp and
 // core/src/field_lookup.cpp (inside structs whose members supply the fetches below) and by the
 // runtime's shaders, after contract.glsl and before field_lookup.glsl. The includer defines:
 //   int  gf_samples_per_side();                        N of the field

@@ -2,13 +2,9 @@
 // verified against the geometry image by Newton's method) and the lookup beyond a ray's origin
 // over a line's stored hits (docs/geometry-field.md, "Lookup").
 //
-// ONE source for the CPU and the GPU: this file is valid GLSL 4.50 and valid C++ with GLM, and
-// is included verbatim by core/src/field_lookup.cpp (inside a struct whose members supply the
-// fetches below) and by the runtime's shaders. Keep it in the common subset: float literals with
-// an `f` suffix, no swizzles beyond .x/.y/.z/.w, no arrays as parameters, no `const` locals, no
-// builtin names (step, length, sign, in, out, ...) as variable names, callees defined before
-// their callers, GF_OUT/GF_INOUT for output parameters, GF_IN for structs passed in (a const
-// reference in C++).
+// ONE source for the CPU and the GPU, in the CPU/GPU dialect (docs/architecture.md, "The CPU/GPU
+// dialect"; float): included by core/src/field_lookup.cpp (inside a struct whose members supply
+// the fetches below) and by the runtime's shaders.
 //
 // The includer includes field_lines.glsl before this file (the hits of a line: gf_line_hit, with
 // the fetches it needs) and defines, before including this file (GLSL) or as members (C++):
@@ -26,41 +22,37 @@
 // Conventions (docs/geometry-field.md): rays are origin + t * direction in mesh (object)
 // coordinates, t in [t_min, t_max]; a hit's t is along the given (unnormalised) direction.
 
-// GF_IN, GF_OUT, GF_INOUT (parameter qualifiers for both languages): contract.glsl.
-
 // Work counting (shaders/lib/work.glsl): the includer may define GF_COUNT(kind, n) to count the
 // lookups and the Newton steps; by default it is nothing.
 #ifndef GF_COUNT
 #define GF_COUNT(kind, n)
 #endif
 
-#define GF_MODE_NEAREST 0
-#define GF_MODE_LINEAR 1
-#define GF_MODE_REFINED 2
+// The modes, GF_MODE_NEAREST, GF_MODE_LINEAR and GF_MODE_REFINED: contract.glsl.
 
 // Newton iterations per candidate, the longest Newton step (texels of the geometry image), and
 // the residual (distance between the line and the surface point, in box diagonals) accepted as
 // an intersection.
-#define GF_NEWTON_ITERATIONS 16
-#define GF_NEWTON_MAX_STEP 8.0f
-#define GF_NEWTON_TOLERANCE 1.0e-5f
+GF_CONST int GF_NEWTON_ITERATIONS = 16;
+GF_CONST float GF_NEWTON_MAX_STEP = 8.0f;
+GF_CONST float GF_NEWTON_TOLERANCE = 1.0e-5f;
 // Least weight of the hitting pairs among the 16 for a chart border to count as a seam.
-#define GF_SEAM_WEIGHT 0.999f
+GF_CONST float GF_SEAM_WEIGHT = 0.999f;
 // A point at a chart border (across a seam, or on a patch with padding corners) is accepted only
 // when the ray's start lies farther than this many texels off the surface's tangent plane there:
 // a ray leaving the surface next to a chart border runs within a texel of the border's patches
 // near its start, which are the surface it leaves, not a surface it hits.
-#define GF_SEAM_CLEARANCE 2.0f
+GF_CONST float GF_SEAM_CLEARANCE = 2.0f;
 // Rays starting inside the box, nearest and linear modes: a stored hit counts as beyond the
 // ray's origin only when it projects onto the ray at least this many sample spacings (box
 // diagonal / N) beyond t_min. A pair's line passes up to half a spacing beside the ray, so the
 // unverified stored hit of the surface a ray leaves can project beyond its origin.
-#define GF_UNVERIFIED_MARGIN 0.5f
+GF_CONST float GF_UNVERIFIED_MARGIN = 0.5f;
 // Crossings of the surface a ray leaves that gf_trace_leaving looks beyond at most.
-#define GF_SELF_CROSSINGS 2
+GF_CONST int GF_SELF_CROSSINGS = 2;
 // The refined lookup's candidates lie together when all are within GF_GROUP_TEXELS texels (max
 // norm) of the first.
-#define GF_GROUP_TEXELS 16.0f
+GF_CONST float GF_GROUP_TEXELS = 16.0f;
 
 struct GfHit {
   bool hit;       // false: miss (or an invalid ray)
@@ -535,12 +527,13 @@ int gf_heaviest(vec4 w) {
 }
 
 // The refined lookup's search stages (gf_next_start), in order.
-#define GF_STAGE_NEAREST_PAIR 0  // the nearest pair's candidate (ranges from inside the box)
-#define GF_STAGE_GROUP0 1        // group 0's weighted mean, then its heaviest candidate
-#define GF_STAGE_GROUP0_BEST 2
-#define GF_STAGE_GROUP1 3  // group 1 likewise
-#define GF_STAGE_GROUP1_BEST 4
-#define GF_STAGE_PAIRS 5  // every candidate on its own, the nearest verified hit wins
+// The nearest pair's candidate (ranges from inside the box).
+GF_CONST int GF_STAGE_NEAREST_PAIR = 0;
+GF_CONST int GF_STAGE_GROUP0 = 1;  // group 0's weighted mean, then its heaviest candidate
+GF_CONST int GF_STAGE_GROUP0_BEST = 2;
+GF_CONST int GF_STAGE_GROUP1 = 3;  // group 1 likewise
+GF_CONST int GF_STAGE_GROUP1_BEST = 4;
+GF_CONST int GF_STAGE_PAIRS = 5;  // every candidate on its own, the nearest verified hit wins
 
 // Where the refined lookup's search stands.
 struct GfSearch {
@@ -818,3 +811,7 @@ GfHit gf_trace_leaving(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origi
                        float facing, int mode) {
   return gf_trace_from(o, d, t_min, t_max, self_origin, self_t_min, facing, mode, true);
 }
+
+#ifdef __cplusplus
+#undef GF_COUNT  // the includer's hook ends with this file (docs/architecture.md)
+#endif

@@ -2,17 +2,12 @@
 // behind a parallel glass plate or a hollow glass cylinder is SEEN from the eye, so that drawing
 // the displaced vertex without any glass gives the refracted picture.
 //
-// ONE source for the CPU and the GPU: valid GLSL 4.50 and valid C++ with GLM. It is included
-// verbatim by core/src/glass_displacement.cpp (inside a namespace with `using namespace glm`) and
-// by shaders/glass_scene.vert. Keep to the common subset (see shaders/lib/field_lookup.glsl): float
-// literals with an `f` suffix, no swizzles beyond .x/.y/.z/.w, no arrays as parameters, no `const`
-// locals, no builtin names as variable names, callees before callers, GF_OUT/GF_INOUT for output
-// parameters. All math is float.
+// ONE source for the CPU and the GPU, in the CPU/GPU dialect (docs/architecture.md; float),
+// included by core/src/glass_displacement.cpp and by shaders/glass_scene.vert.
 //
 // Indices are relative: n_rel = n_glass / n_outside (> 0); the outside (air) and the hollow
 // cylinder's interior have index 1 relative to it.
 
-// GF_OUT (the parameter qualifier for both languages): contract.glsl.
 #ifndef __cplusplus
 #include "lib/contract.glsl"
 #endif
@@ -20,9 +15,9 @@
 // Newton iterations of the plate's equation 5 (each keeps the root bracketed), of the cylinder's
 // path search, and the cylinder's convergence tolerance (distance from the vertex to the traced
 // ray, relative to the eye-vertex distance).
-#define GD_PLATE_ITERATIONS 24
-#define GD_CYLINDER_ITERATIONS 16
-#define GD_CYLINDER_TOLERANCE 1.0e-6f
+GF_CONST int GD_PLATE_ITERATIONS = 24;
+GF_CONST int GD_CYLINDER_ITERATIONS = 16;
+GF_CONST float GD_CYLINDER_TOLERANCE = 1.0e-6f;
 
 // ---------------------------------------------------------------------------------------------
 // Parallel plate (section 2.1 and 2.2).
@@ -111,11 +106,15 @@ vec3 gd_plate_displace(vec3 eye, vec3 a, vec3 centre, vec3 normal, float w, floa
 // Hollow cylinder (section 2.3), in the cylinder's object space: axis Y through the origin, outer
 // radius R, inner radius r = R - W, walls of index n_rel, air outside and inside. The walls are
 // taken as infinite along Y. A path through the glass is a fixed sequence of interfaces:
-#define GD_PATH_BOTH_WALLS 0  // outer in, inner in, inner out, outer out: 4 refractions (A B C D)
-#define GD_PATH_VERGE 1       // outer in, (total internal reflection at the inner surface,) outer
-                              // out: through the wall only, 2 refractions
-#define GD_PATH_FRONT_WALL 2  // outer in, inner in: into the interior, 2 refractions
-#define GD_PATH_BACK_WALL 3   // inner out, outer out: from the open top out through one wall
+// outer in, inner in, inner out, outer out: 4 refractions (A B C D).
+GF_CONST int GD_PATH_BOTH_WALLS = 0;
+// Outer in, (total internal reflection at the inner surface,) outer out: through the wall only,
+// 2 refractions.
+GF_CONST int GD_PATH_VERGE = 1;
+// Outer in, inner in: into the interior, 2 refractions.
+GF_CONST int GD_PATH_FRONT_WALL = 2;
+// Inner out, outer out: from the open top out through one wall.
+GF_CONST int GD_PATH_BACK_WALL = 3;
 //
 // A ray entering the outer surface at distance b < R from the axis meets the inner surface
 // unless b > n r; there it is totally reflected when b > r. So through the wall's silhouette band

@@ -157,7 +157,7 @@ vec3 is_shade_surface(int k, vec3 p, vec3 n, vec3 incoming, vec3 albedo) {
   int material = objects[k].kind.y;
   if (material == MATERIAL_DIFFUSE) return is_shade_diffuse(k, p, n, incoming, albedo);
   if (dot(incoming, n) > 0.0f) n = -n;
-  vec3 mirrored = environment_radiance(reflect(incoming, n));
+  vec3 mirrored = environment_radiance(gf_reflect(incoming, n));
   if (material == MATERIAL_MIRROR) return objects[k].color.rgb * mirrored;
   float f = fresnel_dielectric(-dot(incoming, n), 1.0f, objects[k].color.w);
   return mix(environment_radiance(incoming), mirrored, f);

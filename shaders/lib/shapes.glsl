@@ -3,19 +3,12 @@
 // slabs facing +Z (gfield/scene.hpp). Normals point out of the solid (quads: +Z); texture
 // coordinates as docs/scenes.md says. Shape codes SHAPE_* are the contract's.
 //
-// ONE source for the CPU and the GPU: valid GLSL 4.50 and valid C++ with GLM, included by the
-// shaders (in float) and by geometry/analytic_primitives.cpp (in double: the reference tracer's
-// ground truth). Its scalar and vector types are `real`, `rvec2`, `rvec3` and `rvec4`: float and
-// vec* here, double and dvec* as the C++ includer defines them (with GF_PI in double). Literals
-// carry no suffix, so that they are of `real`'s precision in both languages; otherwise the rules
-// of field_lookup.glsl hold.
+// ONE source for the CPU and the GPU, in the CPU/GPU dialect (docs/architecture.md) in `real`:
+// included by the shaders (float) and by geometry/analytic_primitives.cpp (double: the reference
+// tracer's ground truth), whose includer defines `real`, `rvec2`..`rvec4` and GF_PI in double.
 
 #ifndef __cplusplus
 #include "lib/contract.glsl"
-#define real float
-#define rvec2 vec2
-#define rvec3 vec3
-#define rvec4 vec4
 #endif
 
 struct ShapeHit {

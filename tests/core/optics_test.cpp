@@ -7,60 +7,60 @@
 namespace gfield {
 namespace {
 
-constexpr float kDegree = 3.14159265358979f / 180.0f;
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 TEST(Optics, ReflectMirrorsAboutTheNormal) {
-  const glm::vec3 r = reflect(glm::normalize(glm::vec3(1, -1, 0)), {0, 1, 0});
-  EXPECT_NEAR(r.x, std::sqrt(0.5f), 1e-6f);
-  EXPECT_NEAR(r.y, std::sqrt(0.5f), 1e-6f);
-  EXPECT_NEAR(r.z, 0.0f, 1e-6f);
+  const glm::dvec3 r = reflect(glm::normalize(glm::dvec3(1, -1, 0)), {0, 1, 0});
+  EXPECT_NEAR(r.x, std::sqrt(0.5), 1e-6);
+  EXPECT_NEAR(r.y, std::sqrt(0.5), 1e-6);
+  EXPECT_NEAR(r.z, 0.0, 1e-6);
 }
 
 TEST(Optics, RefractObeysSnellsLaw) {
   // Air to glass at 30 degrees: sin(theta_t) = sin(30) / 1.5 = 1/3.
-  const float theta = 30.0f * kDegree;
-  const glm::vec3 incident{std::sin(theta), -std::cos(theta), 0.0f};
-  const auto t = refract(incident, {0, 1, 0}, 1.0f / 1.5f);
+  const double theta = 30.0 * kDegree;
+  const glm::dvec3 incident{std::sin(theta), -std::cos(theta), 0.0};
+  const auto t = refract(incident, {0, 1, 0}, 1.0 / 1.5);
   ASSERT_TRUE(t.has_value());
-  EXPECT_NEAR(glm::length(*t), 1.0f, 1e-6f);
-  EXPECT_NEAR(t->x, 1.0f / 3.0f, 1e-6f);
-  EXPECT_LT(t->y, 0.0f);
-  EXPECT_NEAR(t->z, 0.0f, 1e-7f);
+  EXPECT_NEAR(glm::length(*t), 1.0, 1e-6);
+  EXPECT_NEAR(t->x, 1.0 / 3.0, 1e-6);
+  EXPECT_LT(t->y, 0.0);
+  EXPECT_NEAR(t->z, 0.0, 1e-7);
   // Normal incidence passes straight through.
-  const auto straight = refract({0, -1, 0}, {0, 1, 0}, 1.0f / 1.33f);
+  const auto straight = refract({0, -1, 0}, {0, 1, 0}, 1.0 / 1.33);
   ASSERT_TRUE(straight.has_value());
-  EXPECT_NEAR(straight->y, -1.0f, 1e-6f);
+  EXPECT_NEAR(straight->y, -1.0, 1e-6);
 }
 
 TEST(Optics, CriticalAngleOfGlassIs41_81Degrees) {
-  const auto angle = critical_angle(1.5f, 1.0f);
+  const auto angle = critical_angle(1.5, 1.0);
   ASSERT_TRUE(angle.has_value());
-  EXPECT_NEAR(*angle / kDegree, 41.81f, 0.01f);
-  EXPECT_FALSE(critical_angle(1.0f, 1.5f).has_value());
-  EXPECT_FALSE(critical_angle(1.5f, 1.5f).has_value());
+  EXPECT_NEAR(*angle / kDegree, 41.81, 0.01);
+  EXPECT_FALSE(critical_angle(1.0, 1.5).has_value());
+  EXPECT_FALSE(critical_angle(1.5, 1.5).has_value());
   // Water to air: asin(1 / 1.33333) = 48.59 degrees.
-  EXPECT_NEAR(*critical_angle(1.33333f, 1.0f) / kDegree, 48.59f, 0.01f);
+  EXPECT_NEAR(*critical_angle(1.33333, 1.0) / kDegree, 48.59, 0.01);
 }
 
 TEST(Optics, TotalInternalReflectionOnlyBeyondTheCriticalAngle) {
-  const float critical = *critical_angle(1.5f, 1.0f);
-  for (float degrees = 0.0f; degrees < 90.0f; degrees += 0.5f) {
-    const float theta = degrees * kDegree;
-    const bool tir = total_internal_reflection(std::cos(theta), 1.5f, 1.0f);
+  const double critical = *critical_angle(1.5, 1.0);
+  for (double degrees = 0.0; degrees < 90.0; degrees += 0.5) {
+    const double theta = degrees * kDegree;
+    const bool tir = total_internal_reflection(std::cos(theta), 1.5, 1.0);
     EXPECT_EQ(tir, theta > critical) << degrees;
-    const glm::vec3 incident{std::sin(theta), -std::cos(theta), 0.0f};
-    EXPECT_EQ(!refract(incident, {0, 1, 0}, 1.5f).has_value(), tir) << degrees;
+    const glm::dvec3 incident{std::sin(theta), -std::cos(theta), 0.0};
+    EXPECT_EQ(!refract(incident, {0, 1, 0}, 1.5).has_value(), tir) << degrees;
     // Never from the less dense side.
-    EXPECT_FALSE(total_internal_reflection(std::cos(theta), 1.0f, 1.5f));
+    EXPECT_FALSE(total_internal_reflection(std::cos(theta), 1.0, 1.5));
   }
 }
 
 TEST(Optics, FresnelAtNormalIncidenceIs4PercentForGlass) {
-  EXPECT_NEAR(fresnel_dielectric(1.0f, 1.0f, 1.5f), 0.04f, 1e-6f);
-  EXPECT_NEAR(fresnel_dielectric(1.0f, 1.5f, 1.0f), 0.04f, 1e-6f);
-  EXPECT_NEAR(fresnel_schlick(1.0f, 1.0f, 1.5f), 0.04f, 1e-6f);
+  EXPECT_NEAR(fresnel_dielectric(1.0, 1.0, 1.5), 0.04, 1e-6);
+  EXPECT_NEAR(fresnel_dielectric(1.0, 1.5, 1.0), 0.04, 1e-6);
+  EXPECT_NEAR(fresnel_schlick(1.0, 1.0, 1.5), 0.04, 1e-6);
   // Water: ((1.33333 - 1) / 2.33333)^2 = 0.020408.
-  EXPECT_NEAR(fresnel_dielectric(1.0f, 1.0f, 1.33333f), 0.020408f, 1e-5f);
+  EXPECT_NEAR(fresnel_dielectric(1.0, 1.0, 1.33333), 0.020408, 1e-5);
 }
 
 TEST(Optics, FresnelMatchesHandComputedValues) {
@@ -68,23 +68,22 @@ TEST(Optics, FresnelMatchesHandComputedValues) {
   // rs = (0.707107 - 1.5 * 0.881917) / (0.707107 + 1.5 * 0.881917) = -0.303337,
   // rp = (1.5 * 0.707107 - 0.881917) / (1.5 * 0.707107 + 0.881917) = 0.092013;
   // R = (rs^2 + rp^2) / 2 = 0.050240.
-  EXPECT_NEAR(fresnel_dielectric(std::cos(45.0f * kDegree), 1.0f, 1.5f), 0.050240f, 5e-6f);
+  EXPECT_NEAR(fresnel_dielectric(std::cos(45.0 * kDegree), 1.0, 1.5), 0.050240, 5e-6);
   // Grazing incidence reflects everything.
-  EXPECT_NEAR(fresnel_dielectric(0.0f, 1.0f, 1.5f), 1.0f, 1e-6f);
+  EXPECT_NEAR(fresnel_dielectric(0.0, 1.0, 1.5), 1.0, 1e-6);
   // Beyond the critical angle inside glass: total reflection.
-  EXPECT_EQ(fresnel_dielectric(std::cos(60.0f * kDegree), 1.5f, 1.0f), 1.0f);
-  EXPECT_EQ(fresnel_schlick(std::cos(60.0f * kDegree), 1.5f, 1.0f), 1.0f);
+  EXPECT_EQ(fresnel_dielectric(std::cos(60.0 * kDegree), 1.5, 1.0), 1.0);
+  EXPECT_EQ(fresnel_schlick(std::cos(60.0 * kDegree), 1.5, 1.0), 1.0);
 }
 
 TEST(Optics, FresnelIsReciprocalAndSchlickIsClose) {
   // R is the same seen from either side of the interface along the same light path.
-  for (float degrees = 0.0f; degrees < 89.0f; degrees += 1.0f) {
-    const float cos_i = std::cos(degrees * kDegree);
-    const float sin_t = std::sin(degrees * kDegree) / 1.5f;
-    const float cos_t = std::sqrt(1.0f - sin_t * sin_t);
-    EXPECT_NEAR(fresnel_dielectric(cos_i, 1.0f, 1.5f), fresnel_dielectric(cos_t, 1.5f, 1.0f),
-                1e-5f);
-    EXPECT_NEAR(fresnel_schlick(cos_i, 1.0f, 1.5f), fresnel_dielectric(cos_i, 1.0f, 1.5f), 0.06f);
+  for (double degrees = 0.0; degrees < 89.0; degrees += 1.0) {
+    const double cos_i = std::cos(degrees * kDegree);
+    const double sin_t = std::sin(degrees * kDegree) / 1.5;
+    const double cos_t = std::sqrt(1.0 - sin_t * sin_t);
+    EXPECT_NEAR(fresnel_dielectric(cos_i, 1.0, 1.5), fresnel_dielectric(cos_t, 1.5, 1.0), 1e-5);
+    EXPECT_NEAR(fresnel_schlick(cos_i, 1.0, 1.5), fresnel_dielectric(cos_i, 1.0, 1.5), 0.06);
   }
 }
 

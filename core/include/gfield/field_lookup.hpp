@@ -23,7 +23,11 @@ namespace gfield {
 ///    method and verified against the ray; the nearest verified hit.
 /// Each pair's uv is its first stored hit (over the K layers) beyond the ray's origin t_min;
 /// refined goes on to the pair's next layers while a candidate fails to verify.
-enum class LookupMode { kNearest = 0, kLinear = 1, kRefined = 2 };
+enum class LookupMode {
+  kNearest = gpu::GF_MODE_NEAREST,
+  kLinear = gpu::GF_MODE_LINEAR,
+  kRefined = gpu::GF_MODE_REFINED
+};
 
 /// "nearest", "linear", "refined".
 const char* lookup_mode_name(LookupMode mode);
