@@ -123,7 +123,7 @@ def run_section(section):
         if not quiet:
             output = done.stdout
     shown = commands[-1].lstrip("!")
-    lines = [f"## {title}", "", f"<!-- results: {ident} -->", about, "",
+    lines = [f"<!-- results: {ident} -->", f"## {title}", "", about, "",
              f"Measured {datetime.date.today().isoformat()} at {commit()} in "
              f"{time.time() - start:.0f} s on {machine()}.", "", "```", f"$ {shown}",
              output.rstrip(), "```"]
@@ -149,9 +149,11 @@ what to compare between machines.
 
 
 def parse(text):
+    """The sections of docs/results.md by id: each starts at its marker line (the outputs they
+    quote may hold markdown headings of their own)."""
     sections = {}
-    for part in re.split(r"(?m)^(?=## )", text):
-        found = re.search(r"<!-- results: ([a-z-]+) -->", part)
+    for part in re.split(r"(?m)^(?=<!-- results: )", text):
+        found = re.match(r"<!-- results: ([a-z-]+) -->", part)
         if found:
             sections[found.group(1)] = part.rstrip() + "\n"
     return sections
@@ -167,7 +169,7 @@ def main(argv):
         print(f"results: unknown section {unknown[0]} (scripts/results.py --list)", file=sys.stderr)
         return 2
     wanted = argv or ids
-    old = parse(RESULTS.read_text(encoding="utf-8")) if RESULTS.exists() else {}
+    sections = parse(RESULTS.read_text(encoding="utf-8")) if RESULTS.exists() else {}
     failed = False
     for section in SECTIONS:
         if section[0] not in wanted:
@@ -176,13 +178,17 @@ def main(argv):
         text = run_section(section)
         if text is None:
             failed = True
-        else:
-            old[section[0]] = text
-    body = [old[i] for i in ids if i in old]
+            continue
+        sections[section[0]] = text
+        write(sections, ids)  # each section as it is done: a long run stopped keeps the others
+    return 1 if failed else 0
+
+
+def write(sections, ids):
+    body = [sections[i] for i in ids if i in sections]
     temporary = RESULTS.with_suffix(".md.tmp")
     temporary.write_text(HEADER + "\n" + "\n".join(body), encoding="utf-8")
     temporary.replace(RESULTS)
-    return 1 if failed else 0
 
 
 if __name__ == "__main__":
