@@ -96,10 +96,6 @@ bool overlaps(const TracerRay& ray, glm::dvec3 lo, glm::dvec3 hi, double t_max) 
   return true;
 }
 
-glm::dvec3 to_d(glm::vec3 v) {
-  return glm::dvec3(v);
-}
-
 /// Checks that every ray Embree sees stays far inside its limits (|origin| <= 1.8e18): each mesh
 /// object within +-kMaxCoordinate in world coordinates, and the scene's box (camera, point
 /// lights, objects) within +-kMaxAssetCoordinate in the coordinates of each mesh object, where
