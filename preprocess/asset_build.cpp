@@ -17,58 +17,6 @@
 namespace gfield {
 namespace {
 
-nlohmann::json box_to_json(const Box& box) {
-  return {{"min", {box.min.x, box.min.y, box.min.z}}, {"max", {box.max.x, box.max.y, box.max.z}}};
-}
-
-}  // namespace
-
-nlohmann::json field_file_report_to_json(const FieldFileReport& r) {
-  nlohmann::json coverage = nlohmann::json::object();
-  for (int k = 1; k <= kMaxLineHits; ++k) {
-    coverage[std::to_string(k)] = layer_coverage(r.build, k);
-  }
-  return {{"format_version", r.format},
-          {"samples_per_side", r.samples_per_side},
-          {"table_side", sample_count(r.samples_per_side)},
-          {"layers", r.layers},
-          {"lines_by_hits", r.build.lines_by_hits},
-          {"lines_holding_all_hits_by_layers", coverage},
-          {"line_table",
-           {{"lines", r.table_lines}, {"words", r.line_words}, {"interior_hits", r.interior_hits}}},
-          {"gpu_bytes",
-           {{"geometry_image", geometry_image_gpu_bytes(r.image_size)},
-            {"geometry_field_8bit", r.gpu_bytes[0]},
-            {"geometry_field_16bit", r.gpu_bytes[1]},
-            {"geometry_field_float", r.gpu_bytes[2]}}},
-          {"memory_estimate_bytes", r.memory_estimate},
-          {"rays", r.build.rays},
-          {"hits", r.build.hits},
-          {"bvh_seconds", r.bvh_seconds},
-          {"cast_seconds", r.build.seconds},
-          {"write_seconds", r.write_seconds},
-          {"file_bytes", r.file_bytes}};
-}
-
-std::string field_layers_summary(const FieldFileReport& r) {
-  char line[240];
-  if (r.format == kFieldFormatVersion) {
-    std::snprintf(line, sizeof(line),
-                  "format 3: up to %d hits per line (%.3f%% of the lines hold all theirs)",
-                  r.layers, 100.0 * layer_coverage(r.build, kMaxLineHits));
-  } else {
-    std::snprintf(line, sizeof(line), "format 2: K = %d (%.3f%% of the lines hold all their hits)",
-                  r.layers, 100.0 * layer_coverage(r.build, r.layers));
-  }
-  std::string text = line;
-  std::snprintf(line, sizeof(line), ", GPU %.1f MB at 8 bits, %.1f MB at 16 bits (image %.1f MB)",
-                double(r.gpu_bytes[0]) / 1e6, double(r.gpu_bytes[1]) / 1e6,
-                double(geometry_image_gpu_bytes(r.image_size)) / 1e6);
-  return text + line;
-}
-
-namespace {
-
 /// The report's figures of the field built (its layout at `format`).
 void describe_field(const GeometryField& field, const FieldFileFormat& format,
                     FieldFileReport& report) {
@@ -190,9 +138,9 @@ namespace {
 bool write_image_files(const TriangleMesh& mesh, const MeshAppearance& appearance,
                        const std::string& mesh_path, const AssetOptions& options,
                        const std::string& build_id, const AssetFiles& staged, GeometryImage& image,
-                       ParameterizedMesh& pm, nlohmann::json& report, std::string& error) {
-  GeometryImageReport image_report;
-  if (!build_geometry_image(mesh, options.image, image, pm, image_report, error, &appearance)) {
+                       ParameterizedMesh& pm, AssetReport& report, std::string& error) {
+  if (!build_geometry_image(mesh, options.image, image, pm, report.geometry_image, error,
+                            &appearance)) {
     error = mesh_path + ": " + error;
     return false;
   }
@@ -204,10 +152,9 @@ bool write_image_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
       !save_geometry_image(staged.image, image, ExrPrecision::kFloat, error)) {
     return false;
   }
-  report["geometry_image"] = geometry_image_report_to_json(image_report);
-  report["geometry_image"]["size"] = image.size;
-  report["geometry_image"]["write_seconds"] = watch.seconds();
-  report["box"] = box_to_json(image.box);
+  report.image_size = image.size;
+  report.image_write_seconds = watch.seconds();
+  report.box = image.box;
   return true;
 }
 
@@ -237,13 +184,10 @@ std::string with_asset_names(std::string error, const AssetFiles& staged, const 
   return error;
 }
 
-/// The error of a build that ran out of memory: the mesh, the stage it was in (the last report
-/// entry begun: geometry image, field, verify) and what a build of its size needs, measured.
+/// The error of a build that ran out of memory: the mesh, the stage it was in ("building the
+/// geometry image", ...) and what a build of its size needs, measured.
 std::string out_of_memory_message(const std::string& mesh_path, const TriangleMesh& mesh,
-                                  const nlohmann::json& report) {
-  const char* stage = report.contains("geometry_field")   ? "verifying the asset"
-                      : report.contains("geometry_image") ? "casting the geometry field"
-                                                          : "building the geometry image";
+                                  const char* stage) {
   // Peak resident memory of whole builds without a proxy: the Stanford bunny midpoint-subdivided
   // to 278K and 1.1M faces (docs/geometry-image.md, "Bad input").
   constexpr double kBytesPerFace = 2048.0;
@@ -256,46 +200,29 @@ std::string out_of_memory_message(const std::string& mesh_path, const TriangleMe
 }
 
 /// Writes the asset's four files into `staged` (the build folder): the parts of build_asset
-/// after the mesh is read.
+/// after the mesh is read. `stage` names the stage under way (for out_of_memory_message).
 bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearance,
-                       const std::vector<std::string>& warnings, const std::string& mesh_path,
-                       const std::string& name, const AssetOptions& options,
-                       const BuildInputs& inputs, const AssetFiles& staged, const Stopwatch& watch,
-                       double mesh_seconds, nlohmann::json& report, std::string& error) {
-  const AssetFiles files = asset_files(name);
-  report = nlohmann::json::object();
-  report["mesh"] = printable(std::filesystem::path(mesh_path).filename().string());
-  report["source_path"] = printable(std::filesystem::absolute(mesh_path).string());
-  report["build_id"] = inputs.build_id;
-  report["inputs"] = inputs.record;
-  if (!options.part.empty()) {
-    report["mesh_part"] = printable(options.part);
-  }
-  report["warnings"] = nlohmann::json::array();
-  for (const std::string& w : warnings) {
-    report["warnings"].push_back(printable(w));
-  }
-  report["topology"] = topology_to_json(analyze_topology(mesh));
-
+                       const std::string& mesh_path, const std::string& name,
+                       const AssetOptions& options, const AssetFiles& staged, AssetReport& report,
+                       const char*& stage, std::string& error) {
   GeometryImage image;
   ParameterizedMesh pm;
+  stage = "building the geometry image";
   report_progress(options.control, "image", 0.0);
-  if (!write_image_files(mesh, appearance, mesh_path, options, inputs.build_id, staged, image, pm,
+  if (!write_image_files(mesh, appearance, mesh_path, options, report.build_id, staged, image, pm,
                          report, error) ||
       interrupted(options.control, mesh_path, error)) {
     return false;
   }
   report_progress(options.control, "image", 1.0);
-  FieldFileReport field_report;
+  stage = "casting the geometry field";
   if (!write_field_file(image, pm, options.samples_per_side, options.field, staged.field,
-                        field_report, error, options.control) ||
+                        report.geometry_field, error, options.control) ||
       interrupted(options.control, mesh_path, error)) {
     return false;
   }
-  report["geometry_field"] = field_file_report_to_json(field_report);
-  report["geometry_field"]["precision"] =
-      options.field.precision == ExrPrecision::kHalf ? "half" : "float";
-
+  report.field_precision = options.field.precision;
+  stage = "verifying the asset";
   Stopwatch verify_watch;
   if (options.verify_rays > 0) {
     VerifyOptions verify;
@@ -303,40 +230,50 @@ bool write_asset_files(const TriangleMesh& mesh, const MeshAppearance& appearanc
     verify.original = mesh_path;
     verify.original_part = options.part;
     verify.original_outside_paths = options.outside_paths;
-    const nlohmann::json& proxy = report["geometry_image"]["proxy"];
-    verify.proxy = proxy.is_object() && proxy.value("used", false);
-    nlohmann::json accuracy;
+    verify.proxy = report.geometry_image.proxy.used;
     report_progress(options.control, "verify", 0.0);
-    if (!verify_asset_files(staged, name, verify, accuracy, error) ||
+    if (!verify_asset_files(staged, name, verify, report.accuracy.emplace(), error) ||
         interrupted(options.control, mesh_path, error)) {
       return false;
     }
     report_progress(options.control, "verify", 1.0);
-    report["accuracy"] = std::move(accuracy);
   }
+  const AssetFiles files = asset_files(name);
+  report.files = {printable(files.image), printable(files.parameterized_mesh),
+                  printable(files.field), ""};
   std::error_code ec;
-  report["files"] = {{"geometry_image", printable(files.image)},
-                     {"parameterized_mesh", printable(files.parameterized_mesh)},
-                     {"geometry_field", printable(files.field)},
-                     {"geometry_image_bytes", size_t(std::filesystem::file_size(staged.image, ec))},
-                     {"geometry_field_bytes", field_report.file_bytes}};
-  const nlohmann::json& image_report = report["geometry_image"];
-  const nlohmann::json& field = report["geometry_field"];
-  report["stage_seconds"] = {
-      {"mesh", mesh_seconds},
-      {"image", image_report["seconds"]["total"]},
-      {"image_write", image_report["write_seconds"]},
-      {"field", field["bvh_seconds"].get<double>() + field["cast_seconds"].get<double>()},
-      {"field_write", field["write_seconds"]},
-      {"verify", options.verify_rays > 0 ? verify_watch.seconds() : 0.0}};
-  report["seconds"] = watch.seconds();
-  return write_text_file(staged.report, report.dump(2) + "\n", error);
+  report.image_file_bytes = size_t(std::filesystem::file_size(staged.image, ec));
+  const FieldFileReport& field = report.geometry_field;
+  report.stage_seconds.image = report.geometry_image.seconds.total;
+  report.stage_seconds.image_write = report.image_write_seconds;
+  report.stage_seconds.field = field.bvh_seconds + field.build.seconds;
+  report.stage_seconds.field_write = field.write_seconds;
+  report.stage_seconds.verify = options.verify_rays > 0 ? verify_watch.seconds() : 0.0;
+  return true;
+}
+
+/// The report's record of the mesh read and of the build's inputs.
+AssetReport begin_report(const std::string& mesh_path, const TriangleMesh& mesh,
+                         const std::vector<std::string>& warnings, const AssetOptions& options,
+                         const BuildInputs& inputs) {
+  AssetReport report;
+  report.mesh = printable(std::filesystem::path(mesh_path).filename().string());
+  report.source_path = printable(std::filesystem::absolute(mesh_path).string());
+  report.build_id = inputs.build_id;
+  report.inputs = inputs.record;
+  built_mesh_from_report({{"inputs", inputs.record}}, report.built_mesh);
+  report.mesh_part = printable(options.part);
+  for (const std::string& w : warnings) {
+    report.warnings.push_back(printable(w));
+  }
+  report.topology = analyze_topology(mesh);
+  return report;
 }
 
 }  // namespace
 
 bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
-                 const BuildInputs& inputs, nlohmann::json& report, std::string& error) {
+                 const BuildInputs& inputs, AssetReport& report, std::string& error) {
   Stopwatch watch;
   if (options.field.version != kFieldFormatVersion &&
       (options.field.version != kLayeredFieldVersion || options.field.layers < kAutoLayers ||
@@ -372,12 +309,20 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
   if (!staging.open(name, error)) {
     return false;
   }
+  report = begin_report(mesh_path, mesh, warnings, options, inputs);
+  report.stage_seconds.mesh = mesh_seconds;
   bool written = false;
+  const char* stage = "building the geometry image";
   try {
-    written = write_asset_files(mesh, appearance, warnings, mesh_path, name, options, inputs,
-                                staging.staged(), watch, mesh_seconds, report, error);
+    written = write_asset_files(mesh, appearance, mesh_path, name, options, staging.staged(),
+                                report, stage, error);
   } catch (const std::bad_alloc&) {
-    error = out_of_memory_message(mesh_path, mesh, report);
+    error = out_of_memory_message(mesh_path, mesh, stage);
+  }
+  if (written) {
+    report.seconds = watch.seconds();
+    written = write_text_file(staging.staged().report, asset_report_to_json(report).dump(2) + "\n",
+                              error);
   }
   if (!written || !staging.publish(error)) {
     error = with_asset_names(error, staging.staged(), asset_files(name));
@@ -387,7 +332,7 @@ bool build_asset(const std::string& mesh_path, const std::string& name, const As
 }
 
 bool build_asset_at(const std::string& mesh_path, const std::string& name,
-                    const AssetOptions& options, nlohmann::json& report, size_t& stale_removed,
+                    const AssetOptions& options, AssetReport& report, size_t& stale_removed,
                     std::string& error) {
   const std::string file = std::filesystem::path(name).filename().string();
   if (file.empty() || file[0] == '.') {

@@ -3,38 +3,19 @@
 // NAME.report.json (the `gfield field`, `gfield build` and `gfield batch` commands). The files of
 // one asset: asset_files.hpp.
 
-#include <array>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "gfield/exr_io.hpp"
+#include "preprocess/asset_report.hpp"
 #include "preprocess/build_inputs.hpp"
 #include "preprocess/field_build.hpp"
+#include "preprocess/field_file_report.hpp"
 #include "preprocess/geometry_image_build.hpp"
 #include "preprocess/job_control.hpp"
 
 namespace gfield {
-
-/// What writing one field file took.
-struct FieldFileReport {
-  int samples_per_side = 0;
-  int image_size = 0;                ///< n of the geometry image (for the GPU bytes)
-  int format = kFieldFormatVersion;  ///< 3 (compact) or 2 (layered)
-  /// K: the most hits a line holds (format 3), the layers written (format 2)
-  int layers = 0;
-  size_t memory_estimate = 0;  ///< bytes (field_memory_estimate)
-  FieldBuildStats build;       ///< the casts (seconds exclude the BVH and the write)
-  size_t table_lines = 0;      ///< lines in the line table (1 hit, or 3 and more)
-  size_t line_words = 0;       ///< words of the line table
-  size_t interior_hits = 0;
-  std::array<size_t, 3> gpu_bytes{};  ///< the field on the GPU at 8, 16 and 32 bits
-  double bvh_seconds = 0.0;
-  double write_seconds = 0.0;
-  size_t file_bytes = 0;
-};
-
-nlohmann::json field_file_report_to_json(const FieldFileReport& report);
 
 /// How a field file is written: the format (kFieldFormatVersion, or kLayeredFieldVersion with
 /// `layers` K, kAutoLayers: chosen) and the precision of its uvs.
@@ -53,10 +34,6 @@ bool write_field_file(const GeometryImage& image, const ParameterizedMesh& pm, i
                       const FieldFileFormat& format, const std::string& output,
                       FieldFileReport& report, std::string& error,
                       const JobControl* control = nullptr);
-
-/// "format 3: at most 8 hits per line (99.98% of the lines hold all theirs), GPU 21.3 MB at 8
-/// bits, 41.1 MB at 16 bits (image 10.5 MB)": the layout and GPU bytes of a field, one line.
-std::string field_layers_summary(const FieldFileReport& report);
 
 /// Rays per family of a build's accuracy report: enough for its hit/miss agreements to within
 /// about 0.1 percentage point (their 95% intervals are in the report), at a fraction of the build's
@@ -94,13 +71,13 @@ bool asset_build_inputs(const std::string& mesh_path, const AssetOptions& option
 /// ("warnings": a missing texture, ...). False with an error "FILE: problem", and the old asset
 /// untouched (also when options.control stopped it: the error then ends in kInterrupted).
 bool build_asset(const std::string& mesh_path, const std::string& name, const AssetOptions& options,
-                 const BuildInputs& inputs, nlohmann::json& report, std::string& error);
+                 const BuildInputs& inputs, AssetReport& report, std::string& error);
 
 /// `gfield build MESH -o NAME`: the inputs and their build id (asset_build_inputs), NAME's folder
 /// (created), what killed builds left there (remove_stale_staging; how many folders into
 /// `stale_removed`), then build_asset. The report's "build_id" is the asset's.
 bool build_asset_at(const std::string& mesh_path, const std::string& name,
-                    const AssetOptions& options, nlohmann::json& report, size_t& stale_removed,
+                    const AssetOptions& options, AssetReport& report, size_t& stale_removed,
                     std::string& error);
 
 }  // namespace gfield

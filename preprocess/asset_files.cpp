@@ -5,15 +5,9 @@
 #include "geometry/parameterized_mesh.hpp"
 #include "gfield/build_id.hpp"
 #include "gfield/exr_io.hpp"
-#include "gfield/file_read.hpp"
+#include "preprocess/asset_report.hpp"
 
 namespace gfield {
-namespace {
-
-/// Reports are a few hundred kB; anything far larger is not one.
-constexpr std::uint64_t kMaxReportBytes = 64ull << 20;
-
-}  // namespace
 
 AssetFiles asset_files(const std::string& name) {
   const std::string image = name + ".gimage.exr";
@@ -25,25 +19,12 @@ std::string published_build(const std::string& name) {
   return std::filesystem::read_symlink(name + ".builds/current", ec).string();
 }
 
-bool read_report(const std::string& report_file, nlohmann::json& report, std::string& error) {
-  std::string text;
-  if (!read_file(report_file, kMaxReportBytes, text, error))
-    return false;
-  report = nlohmann::json::parse(text, nullptr, false);
-  if (!report.is_object()) {
-    error = report_file + ": not a JSON object";
-    return false;
-  }
-  return true;
-}
-
 bool read_report_build_id(const std::string& report_file, std::string& build_id,
                           std::string& error) {
-  nlohmann::json report;
-  if (!read_report(report_file, report, error))
+  AssetReport report;
+  if (!read_asset_report(report_file, report, error))
     return false;
-  const auto id = report.find("build_id");
-  build_id = id != report.end() && id->is_string() ? id->get<std::string>() : std::string();
+  build_id = report.build_id;
   return true;
 }
 

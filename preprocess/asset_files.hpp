@@ -5,8 +5,6 @@
 
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 namespace gfield {
 
 struct AssetFiles {
@@ -23,13 +21,8 @@ AssetFiles asset_files(const std::string& name);
 /// asset of plain files or none): it changes when the asset is republished.
 std::string published_build(const std::string& name);
 
-/// Reads a report file as a JSON object. False with an error "FILE: problem" when it is not a
-/// regular file (checked before it is opened: a FIFO or a folder neither blocks nor throws),
-/// cannot be read, or is not a JSON object.
-bool read_report(const std::string& report_file, nlohmann::json& report, std::string& error);
-
-/// The build id recorded in a report file ("build_id"; empty for a report without one). False
-/// with an error "FILE: problem" when the file cannot be read or is not a JSON object.
+/// The build id recorded in a report file. False with an error "FILE: problem" when the file
+/// cannot be read or is not an asset report (read_asset_report).
 bool read_report_build_id(const std::string& report_file, std::string& build_id,
                           std::string& error);
 

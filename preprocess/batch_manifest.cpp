@@ -8,8 +8,6 @@
 #include <ctime>
 #include <filesystem>
 
-#include "preprocess/verify.hpp"
-
 namespace gfield {
 
 std::string manifest_path(const std::string& dir, const Shard& shard) {
@@ -29,16 +27,16 @@ std::string utc_timestamp(std::chrono::system_clock::time_point time) {
   return text;
 }
 
-nlohmann::json manifest_accuracy(const nlohmann::json& report) {
-  if (!report.contains("accuracy")) {
+nlohmann::json manifest_accuracy(const AssetReport& report) {
+  if (!report.accuracy) {
     return nlohmann::json::object();
   }
-  const nlohmann::json& described = described_reference(report["accuracy"]);
-  const nlohmann::json& refined = described["box_rays"]["refined"];
-  return {{"table_hit_miss", described["table"]["hit_agreement"]},
-          {"refined_hit_miss", refined["hit_agreement"]},
-          {"refined_median_percent", refined["position_error_percent_of_diagonal"]["median"]},
-          {"refined_p95_percent", refined["position_error_percent_of_diagonal"]["p95"]}};
+  const ReferenceAccuracy& described = report.accuracy->described();
+  const AccuracyStats& refined = described.families.at("box_rays").at("refined");
+  return {{"table_hit_miss", described.table.hit_agreement()},
+          {"refined_hit_miss", refined.hit_agreement()},
+          {"refined_median_percent", refined.position_median},
+          {"refined_p95_percent", refined.position_p95}};
 }
 
 bool append_manifest_line(const std::string& path, const nlohmann::json& record,

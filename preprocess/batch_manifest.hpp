@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "preprocess/asset_report.hpp"
 #include "preprocess/batch_plan.hpp"
 
 namespace gfield {
@@ -25,7 +26,7 @@ std::string manifest_path(const std::string& dir, const Shard& shard);
 std::string utc_timestamp(std::chrono::system_clock::time_point time);
 
 /// The accuracy figures of a build report kept in the manifest (empty object without any).
-nlohmann::json manifest_accuracy(const nlohmann::json& report);
+nlohmann::json manifest_accuracy(const AssetReport& report);
 
 /// Appends `record` as one line to `path` in a single write (O_APPEND). False with an error
 /// "FILE: problem".

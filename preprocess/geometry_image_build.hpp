@@ -156,6 +156,9 @@ bool build_geometry_image(const TriangleMesh& input, const GeometryImageOptions&
 TriangleMesh geometry_image_surface(const GeometryImage& image);
 
 nlohmann::json geometry_image_report_to_json(const GeometryImageReport& report);
+/// The inverse of geometry_image_report_to_json. Throws nlohmann::json::exception where `j` is
+/// not of that shape.
+GeometryImageReport geometry_image_report_from_json(const nlohmann::json& j);
 std::string geometry_image_report_to_text(const GeometryImageReport& report);
 
 }  // namespace gfield

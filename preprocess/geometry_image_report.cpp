@@ -66,6 +66,7 @@ nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
         {"holes_fair_failed", rep.holes_fair_failed},
         {"filled_faces", rep.filled_faces},
         {"filled_area", rep.filled_area},
+        {"area", rep.area},
         {"filled_area_percent", rep.area > 0.0 ? 100.0 * rep.filled_area / rep.area : 0.0}}},
       {"flipped_faces", r.flipped},
       {"degenerate_uv_faces", r.degenerate},
@@ -86,6 +87,113 @@ nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
         {"rasterize", r.seconds.rasterize},
         {"measure", r.seconds.measure},
         {"total", r.seconds.total}}}};
+}
+
+namespace {
+
+ErrorStats error_stats_from_json(const nlohmann::json& j) {
+  return {j.at("mean_percent").get<double>(), j.at("p98_percent").get<double>(),
+          j.at("p99_percent").get<double>(), j.at("max_percent").get<double>(),
+          j.at("samples").get<size_t>()};
+}
+
+ChartReport chart_from_json(const nlohmann::json& j) {
+  ChartReport c;
+  c.faces = j.at("faces").get<size_t>();
+  c.vertices = j.at("vertices").get<size_t>();
+  c.genus = j.at("genus").get<long>();
+  c.boundary_loops = j.at("boundary_loops").get<size_t>();
+  c.route = j.at("route").get<std::string>();
+  c.weights = j.at("weights").get<std::string>();
+  c.note = j.at("note").get<std::string>();
+  c.seam_edges = j.at("seam_edges").get<size_t>();
+  c.flipped = j.at("flipped_faces").get<size_t>();
+  c.degenerate = j.at("degenerate_faces").get<size_t>();
+  c.area = j.at("area").get<double>();
+  const nlohmann::json& rect = j.at("rect");
+  c.rect = {rect.at(0).get<int>(), rect.at(1).get<int>(), rect.at(2).get<int>()};
+  return c;
+}
+
+ProxyReport proxy_from_json(const nlohmann::json& j) {
+  ProxyReport p;
+  if (j.is_null())
+    return p;
+  p.used = j.at("used").get<bool>();
+  p.input_faces = j.at("input_faces").get<size_t>();
+  p.faces = j.at("faces").get<size_t>();
+  p.error_percent = j.at("error_percent").get<double>();
+  p.mean_percent = j.at("mesh_to_image_mean_percent").get<double>();
+  p.genus = j.at("genus").get<long>();
+  p.input_genus = j.at("mesh_genus").get<long>();
+  p.rejected = j.at("rejected").get<std::string>();
+  return p;
+}
+
+RepairReport repair_from_json(const nlohmann::json& j) {
+  RepairReport r;
+  r.welded_positions = j.at("welded_positions").get<size_t>();
+  r.unreferenced_positions = j.at("unreferenced_positions").get<size_t>();
+  r.degenerate_faces = j.at("degenerate_faces").get<size_t>();
+  r.duplicate_faces = j.at("duplicate_faces").get<size_t>();
+  r.split_vertices = j.at("split_vertices").get<size_t>();
+  r.reversed_components = j.at("reversed_components").get<size_t>();
+  r.holes_found = j.at("holes_found").get<size_t>();
+  r.holes_filled = j.at("holes_filled").get<size_t>();
+  r.holes_fair_failed = j.at("holes_fair_failed").get<size_t>();
+  r.filled_faces = j.at("filled_faces").get<size_t>();
+  r.filled_area = j.at("filled_area").get<double>();
+  r.area = j.at("area").get<double>();
+  return r;
+}
+
+StageTimes stage_times_from_json(const nlohmann::json& j) {
+  StageTimes t;
+  t.proxy = j.at("proxy").get<double>();
+  t.repair = j.at("repair").get<double>();
+  t.parameterize = j.at("parameterize").get<double>();
+  t.pack = j.at("pack").get<double>();
+  t.rasterize = j.at("rasterize").get<double>();
+  t.measure = j.at("measure").get<double>();
+  t.total = j.at("total").get<double>();
+  return t;
+}
+
+}  // namespace
+
+GeometryImageReport geometry_image_report_from_json(const nlohmann::json& j) {
+  GeometryImageReport r;
+  if (const nlohmann::json& automatic = j.at("automatic_size"); !automatic.is_null()) {
+    r.max_mean_error = automatic.at("max_mean_error_percent").get<double>();
+    for (const nlohmann::json& t : automatic.at("trials"))
+      r.size_trials.push_back(
+          {t.at("size").get<int>(), t.at("mesh_to_image_mean_percent").get<double>()});
+  }
+  r.route = j.at("route").get<std::string>();
+  r.proxy = proxy_from_json(j.at("proxy"));
+  r.components = j.at("components").get<size_t>();
+  r.dropped_components = j.at("dropped_components").get<size_t>();
+  r.dropped_faces = j.at("dropped_faces").get<size_t>();
+  for (const nlohmann::json& c : j.at("charts"))
+    r.charts.push_back(chart_from_json(c));
+  r.repair = repair_from_json(j.at("repair"));
+  r.flipped = j.at("flipped_faces").get<size_t>();
+  r.degenerate = j.at("degenerate_uv_faces").get<size_t>();
+  r.coverage = j.at("coverage").get<double>();
+  r.albedo = j.at("albedo").get<std::string>();
+  r.conformal_mean = j.at("conformal_distortion").at("mean").get<double>();
+  r.conformal_p95 = j.at("conformal_distortion").at("p95").get<double>();
+  const nlohmann::json& area = j.at("area_distortion");
+  r.area_p5 = area.at("p5").get<double>();
+  r.area_p50 = area.at("p50").get<double>();
+  r.area_p95 = area.at("p95").get<double>();
+  const nlohmann::json& error = j.at("reconstruction_error");
+  r.mesh_to_image = error_stats_from_json(error.at("mesh_to_image"));
+  r.image_to_mesh = error_stats_from_json(error.at("image_to_mesh"));
+  r.diagonal = error.at("diagonal").get<double>();
+  r.ray_offset = j.at("ray_offset").get<double>();
+  r.seconds = stage_times_from_json(j.at("seconds"));
+  return r;
 }
 
 std::string geometry_image_report_to_text(const GeometryImageReport& r) {

@@ -3,12 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <numeric>
-#include <sstream>
 #include <unordered_map>
 
 #include "geometry/edge_key.hpp"
@@ -312,114 +309,6 @@ TopologyReport analyze_topology(const TriangleMesh& mesh) {
   count_boundary_loops(boundary, fans, components);
   finish_components(std::move(components.list), r);
   return r;
-}
-
-namespace {
-
-nlohmann::json vec_json(const glm::dvec3& v) {
-  return {v.x, v.y, v.z};
-}
-
-std::string describe_surface(const ComponentTopology& c) {
-  if (c.non_manifold_edges > 0) {
-    return "non-manifold (" + std::to_string(c.non_manifold_edges) +
-           " edges with more than 2 faces)";
-  }
-  if (!c.oriented) {
-    return "manifold, not consistently oriented";
-  }
-  std::string s = c.boundary_loops == 0 ? "closed" : "open";
-  s += ", genus " + std::to_string(c.genus);
-  if (c.boundary_loops > 0) {
-    s += ", " + std::to_string(c.boundary_loops) + " boundary loop" +
-         (c.boundary_loops == 1 ? "" : "s");
-  }
-  if (c.genus == 0 && c.boundary_loops == 0) {
-    s += " (sphere)";
-  } else if (c.genus == 0 && c.boundary_loops == 1) {
-    s += " (disk)";
-  }
-  if (c.non_manifold_vertices > 0) {
-    s += ", " + std::to_string(c.non_manifold_vertices) + " pinched vertices (split)";
-  }
-  return s;
-}
-
-}  // namespace
-
-nlohmann::json topology_to_json(const TopologyReport& r) {
-  nlohmann::json j;
-  j["vertices"] = r.vertices;
-  j["unreferenced_vertices"] = r.unreferenced_vertices;
-  j["duplicate_positions"] = r.duplicate_positions;
-  j["faces"] = r.faces;
-  j["edges"] = r.edges;
-  j["degenerate_faces"] = r.degenerate_faces;
-  j["boundary_edges"] = r.boundary_edges;
-  j["boundary_loops"] = r.boundary_loops;
-  j["non_manifold_edges"] = r.non_manifold_edges;
-  j["non_manifold_vertices"] = r.non_manifold_vertices;
-  j["euler_characteristic"] = r.euler_characteristic;
-  j["closed"] = r.closed();
-  j["manifold"] = r.manifold();
-  j["area"] = r.area;
-  j["bounds"] = {{"min", vec_json(r.bounds_min)}, {"max", vec_json(r.bounds_max)}};
-  j["components"] = nlohmann::json::array();
-  for (const ComponentTopology& c : r.components) {
-    j["components"].push_back(
-        {{"vertices", c.vertices},
-         {"edges", c.edges},
-         {"faces", c.faces},
-         {"boundary_edges", c.boundary_edges},
-         {"boundary_loops", c.boundary_loops},
-         {"non_manifold_edges", c.non_manifold_edges},
-         {"non_manifold_vertices", c.non_manifold_vertices},
-         {"oriented", c.oriented},
-         {"euler_characteristic", c.euler_characteristic},
-         {"genus", c.genus},
-         {"surface", describe_surface(c)},
-         {"area", c.area},
-         {"bounds", {{"min", vec_json(c.bounds_min)}, {"max", vec_json(c.bounds_max)}}}});
-  }
-  return j;
-}
-
-std::string topology_to_text(const TopologyReport& r) {
-  std::ostringstream s;
-  char line[256];
-  s << "vertices           " << r.vertices;
-  if (r.unreferenced_vertices > 0) {
-    s << " (" << r.unreferenced_vertices << " unreferenced)";
-  }
-  if (r.duplicate_positions > 0) {
-    s << " (" << r.duplicate_positions << " at the position of another vertex)";
-  }
-  s << "\nfaces              " << r.faces << " triangles";
-  if (r.degenerate_faces > 0) {
-    s << " (" << r.degenerate_faces << " degenerate)";
-  }
-  s << "\nedges              " << r.edges;
-  s << "\nboundary           " << r.boundary_edges << " edges in " << r.boundary_loops << " loops";
-  s << "\nnon-manifold       " << r.non_manifold_edges << " edges, " << r.non_manifold_vertices
-    << " vertices";
-  s << "\neuler              " << r.euler_characteristic;
-  std::snprintf(line, sizeof line, "\nbounding box       (%.6g, %.6g, %.6g) - (%.6g, %.6g, %.6g)",
-                r.bounds_min.x, r.bounds_min.y, r.bounds_min.z, r.bounds_max.x, r.bounds_max.y,
-                r.bounds_max.z);
-  s << line;
-  const glm::dvec3 size = r.bounds_max - r.bounds_min;
-  std::snprintf(line, sizeof line, "\nsize               %.6g x %.6g x %.6g, diagonal %.6g", size.x,
-                size.y, size.z, glm::length(size));
-  s << line;
-  s << "\ncomponents         " << r.components.size();
-  for (size_t i = 0; i < r.components.size(); ++i) {
-    const ComponentTopology& c = r.components[i];
-    std::snprintf(line, sizeof line, "\n  #%-3zu %7zu faces %7zu vertices  chi %-4ld  ", i, c.faces,
-                  c.vertices, c.euler_characteristic);
-    s << line << describe_surface(c);
-  }
-  s << '\n';
-  return s.str();
 }
 
 }  // namespace gfield

@@ -57,6 +57,9 @@ TopologyReport analyze_topology(const TriangleMesh& mesh);
 
 /// The report as JSON (the `gfield info --json` schema, see docs/cli.md).
 nlohmann::json topology_to_json(const TopologyReport& report);
+/// The inverse of topology_to_json. Throws nlohmann::json::exception where `j` is not of that
+/// shape.
+TopologyReport topology_from_json(const nlohmann::json& j);
 
 /// The report as readable text, one fact per line.
 std::string topology_to_text(const TopologyReport& report);

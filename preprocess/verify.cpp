@@ -5,9 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <random>
-
-#include <nlohmann/json.hpp>
 
 #include "geometry/outward_normals.hpp"
 #include "geometry/parameterized_mesh.hpp"
@@ -18,6 +17,7 @@
 #include "gfield/gpu_storage.hpp"
 #include "gfield/printable.hpp"
 #include "gfield/stopwatch.hpp"
+#include "preprocess/asset_report.hpp"
 #include "preprocess/portable_random.hpp"
 
 namespace gfield {
@@ -230,19 +230,16 @@ AccuracyStats verify_lookup(const FieldLookup& lookup, const EmbreeMesh& embree,
 
 namespace {
 
-/// The original mesh file of asset NAME: the option, the report's "source_path", or the image's
+/// The original mesh file of asset NAME: the option, the report's source path, or the image's
 /// source as a path (as given, or beside the asset). Empty when none exists.
-MeshSource find_original(const std::string& name, const nlohmann::json& report,
+MeshSource find_original(const std::string& name, const std::optional<AssetReport>& report,
                          const VerifyOptions& options, const std::string& source) {
   namespace fs = std::filesystem;
   if (!options.original.empty()) {
     return {options.original, options.original_part, options.original_outside_paths};
   }
-  if (report.contains("source_path") && report["source_path"].is_string() &&
-      fs::exists(report["source_path"].get<std::string>())) {
-    const bool part = report.contains("mesh_part") && report["mesh_part"].is_string();
-    return {report["source_path"].get<std::string>(),
-            part ? report["mesh_part"].get<std::string>() : "", options.original_outside_paths};
+  if (report && fs::exists(report->source_path)) {
+    return {report->source_path, report->mesh_part, options.original_outside_paths};
   }
   if (!source.empty()) {
     if (fs::exists(source)) {
@@ -256,19 +253,13 @@ MeshSource find_original(const std::string& name, const nlohmann::json& report,
   return {};
 }
 
-/// The report beside the asset as JSON: an empty object where there is none. False with an
-/// error when one is there but cannot be read.
-bool read_asset_report(const std::string& report_path, nlohmann::json& report, std::string& error) {
-  report = nlohmann::json::object();
-  return file_problem(report_path) == "no such file" || read_report(report_path, report, error);
-}
-
-/// Whether `report` says its image was built through a proxy (geometry_image.proxy.used).
-bool report_says_proxy(const nlohmann::json& report) {
-  return report.contains("geometry_image") && report["geometry_image"].is_object() &&
-         report["geometry_image"].contains("proxy") &&
-         report["geometry_image"]["proxy"].is_object() &&
-         report["geometry_image"]["proxy"].value("used", false);
+/// The report beside the asset: none where there is none. False with an error when one is
+/// there but cannot be read.
+bool read_report_beside(const std::string& report_path, std::optional<AssetReport>& report,
+                        std::string& error) {
+  report.reset();
+  return file_problem(report_path) == "no such file" ||
+         read_asset_report(report_path, report.emplace(), error);
 }
 
 /// The report beside the asset, where there is one, must be of the image's build.
@@ -390,16 +381,15 @@ double near_hit_share(const Exact& exact, const Box& box, const Family& family) 
   return near.empty() ? 0.0 : double(count) / double(near.size());
 }
 
-/// The report of one reference mesh: the table and every run against its exact casts.
-nlohmann::json reference_report(const Reference& reference, const EmbreeMesh& embree,
-                                const GeometryField& field, const GeometryImage& image,
-                                const std::vector<Family>& families, const std::vector<Run>& runs,
-                                const VerifyOptions& options) {
-  nlohmann::json r;
-  r["mesh"] = reference.label;
-  r["path"] = printable(reference.path);
-  r["table"] = accuracy_to_json(
-      verify_table(field, image, embree, reference.mesh, options.rays, options.seed + 2));
+/// The accuracy against one reference mesh: the table and every run against its exact casts.
+ReferenceAccuracy reference_accuracy(const Reference& reference, const EmbreeMesh& embree,
+                                     const GeometryField& field, const GeometryImage& image,
+                                     const std::vector<Family>& families,
+                                     const std::vector<Run>& runs, const VerifyOptions& options) {
+  ReferenceAccuracy r;
+  r.mesh = reference.label;
+  r.path = printable(reference.path);
+  r.table = verify_table(field, image, embree, reference.mesh, options.rays, options.seed + 2);
   const Exact exact(embree, reference.mesh);
   for (const Family& family : families) {
     if (!family.reference.empty() && reference.label != family.reference) {
@@ -408,7 +398,7 @@ nlohmann::json reference_report(const Reference& reference, const EmbreeMesh& em
     const std::vector<Answer> first =
         exact_answers(exact, field.box, family.rays, false, family.ignored);
     if (!family.ignored.empty()) {
-      r["near_hits"][family.name] = near_hit_share(exact, field.box, family);
+      r.near_hits[family.name] = near_hit_share(exact, field.box, family);
     }
     std::vector<Answer> last;
     if (family.with_last) {
@@ -420,7 +410,7 @@ nlohmann::json reference_report(const Reference& reference, const EmbreeMesh& em
       }
       AccuracyStats s = compare(run.answers, run.last ? last : first, diagonal(field.box));
       s.seconds = run.seconds;
-      r[run.key][run.last ? run.mode + "_last" : run.mode] = accuracy_to_json(s);
+      r.families[run.key][run.last ? run.mode + "_last" : run.mode] = s;
     }
   }
   return r;
@@ -429,9 +419,9 @@ nlohmann::json reference_report(const Reference& reference, const EmbreeMesh& em
 /// A field that cannot see its mesh is an error, not 100% agreement: none of the table's exact
 /// casts hits the mesh (float casts cannot resolve it), or they do and none of its entries does.
 /// (The box bounds the mesh, so 100 random box rays always cross some of its surface.)
-bool check_field_sees_mesh(const nlohmann::json& table, const std::string& field_file,
+bool check_field_sees_mesh(const AccuracyStats& table, const std::string& field_file,
                            std::string& error) {
-  const size_t rays = table["rays"], exact = table["exact_hits"], answers = table["answer_hits"];
+  const size_t rays = table.rays, exact = table.exact_hits, answers = table.answer_hits;
   if (rays < 100 || (exact > 0 && answers > 0))
     return true;
   const std::string of_rays = std::to_string(rays) + " box rays";
@@ -446,7 +436,7 @@ bool check_field_sees_mesh(const nlohmann::json& table, const std::string& field
 
 }  // namespace
 
-bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,
+bool verify_asset(const std::string& name, const VerifyOptions& options, VerifyReport& report,
                   std::string& error) {
   // An asset republished while its files were read can give files of two builds, or a folder
   // removed under the reader: then the read is taken again, of the build published now.
@@ -460,7 +450,7 @@ bool verify_asset(const std::string& name, const VerifyOptions& options, nlohman
 }
 
 bool verify_asset_files(const AssetFiles& read, const std::string& name,
-                        const VerifyOptions& options, nlohmann::json& report, std::string& error) {
+                        const VerifyOptions& options, VerifyReport& report, std::string& error) {
   const AssetFiles shown = asset_files(name);
   GeometryField field;
   GeometryImage image;
@@ -475,8 +465,8 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
   }
   std::vector<Reference> references;
   references.push_back({"built", shown.parameterized_mesh, pm.mesh});
-  nlohmann::json asset_report;
-  if (!read_asset_report(read.report, asset_report, error)) {
+  std::optional<AssetReport> asset_report;
+  if (!read_report_beside(read.report, asset_report, error)) {
     return false;
   }
   const MeshSource original = find_original(name, asset_report, options, image.source);
@@ -502,37 +492,34 @@ bool verify_asset_files(const AssetFiles& read, const std::string& name,
     return false;
   }
   // An image built through a proxy describes the original: its rays leave the original's surface.
-  const bool proxy = options.proxy || report_says_proxy(asset_report);
+  const bool proxy = options.proxy || (asset_report && asset_report->geometry_image.proxy.used);
   const bool from_original = proxy && references.size() > 1;
   const std::vector<Family> families = make_families(
       field, image, from_original ? original_embree : built,
       from_original ? references[1].mesh : pm.mesh, from_original ? "original" : "built", options);
   const std::vector<Run> runs = lookup_runs(lookup, families);
 
-  report = nlohmann::json::object();
-  report["name"] = printable(name);
-  report["field"] = printable(shown.field);
-  report["samples_per_side"] = field.samples_per_side;
-  report["layers"] = field.layers;
-  report["field_bits"] = options.field_bits;
-  report["image_size"] = image.size;
-  report["ray_offset"] = image.ray_offset;
-  report["source"] = printable(image.source);
-  report["rays_per_family"] = options.rays;
-  report["seed"] = options.seed;
-  report["proxy"] = proxy;
-  report["references"] = nlohmann::json::array();
+  report = VerifyReport{};
+  report.name = printable(name);
+  report.field = printable(shown.field);
+  report.samples_per_side = field.samples_per_side;
+  report.layers = field.layers;
+  report.field_bits = options.field_bits;
+  report.image_size = image.size;
+  report.ray_offset = image.ray_offset;
+  report.source = printable(image.source);
+  report.rays_per_family = options.rays;
+  report.seed = options.seed;
+  report.proxy = proxy;
   for (const Reference& reference : references) {
-    report["references"].push_back(
-        reference_report(reference, reference.label == "built" ? built : original_embree, field,
-                         image, families, runs, options));
+    report.references.push_back(
+        reference_accuracy(reference, reference.label == "built" ? built : original_embree, field,
+                           image, families, runs, options));
   }
   if (original.file.empty()) {
-    report["original_note"] = "original mesh file not found (use --original)";
+    report.original_note = "original mesh file not found (use --original)";
   }
-  if (!check_field_sees_mesh(report["references"][0]["table"], shown.field, error))
-    return false;
-  return true;
+  return check_field_sees_mesh(report.references[0].table, shown.field, error);
 }
 
 }  // namespace gfield

@@ -6,41 +6,14 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
-
 #include "gfield/confined_path.hpp"
 #include "gfield/field_lookup.hpp"
 #include "preprocess/asset_files.hpp"
 #include "preprocess/embree_mesh.hpp"
 #include "preprocess/verify_rays.hpp"
+#include "preprocess/verify_report.hpp"
 
 namespace gfield {
-
-/// Agreement of some answers with exact casts. Position errors are in % of the box diagonal and
-/// normal errors in degrees, over the rays that both the answer and the exact cast call a hit.
-/// The exact normal is the mesh's smooth normal (area-weighted vertex normals interpolated with
-/// the hit's barycentrics), the field the geometry image samples.
-struct AccuracyStats {
-  size_t rays = 0;
-  size_t agree = 0;        ///< same hit/miss verdict
-  size_t exact_hits = 0;   ///< hits of the exact cast
-  size_t answer_hits = 0;  ///< hits of the answer under test
-  size_t both_hit = 0;
-  double position_median = 0.0;
-  double position_p95 = 0.0;
-  double position_p99 = 0.0;
-  double normal_median = 0.0;  ///< angle between the answer's normal and the exact face normal
-  double normal_p95 = 0.0;
-  double seconds = 0.0;  ///< time of the answers under test (lookups), not of the exact casts
-
-  double hit_agreement() const { return rays == 0 ? 0.0 : double(agree) / double(rays); }
-};
-
-/// The 95% confidence interval of a share of `agree` in `rays` (Wilson score interval): where
-/// the hit/miss agreement of every ray of the family lies, given the rays sampled.
-glm::dvec2 agreement_interval(size_t agree, size_t rays);
-
-nlohmann::json accuracy_to_json(const AccuracyStats& stats);
 
 /// The table itself (`embree` holds `mesh`): `pairs` random sample pairs on different faces; the
 /// exact cast from entry to exit sample vs the stored uv (its position read from the geometry
@@ -82,17 +55,10 @@ struct VerifyOptions {
 /// where the image was built through a proxy, VerifyOptions::proxy). The report: see
 /// docs/geometry-field.md. False with an error "FILE: problem", also when the files (and
 /// NAME.report.json, where present) are of different builds (gfield/build_id.hpp).
-bool verify_asset(const std::string& name, const VerifyOptions& options, nlohmann::json& report,
+bool verify_asset(const std::string& name, const VerifyOptions& options, VerifyReport& report,
                   std::string& error);
 /// The same for the files `read` (a build's staged files), reported as asset NAME's.
 bool verify_asset_files(const AssetFiles& read, const std::string& name,
-                        const VerifyOptions& options, nlohmann::json& report, std::string& error);
-
-/// The reference of a verify report that the asset describes: the original where the image was
-/// built through a proxy (and the original was found), else the built mesh.
-const nlohmann::json& described_reference(const nlohmann::json& report);
-
-/// The report as readable text (one table per reference mesh).
-std::string verify_report_to_text(const nlohmann::json& report);
+                        const VerifyOptions& options, VerifyReport& report, std::string& error);
 
 }  // namespace gfield

@@ -21,6 +21,25 @@ std::string short_hash(const std::string& hex) {
 
 }  // namespace
 
+bool built_mesh_from_report(const nlohmann::json& report, BuiltMesh& mesh) {
+  if (!report.is_object())
+    return false;
+  const auto inputs = report.find("inputs");
+  if (inputs == report.end() || !inputs->is_object())
+    return false;
+  const auto record = inputs->find("mesh");
+  if (record == inputs->end() || !record->is_object())
+    return false;
+  const auto bytes = record->find("bytes"), sha256 = record->find("sha256");
+  if (bytes == record->end() || !bytes->is_number_unsigned() || sha256 == record->end() ||
+      !sha256->is_string())
+    return false;
+  mesh.bytes = bytes->get<std::uint64_t>();
+  mesh.sha256 = sha256->get<std::string>();
+  mesh.file = record->value("file", std::string("?"));
+  return true;
+}
+
 std::string asset_report_path(const std::string& geometry_image) {
   const std::string suffix = ".gimage.exr";
   if (geometry_image.size() <= suffix.size() ||
@@ -37,19 +56,11 @@ bool check_asset_source(const std::string& report_file, const std::string& mesh_
   std::string text;
   if (!read_file(report_file, kMaxReportBytes, text, error))
     return false;
-  const nlohmann::json report = nlohmann::json::parse(text, nullptr, false);
-  const nlohmann::json* mesh = nullptr;
-  if (report.is_object() && report.contains("inputs") && report["inputs"].is_object() &&
-      report["inputs"].contains("mesh") && report["inputs"]["mesh"].is_object())
-    mesh = &report["inputs"]["mesh"];
-  if (mesh == nullptr || !mesh->contains("bytes") || !(*mesh)["bytes"].is_number_unsigned() ||
-      !mesh->contains("sha256") || !(*mesh)["sha256"].is_string()) {
+  BuiltMesh built;
+  if (!built_mesh_from_report(nlohmann::json::parse(text, nullptr, false), built)) {
     error = report_file + ": no record of the mesh it was built from (inputs.mesh); rebuild it";
     return false;
   }
-  const std::uint64_t built_bytes = (*mesh)["bytes"].get<std::uint64_t>();
-  const std::string built_hash = (*mesh)["sha256"].get<std::string>();
-  const std::string built_file = mesh->value("file", std::string("?"));
   if (const std::string problem = file_problem(mesh_file); !problem.empty()) {
     error = mesh_file + ": " + problem;
     return false;
@@ -57,20 +68,20 @@ bool check_asset_source(const std::string& report_file, const std::string& mesh_
   std::error_code ec;
   const std::uint64_t bytes = std::filesystem::file_size(mesh_file, ec);
   std::string hash;
-  if (ec || bytes == built_bytes) {
+  if (ec || bytes == built.bytes) {
     if (!sha256_file(mesh_file, hash, error))
       return false;
   }
   checked = true;
-  if (!ec && bytes == built_bytes && hash == built_hash)
+  if (!ec && bytes == built.bytes && hash == built.sha256)
     return true;
   const std::string now =
       hash.empty() ? std::to_string(bytes) + " bytes" : "sha256 " + short_hash(hash);
   const std::string then =
-      hash.empty() ? std::to_string(built_bytes) + " bytes" : "sha256 " + short_hash(built_hash);
+      hash.empty() ? std::to_string(built.bytes) + " bytes" : "sha256 " + short_hash(built.sha256);
   const size_t stem = report_file.size() - std::min(report_file.size(), kReportSuffix.size());
   const std::string name = report_file.substr(0, stem);
-  error = report_file + ": built from " + built_file + " (" + then + "), not from " + mesh_file +
+  error = report_file + ": built from " + built.file + " (" + then + "), not from " + mesh_file +
           " as it is now (" + now + "); rebuild it: gfield build " + mesh_file + " -o " + name;
   return false;
 }

@@ -5,11 +5,14 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <memory>
 #include <string>
 
+#include "gfield/gpu_storage.hpp"
 #include "preprocess/asset_arguments.hpp"
+#include "preprocess/asset_report.hpp"
 #include "preprocess/cli/path_options.hpp"
 #include "preprocess/verify.hpp"
 
@@ -90,55 +93,47 @@ inline void add_asset_options(CLI::App* cmd, const std::shared_ptr<AssetArgument
 
 /// "; proxy of 99865 faces" where the image was charted on a proxy (mesh_proxy.hpp), "; proxy
 /// of 99865 faces rejected" where one was tried and not kept, else "".
-inline std::string proxy_text(const nlohmann::json& image_report) {
-  if (!image_report.contains("proxy") || !image_report["proxy"].is_object())
+inline std::string proxy_text(const ProxyReport& proxy) {
+  if (proxy.faces == 0)
     return "";
-  const nlohmann::json& proxy = image_report["proxy"];
-  return "; proxy of " + std::to_string(proxy["faces"].get<size_t>()) +
-         (proxy.value("used", false) ? " faces" : " faces rejected");
+  return "; proxy of " + std::to_string(proxy.faces) + (proxy.used ? " faces" : " faces rejected");
 }
 
 /// "stages: mesh 0.02 s, image 1.87 s (+ write 0.25 s), field 0.81 s (+ write 0.35 s), verify
-/// 1.10 s": a build's stage times (report "stage_seconds"), one line.
-inline std::string stage_summary(const nlohmann::json& report) {
-  const nlohmann::json& s = report["stage_seconds"];
+/// 1.10 s": a build's stage times, one line.
+inline std::string stage_summary(const AssetReport& report) {
+  const AssetStageSeconds& s = report.stage_seconds;
   char line[256];
   std::snprintf(line, sizeof(line),
                 "stages: mesh %.2f s, image %.2f s (+ write %.2f s), field %.2f s (+ write %.2f "
                 "s), verify %.2f s",
-                s["mesh"].get<double>(), s["image"].get<double>(), s["image_write"].get<double>(),
-                s["field"].get<double>(), s["field_write"].get<double>(),
-                s["verify"].get<double>());
+                s.mesh, s.image, s.image_write, s.field, s.field_write, s.verify);
   return line;
 }
 
 /// One line: what an asset build produced and how accurate it is.
-inline std::string asset_summary(const nlohmann::json& report) {
+inline std::string asset_summary(const AssetReport& report) {
   char line[512];
-  const nlohmann::json& f = report["geometry_field"];
+  const FieldFileReport& f = report.geometry_field;
   std::snprintf(line, sizeof(line),
                 "image %d^2 (%s%s), field N = %d, format %d, K = %d (casts %.2f s, write %.2f s), "
                 "GPU %.1f MB (image) + %.1f MB (field at 8 bits)",
-                report["geometry_image"]["size"].get<int>(),
-                report["geometry_image"].value("route", std::string("?")).c_str(),
-                proxy_text(report["geometry_image"]).c_str(), f["samples_per_side"].get<int>(),
-                f.value("format_version", 2), f["layers"].get<int>(),
-                f["cast_seconds"].get<double>(), f["write_seconds"].get<double>(),
-                f["gpu_bytes"]["geometry_image"].get<double>() / 1e6,
-                f["gpu_bytes"]["geometry_field_8bit"].get<double>() / 1e6);
+                report.image_size, report.geometry_image.route.c_str(),
+                proxy_text(report.geometry_image.proxy).c_str(), f.samples_per_side, f.format,
+                f.layers, f.build.seconds, f.write_seconds,
+                double(geometry_image_gpu_bytes(report.image_size)) / 1e6,
+                double(f.gpu_bytes[0]) / 1e6);
   std::string text = line;
-  if (report.contains("accuracy")) {
-    const nlohmann::json& r = described_reference(report["accuracy"]);
-    const nlohmann::json& refined = r["box_rays"]["refined"];
-    const nlohmann::json& interval = refined["hit_agreement_ci95"];
+  if (report.accuracy) {
+    const ReferenceAccuracy& r = report.accuracy->described();
+    const AccuracyStats& refined = r.families.at("box_rays").at("refined");
+    const glm::dvec2 interval = agreement_interval(refined.agree, refined.rays);
     std::snprintf(line, sizeof(line),
                   ", table hit/miss %.3f%%, refined hit/miss %.3f%% (95%%: %.2f-%.2f%%) median "
                   "%.4f%% p95 %.4f%%",
-                  100.0 * r["table"]["hit_agreement"].get<double>(),
-                  100.0 * refined["hit_agreement"].get<double>(), 100.0 * interval[0].get<double>(),
-                  100.0 * interval[1].get<double>(),
-                  refined["position_error_percent_of_diagonal"]["median"].get<double>(),
-                  refined["position_error_percent_of_diagonal"]["p95"].get<double>());
+                  100.0 * r.table.hit_agreement(), 100.0 * refined.hit_agreement(),
+                  100.0 * interval.x, 100.0 * interval.y, refined.position_median,
+                  refined.position_p95);
     text += line;
   }
   return text;

@@ -43,11 +43,11 @@ void build_mesh_asset(const MeshAsset& mesh, const std::string& dir, const Asset
     std::printf("%s: up to date (build %s)\n", printable(name).c_str(), inputs.build_id.c_str());
     return;
   }
-  nlohmann::json report;
+  AssetReport report;
   if (!build_asset(mesh.file, name, options, inputs, report, error)) {
     throw CommandError(error);
   }
-  print_warnings(report["warnings"].get<std::vector<std::string>>());
+  print_warnings(report.warnings);
   std::printf("%s: built (%s)\n", printable(name).c_str(), asset_summary(report).c_str());
   std::fflush(stdout);
 }

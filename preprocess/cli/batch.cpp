@@ -69,7 +69,7 @@ nlohmann::json run_mesh(const BatchMesh& m, const AssetOptions& options, bool fo
                            {"pid", ::getpid()},
                            {"started", utc_timestamp(started)}};
   BuildInputs inputs;
-  nlohmann::json report;
+  AssetReport report;
   std::string error;
   std::string why;
   bool ok = false;

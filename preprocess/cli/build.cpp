@@ -42,7 +42,7 @@ void add_build_command(CLI::App& app) {
     const ThreadLimit limit(*threads);
     AssetOptions options = asset_options(*args);
     options.part = *part;
-    nlohmann::json report;
+    AssetReport report;
     size_t stale = 0;
     std::string error;
     const bool built = build_asset_at(*mesh, *name, options, report, stale, error);
@@ -55,16 +55,15 @@ void add_build_command(CLI::App& app) {
       throw CommandError(error);
     }
     if (*json) {
-      std::printf("%s\n", report.dump(2).c_str());
+      std::printf("%s\n", asset_report_to_json(report).dump(2).c_str());
       return;
     }
-    print_warnings(report["warnings"].get<std::vector<std::string>>());
+    print_warnings(report.warnings);
     std::printf(
         "%s: %s\n%s\nwrote %s.{gimage.exr,gimage.obj,gfield.exr,report.json} in %.2f s "
         "(build %s)\n",
         printable(*mesh).c_str(), asset_summary(report).c_str(), stage_summary(report).c_str(),
-        printable(*name).c_str(), report["seconds"].get<double>(),
-        report["build_id"].get<std::string>().c_str());
+        printable(*name).c_str(), report.seconds, report.build_id.c_str());
   });
 }
 

@@ -53,13 +53,13 @@ void add_verify_command(CLI::App& app) {
     options.original = args->original;
     options.field_bits = args->field_bits;
     options.original_outside_paths = outside_paths(args->allow_outside_paths);
-    nlohmann::json report;
+    VerifyReport report;
     std::string error;
     if (!verify_asset(args->name, options, report, error)) {
       throw CommandError(error);
     }
     if (args->json) {
-      std::printf("%s\n", report.dump(2).c_str());
+      std::printf("%s\n", verify_report_to_json(report).dump(2).c_str());
     } else {
       std::printf("%s", verify_report_to_text(report).c_str());
     }

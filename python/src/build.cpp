@@ -96,7 +96,7 @@ py::object build(const std::filesystem::path& mesh_path, const std::filesystem::
   }
   AssetOptions options = asset_options(args);
   options.part = part;
-  nlohmann::json report;
+  AssetReport report;
   std::string error;
   bool built = false;
   run_interruptible(
@@ -110,8 +110,8 @@ py::object build(const std::filesystem::path& mesh_path, const std::filesystem::
   if (!built) {
     throw Error(error);
   }
-  warn(report["warnings"].get<std::vector<std::string>>());
-  return json_to_python(report);
+  warn(report.warnings);
+  return json_to_python(asset_report_to_json(report));
 }
 
 }  // namespace

@@ -30,14 +30,14 @@ AssetOptions small_options(int samples) {
 
 /// Builds spot into kDir/spot with N = `samples`; returns the build id.
 std::string build_spot(int samples) {
-  nlohmann::json report;
+  AssetReport report;
   size_t stale = 0;
   std::string error;
   const std::string mesh = std::string(gfield::build_paths::mesh_dir()) + "/spot.obj";
   EXPECT_TRUE(
       build_asset_at(mesh, (kDir / "spot").string(), small_options(samples), report, stale, error))
       << error;
-  return report.value("build_id", std::string());
+  return report.build_id;
 }
 
 TEST(AssetRebuild, OneProcessBuildsTheSameAssetAgainAndAgain) {

@@ -41,6 +41,13 @@ xvfb_pid=$!
 for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
 [ -s "$work/display" ] || { cat "$work/xvfb.log" >&2; echo "Xvfb did not start" >&2; exit 1; }
 export DISPLAY=":$(cat "$work/display")"
+# The server accepts clients once a query answers (the number can come a moment before that).
+for _ in $(seq 100); do xdotool getdisplaygeometry > /dev/null 2>&1 && break; sleep 0.1; done
+xdotool getdisplaygeometry > /dev/null || {
+  cat "$work/xvfb.log" >&2
+  echo "Xvfb on $DISPLAY accepts no client" >&2
+  exit 1
+}
 
 mkdir "$work/shots"
 cp "$data/meshes/spot-painted.png" "$work/shots/gfield-view-7.png"  # screenshots come after it
@@ -51,7 +58,7 @@ window=""
 for _ in $(seq 300); do
   window=$(xdotool search --onlyvisible --name '^gfield-view' 2> /dev/null | head -n 1) &&
     [ -n "$window" ] && break
-  kill -0 "$viewer_pid" 2> /dev/null || { cat "$work/viewer.log" >&2; exit 1; }
+  kill -0 "$viewer_pid" 2> /dev/null || { cat "$work/viewer.log" "$work/xvfb.log" >&2; exit 1; }
   sleep 0.2
 done
 [ -n "$window" ] || { echo "no gfield-view window" >&2; exit 1; }

@@ -2,11 +2,25 @@
 // An asset bound to the mesh it was built from: its report's record of the mesh file (bytes and
 // SHA-256, docs/formats.md, "Report") against the mesh a scene or command names.
 
+#include <cstdint>
 #include <string>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "gfield/scene.hpp"
 
 namespace gfield {
+
+/// An asset report's record of the mesh file it was built from ("inputs"."mesh").
+struct BuiltMesh {
+  std::string file;         ///< its name when built
+  std::uint64_t bytes = 0;  ///< its size
+  std::string sha256;       ///< SHA-256 of its bytes, hex
+};
+
+/// The record of the mesh in `report` (an asset report's JSON). False where it holds none of
+/// that shape.
+bool built_mesh_from_report(const nlohmann::json& report, BuiltMesh& mesh);
 
 /// The report of the asset whose geometry image is `geometry_image` (NAME.gimage.exr ->
 /// NAME.report.json); "" when the name does not end in ".gimage.exr".
