@@ -16,14 +16,14 @@
 
 #include "gfield/content_hash.hpp"
 #include "test_support/build_paths.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("asset_source_" + std::to_string(getpid()));
+const fs::path kDir = test::process_folder("asset_source");
 
 class AssetSource : public ::testing::Test {
  protected:

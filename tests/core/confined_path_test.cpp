@@ -10,14 +10,14 @@
 
 #include "gfield/confined_path.hpp"
 #include "test_support/build_paths.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("confined_" + std::to_string(::getpid()));
+const fs::path kDir = test::process_folder("confined");
 
 /// resolve_named_path from `base` inside `root`, refused: its problem ("" when it was allowed).
 std::string refusal(const fs::path& base, const std::string& name, const fs::path& root) {

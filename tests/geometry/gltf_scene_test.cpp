@@ -17,6 +17,7 @@
 #include "geometry/scene_file.hpp"
 #include "gfield/scene.hpp"
 #include "test_support/build_paths.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
@@ -25,11 +26,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kDir = fs::path(gfield::build_paths::test_tmp()) / "gltf_scene";
-
-void write(const fs::path& file, const std::string& text) {
-  fs::create_directories(file.parent_path());
-  std::ofstream(file, std::ios::binary) << text;
-}
 
 /// scene.gltf: a tetrahedron (tet.bin) as three meshes (glass, mirror, diffuse) and these nodes:
 /// 0 parent (translation (1, 0, 0), 90 degrees about +Y) of 1 (the glass tetrahedron, translation
@@ -41,7 +37,7 @@ fs::path write_scene_gltf() {
   std::string bin(72, '\0');
   std::memcpy(bin.data(), positions, 48);
   std::memcpy(bin.data() + 48, indices, 24);
-  write(kDir / "tet.bin", bin);
+  test::write_file(kDir / "tet.bin", bin);
   const double s = std::sqrt(0.5);
   json d = json::parse(R"({
     "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 2, 3, 4, 5, 6]}],
@@ -84,7 +80,7 @@ fs::path write_scene_gltf() {
     "buffers": [{"uri": "tet.bin", "byteLength": 72}]})");
   d["nodes"][0]["rotation"] = {0.0, s, 0.0, s};  // 90 degrees about +Y (x, y, z, w)
   const fs::path file = kDir / "scene.gltf";
-  write(file, d.dump());
+  test::write_file(file, d.dump());
   return file;
 }
 
@@ -159,7 +155,7 @@ TEST(GltfScene, HierarchyCameraLightsAndMaterials) {
 TEST(GltfScene, JsonSceneIncludesAGltfFileAsOneObject) {
   const fs::path gltf = write_scene_gltf();
   const fs::path file = kDir / "include.json";
-  write(file, R"({"camera": {"position": [0, 0, 10], "target": [0, 0, 0]},
+  test::write_file(file, R"({"camera": {"position": [0, 0, 10], "target": [0, 0, 0]},
     "objects": [{"name": "ball", "shape": "sphere", "radius": 0.5,
                  "material": {"type": "diffuse"}},
                 {"name": "tets", "shape": "gltf", "file": "scene.gltf",
@@ -181,17 +177,17 @@ TEST(GltfScene, MeshTextureDefaultsOfJsonScenes) {
   const std::string mesh = std::string(gfield::build_paths::mesh_dir()) + "/spot-painted.obj";
   const std::string plain = std::string(gfield::build_paths::mesh_dir()) + "/torus.obj";
   const fs::path file = kDir / "defaults.json";
-  write(file, R"({"camera": {"position": [0, 0, 10], "target": [0, 0, 0]}, "objects": [
+  test::write_file(file, R"({"camera": {"position": [0, 0, 10], "target": [0, 0, 0]}, "objects": [
     {"shape": "mesh", "file": ")" +
-                  mesh + R"(", "material": {"type": "diffuse"}},
+                             mesh + R"(", "material": {"type": "diffuse"}},
     {"shape": "mesh", "file": ")" +
-                  mesh + R"(",
+                             mesh + R"(",
      "material": {"type": "diffuse", "color": [0.5, 0.25, 1]}},
     {"shape": "mesh", "file": ")" +
-                  mesh + R"(",
+                             mesh + R"(",
      "material": {"type": "diffuse", "texture": "none"}},
     {"shape": "mesh", "file": ")" +
-                  plain + R"(", "material": {"type": "diffuse"}}]})");
+                             plain + R"(", "material": {"type": "diffuse"}}]})");
   Scene scene;
   std::vector<std::string> warnings;
   std::string error;

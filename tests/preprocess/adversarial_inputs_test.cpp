@@ -20,6 +20,8 @@
 #include "geometry/scene_file.hpp"
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/refusal.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
@@ -27,25 +29,10 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using test::CliRun;
+using test::expect_refused;
 using test::run_cli;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("adversarial_" + std::to_string(::getpid()));
-
-void write(const fs::path& file, const std::string& text) {
-  fs::create_directories(file.parent_path());
-  std::ofstream(file, std::ios::binary) << text;
-}
-
-/// The contract for bad input: exit 2, one stderr line holding each of `parts` (the file, the
-/// place, the value), nothing on stdout.
-void expect_refused(const CliRun& run, std::initializer_list<std::string> parts) {
-  EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
-  for (const std::string& part : parts)
-    EXPECT_NE(run.err.find(part), std::string::npos) << "must name " << part << ":\n" << run.err;
-  EXPECT_TRUE(run.out.empty()) << run.out;
-}
+const fs::path kDir = test::process_folder("adversarial");
 
 /// A tetrahedron's buffer: 4 float positions in [0, 1]^3, then 12 uint16 indices (72 bytes).
 std::string tetrahedron_bin() {
@@ -86,9 +73,10 @@ class AdversarialInputs : public ::testing::Test {
 // camera frames the data (trusting them framed an empty floor).
 TEST_F(AdversarialInputs, LyingAccessorBoundsAreAWarningAndTheCameraFramesTheData) {
   const fs::path dir = kDir / "bounds";
-  write(dir / "tet.bin", tetrahedron_bin());
-  write(dir / "honest.gltf", tetrahedron_gltf("tet.bin").dump());
-  write(dir / "lying.gltf", tetrahedron_gltf("tet.bin", {100, 100, 100}, {101, 101, 101}).dump());
+  test::write_file(dir / "tet.bin", tetrahedron_bin());
+  test::write_file(dir / "honest.gltf", tetrahedron_gltf("tet.bin").dump());
+  test::write_file(dir / "lying.gltf",
+                   tetrahedron_gltf("tet.bin", {100, 100, 100}, {101, 101, 101}).dump());
   Scene scene;
   std::vector<std::string> warnings;
   std::string error;
@@ -151,12 +139,12 @@ TEST_F(AdversarialInputs, NodeForestCheckOfAMillionNodeChainIsLinear) {
 /// `gfield info` of the tetrahedron with `nodes` as its node list (node 0 holds the mesh).
 CliRun info_with_nodes(const std::string& name, const json& nodes) {
   const fs::path dir = kDir / "forest";
-  write(dir / "tet.bin", tetrahedron_bin());
+  test::write_file(dir / "tet.bin", tetrahedron_bin());
   json gltf = tetrahedron_gltf("tet.bin");
   gltf["nodes"] = nodes;
   gltf.erase("scenes");
   gltf.erase("scene");
-  write(dir / name, gltf.dump());
+  test::write_file(dir / name, gltf.dump());
   return run_cli("info " + (dir / name).string());
 }
 
@@ -185,8 +173,8 @@ TEST_F(AdversarialInputs, NodeHierarchyFaultsAreNamedForWhatTheyAre) {
 /// DIR/inner/link.bin, a symlink to it), with `options`.
 CliRun info_of_buffer_uri(const std::string& uri, const std::string& options = "") {
   const fs::path dir = kDir / "gltf-uris";
-  write(dir / "outside.bin", tetrahedron_bin());
-  write(dir / "inner/tet.gltf", tetrahedron_gltf(uri).dump());
+  test::write_file(dir / "outside.bin", tetrahedron_bin());
+  test::write_file(dir / "inner/tet.gltf", tetrahedron_gltf(uri).dump());
   std::error_code ec;
   fs::create_symlink("../outside.bin", dir / "inner/link.bin", ec);
   return run_cli("info " + (dir / "inner/tet.gltf").string() + " " + options);
@@ -212,10 +200,10 @@ TEST_F(AdversarialInputs, GltfUrisStayInTheGltfFilesFolder) {
   expect_refused(info_of_buffer_uri("../inner/link.bin"), {file, "/buffers/0/uri", "leaves"});
   // Image URIs too, checked before any file is touched.
   const fs::path dir = kDir / "gltf-uris";
-  write(dir / "inner/inside.bin", tetrahedron_bin());
+  test::write_file(dir / "inner/inside.bin", tetrahedron_bin());
   json gltf = tetrahedron_gltf("inside.bin");
   gltf["images"] = json::array({json::object({{"uri", "../texture.png"}})});
-  write(dir / "inner/image.gltf", gltf.dump());
+  test::write_file(dir / "inner/image.gltf", gltf.dump());
   expect_refused(
       run_cli("info " + (dir / "inner/image.gltf").string()),
       {(dir / "inner/image.gltf").string() + ":", "/images/0/uri", "\"../texture.png\" leaves"});
@@ -223,17 +211,17 @@ TEST_F(AdversarialInputs, GltfUrisStayInTheGltfFilesFolder) {
 
 TEST_F(AdversarialInputs, GltfMaterialCountAndIndicesAreCheckedAsOtherFormatsAre) {
   const fs::path dir = kDir / "gltf-limits";
-  write(dir / "tet.bin", tetrahedron_bin());
+  test::write_file(dir / "tet.bin", tetrahedron_bin());
   json gltf = tetrahedron_gltf("tet.bin");
   gltf["materials"] = json::array();
   for (int m = 0; m < 65537; ++m)
     gltf["materials"].push_back(json::object());
-  write(dir / "many.gltf", gltf.dump());
+  test::write_file(dir / "many.gltf", gltf.dump());
   expect_refused(run_cli("info " + (dir / "many.gltf").string()),
                  {"many.gltf", "/materials", "65537 materials, more than the limit of 65536"});
   gltf = tetrahedron_gltf("tet.bin");
   gltf["meshes"][0]["primitives"][0]["indices"] = 1.0;
-  write(dir / "float.gltf", gltf.dump());
+  test::write_file(dir / "float.gltf", gltf.dump());
   expect_refused(run_cli("info " + (dir / "float.gltf").string()),
                  {"float.gltf", "/meshes/0/primitives/0/indices",
                   "1.0 is not an index (an integer from 0) of the accessors"});
@@ -241,12 +229,12 @@ TEST_F(AdversarialInputs, GltfMaterialCountAndIndicesAreCheckedAsOtherFormatsAre
 
 TEST_F(AdversarialInputs, GltfNodesThatMirrorOrFlattenAreRefusedByEveryCommand) {
   const fs::path dir = kDir / "gltf-scales";
-  write(dir / "tet.bin", tetrahedron_bin());
+  test::write_file(dir / "tet.bin", tetrahedron_bin());
   for (const char* scale : {"[1, 1, -1]", "[0, 1, 1]"}) {
     SCOPED_TRACE(scale);
     json gltf = tetrahedron_gltf("tet.bin");
     gltf["nodes"][0]["scale"] = json::parse(scale);
-    write(dir / "tet.gltf", gltf.dump());
+    test::write_file(dir / "tet.gltf", gltf.dump());
     const std::string file = (dir / "tet.gltf").string();
     for (const std::string& command :
          {"info " + file, "build " + file + " -o " + (dir / "out").string() + " --size 16"})
@@ -258,8 +246,8 @@ TEST_F(AdversarialInputs, GltfNodesThatMirrorOrFlattenAreRefusedByEveryCommand) 
 // A glTF file named without a folder is confined to the working folder like any other.
 TEST_F(AdversarialInputs, ABareGltfFileNameStaysInTheWorkingFolder) {
   const fs::path dir = kDir / "bare/inner";
-  write(dir / "tet.gltf", tetrahedron_gltf("../../outside.bin").dump());
-  write(kDir / "outside.bin", tetrahedron_bin());
+  test::write_file(dir / "tet.gltf", tetrahedron_gltf("../../outside.bin").dump());
+  test::write_file(kDir / "outside.bin", tetrahedron_bin());
   const CliRun run = test::run_program(
       "cd " + dir.string() + " && " + std::string(gfield::build_paths::cli()), "info tet.gltf");
   expect_refused(run, {"tet.gltf:", "/buffers/0/uri", "\"../../outside.bin\" leaves"});
@@ -268,15 +256,15 @@ TEST_F(AdversarialInputs, ABareGltfFileNameStaysInTheWorkingFolder) {
 /// A scene in DIR/project/scenes naming `file` for its mesh, rendered with `options`.
 CliRun render_scene_naming(const std::string& file, const std::string& options = "") {
   const fs::path project = kDir / "scene-root/project";
-  write(project / "meshes/tet.obj",
-        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\n"
-        "f 1 4 3\nf 2 3 4\n");
+  test::write_file(project / "meshes/tet.obj",
+                   "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\n"
+                   "f 1 4 3\nf 2 3 4\n");
   std::error_code ec;
   fs::create_symlink("../meshes/tet.obj", project / "scenes/link.obj", ec);
-  write(project / "scenes/s.json",
-        R"({"camera": {"position": [0, 0, 4], "target": [0, 0, 0]}, "objects": [
+  test::write_file(project / "scenes/s.json",
+                   R"({"camera": {"position": [0, 0, 4], "target": [0, 0, 0]}, "objects": [
         {"shape": "mesh", "file": ")" +
-            file + R"(", "material": {"type": "mirror"}}]})");
+                       file + R"(", "material": {"type": "mirror"}}]})");
   return run_cli("render " + (project / "scenes/s.json").string() + " --size 8x8 -q -o " +
                  (kDir / "scene-root/out.png").string() + " " + options);
 }
@@ -296,14 +284,15 @@ TEST_F(AdversarialInputs, SceneFilesStayInTheScenesRoot) {
   // A path leaving the scene's folder is answered with the marker that would admit it.
   expect_refused(render_scene_naming("../meshes/tet.obj"),
                  {scene, "leaves", "a .gfield-root file in a folder above both"});
-  write(project / ".gfield-root", "");
+  test::write_file(project / ".gfield-root", "");
   EXPECT_EQ(render_scene_naming("../meshes/tet.obj").exit_code, 0);
   EXPECT_EQ(render_scene_naming("link.obj").exit_code, 0);
   expect_refused(render_scene_naming("../../outside.obj"), {scene, "objects[0].file", "leaves"});
   expect_refused(render_scene_naming((project / "meshes/tet.obj").string()),
                  {scene, "is an absolute path"});
   // An environment image is a file the scene names too.
-  write(project / "scenes/env.json", R"({"camera": {"position": [0, 0, 4], "target": [0, 0, 0]},
+  test::write_file(project / "scenes/env.json",
+                   R"({"camera": {"position": [0, 0, 4], "target": [0, 0, 0]},
     "environment": {"type": "equirect", "file": "../../env.png"}})");
   expect_refused(run_cli("render " + (project / "scenes/env.json").string() + " --size 8x8 -q -o " +
                          (kDir / "scene-root/env.png").string()),
@@ -316,12 +305,12 @@ TEST_F(AdversarialInputs, MaterialLibrariesAndMapsStayInTheMeshFolder) {
   const std::string tet =
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl coat\nf 1 3 2\nf 1 2 4\n"
       "f 1 4 3\nf 2 3 4\n";
-  write(dir / "../outside.mtl", "newmtl coat\nKd 1 0 0\n");
-  write(dir / "library.obj", "mtllib ../outside.mtl\n" + tet);
+  test::write_file(dir / "../outside.mtl", "newmtl coat\nKd 1 0 0\n");
+  test::write_file(dir / "library.obj", "mtllib ../outside.mtl\n" + tet);
   expect_refused(run_cli("info " + (dir / "library.obj").string()),
                  {(dir / "library.obj").string() + ":", "mtllib", "\"../outside.mtl\" leaves"});
-  write(dir / "inside.mtl", "newmtl coat\nmap_Kd ../../../../etc/passwd\n");
-  write(dir / "map.obj", "mtllib inside.mtl\n" + tet);
+  test::write_file(dir / "inside.mtl", "newmtl coat\nmap_Kd ../../../../etc/passwd\n");
+  test::write_file(dir / "map.obj", "mtllib inside.mtl\n" + tet);
   expect_refused(run_cli("info " + (dir / "map.obj").string()),
                  {(dir / "map.obj").string() + ":", "inside.mtl:2", "map_Kd"});
   EXPECT_EQ(run_cli("info " + (dir / "library.obj").string() + " --allow-outside-paths").exit_code,
@@ -344,19 +333,19 @@ std::string png_claiming(std::uint32_t side, size_t bytes) {
 // before it starts.
 TEST_F(AdversarialInputs, InfoReadsTextureHeadersAndDecodingChecksTheBudget) {
   const fs::path dir = kDir / "budget";
-  write(dir / "big.png", png_claiming(16000, 40000));
-  write(dir / "tet.mtl", "newmtl coat\nmap_Kd big.png\n");
-  write(dir / "tet.obj",
-        "mtllib tet.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nusemtl coat\n"
-        "f 1/1 3/1 2/1\nf 1/1 2/1 4/1\nf 1/1 4/1 3/1\nf 2/1 3/1 4/1\n");
-  write(dir / "tet.bin", tetrahedron_bin());
+  test::write_file(dir / "big.png", png_claiming(16000, 40000));
+  test::write_file(dir / "tet.mtl", "newmtl coat\nmap_Kd big.png\n");
+  test::write_file(dir / "tet.obj",
+                   "mtllib tet.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nusemtl coat\n"
+                   "f 1/1 3/1 2/1\nf 1/1 2/1 4/1\nf 1/1 4/1 3/1\nf 2/1 3/1 4/1\n");
+  test::write_file(dir / "tet.bin", tetrahedron_bin());
   json gltf = tetrahedron_gltf("tet.bin");
   gltf["images"] = json::parse(R"([{"uri": "big.png"}])");
   gltf["textures"] = json::parse(R"([{"source": 0}])");
   gltf["materials"] =
       json::parse(R"([{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])");
   gltf["meshes"][0]["primitives"][0]["material"] = 0;
-  write(dir / "tet.gltf", gltf.dump());
+  test::write_file(dir / "tet.gltf", gltf.dump());
   for (const char* mesh : {"tet.obj", "tet.gltf"}) {
     SCOPED_TRACE(mesh);
     const CliRun info = run_cli("info --json " + (dir / mesh).string());
@@ -378,8 +367,8 @@ TEST_F(AdversarialInputs, InfoReadsTextureHeadersAndDecodingChecksTheBudget) {
 // (its own size limit, reported so by stbi_info).
 TEST_F(AdversarialInputs, TooLargeImagesSayTheirSizeAndTheLimit) {
   const fs::path dir = kDir / "too-large";
-  write(dir / "huge.png", png_claiming(30000, 1000));
-  write(dir / "s.json", R"({"camera": {"position": [0, 0, 4], "target": [0, 0, 0]},
+  test::write_file(dir / "huge.png", png_claiming(30000, 1000));
+  test::write_file(dir / "s.json", R"({"camera": {"position": [0, 0, 4], "target": [0, 0, 0]},
     "environment": {"type": "equirect", "file": "huge.png"}})");
   expect_refused(run_cli("render " + (dir / "s.json").string() + " --size 8x8 -q -o " +
                          (dir / "out.png").string()),
@@ -389,11 +378,11 @@ TEST_F(AdversarialInputs, TooLargeImagesSayTheirSizeAndTheLimit) {
 /// load_scene_file of a glTF tetrahedron whose material is `material`: its error.
 std::string gltf_material_error(const json& material) {
   const fs::path dir = kDir / "materials";
-  write(dir / "tet.bin", tetrahedron_bin());
+  test::write_file(dir / "tet.bin", tetrahedron_bin());
   json gltf = tetrahedron_gltf("tet.bin");
   gltf["materials"] = json::array({material});
   gltf["meshes"][0]["primitives"][0]["material"] = 0;
-  write(dir / "tet.gltf", gltf.dump());
+  test::write_file(dir / "tet.gltf", gltf.dump());
   Scene scene;
   std::vector<std::string> warnings;
   std::string error;
@@ -411,12 +400,12 @@ TEST_F(AdversarialInputs, GltfRangesAreTheJsonScenesRanges) {
             std::string::npos)
       << error;
   const fs::path dir = kDir / "lights";
-  write(dir / "tet.bin", tetrahedron_bin());
+  test::write_file(dir / "tet.bin", tetrahedron_bin());
   json gltf = tetrahedron_gltf("tet.bin");
   gltf["extensions"] = json::parse(
       R"({"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 1000000.4}]}})");
   gltf["nodes"][0]["extensions"] = json::parse(R"({"KHR_lights_punctual": {"light": 0}})");
-  write(dir / "tet.gltf", gltf.dump());
+  test::write_file(dir / "tet.gltf", gltf.dump());
   Scene scene;
   std::vector<std::string> warnings;
   EXPECT_FALSE(load_scene_file((dir / "tet.gltf").string(), scene, warnings, error));
@@ -428,10 +417,10 @@ TEST_F(AdversarialInputs, GltfRangesAreTheJsonScenesRanges) {
 /// load_scene_file of two glass spheres of radius 1, the second at `x`: its warnings.
 std::vector<std::string> two_glass_spheres(double x) {
   const fs::path file = kDir / "dielectrics/s.json";
-  write(file, R"({"camera": {"position": [0, 0, 9], "target": [0, 0, 0]}, "objects": [
+  test::write_file(file, R"({"camera": {"position": [0, 0, 9], "target": [0, 0, 0]}, "objects": [
     {"name": "left", "shape": "sphere", "material": {"type": "dielectric", "ior": 1.5}},
     {"name": "right", "shape": "sphere", "transform": {"translate": [)" +
-                  std::to_string(x) + R"(, 0, 0]},
+                             std::to_string(x) + R"(, 0, 0]},
      "material": {"type": "dielectric", "ior": "water"}}]})");
   Scene scene;
   std::vector<std::string> warnings;

@@ -24,6 +24,7 @@
 #include "preprocess/asset_files.hpp"
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
@@ -31,8 +32,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_cli;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("asset_unit_" + std::to_string(getpid()));
+const fs::path kDir = test::process_folder("asset_unit");
 const std::string kSpot = std::string(gfield::build_paths::mesh_dir()) + "/spot.obj";
 const std::string kCow = std::string(gfield::build_paths::mesh_dir()) + "/cow.obj";
 const std::string kSmall = " --size 128 --samples 4 --verify-rays 500";

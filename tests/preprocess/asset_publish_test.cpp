@@ -17,14 +17,14 @@
 #include "preprocess/asset_staging.hpp"
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("asset_publish_" + std::to_string(getpid()));
+const fs::path kDir = test::process_folder("asset_publish");
 // An octahedron: a build takes a few hundredths of a second, so that the test's 2 x 40 faulty
 // builds take seconds (minutes under the sanitizers with spot).
 const std::string kMesh = (kDir / "octahedron.obj").string();

@@ -10,14 +10,14 @@
 #include "preprocess/asset_build.hpp"
 #include "preprocess/asset_files.hpp"
 #include "test_support/build_paths.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("asset_rebuild_" + std::to_string(getpid()));
+const fs::path kDir = test::process_folder("asset_rebuild");
 
 AssetOptions small_options(int samples) {
   AssetOptions options;

@@ -14,14 +14,14 @@
 #include "preprocess/asset_report.hpp"
 #include "preprocess/verify.hpp"
 #include "test_support/build_paths.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("asset_report_" + std::to_string(getpid()));
+const fs::path kDir = test::process_folder("asset_report");
 
 /// Spot built once (small, with its accuracy) for every test here; its report's JSON as written.
 class AssetReportTest : public ::testing::Test {

@@ -16,6 +16,7 @@
 
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
@@ -23,8 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_cli;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("batch_" + std::to_string(getpid()));
+const fs::path kDir = test::process_folder("batch");
 const std::string kMeshes = gfield::build_paths::mesh_dir();
 const std::string kFast = " --size 64 --samples 4 --verify-rays 0";
 

@@ -24,6 +24,7 @@
 
 #include "gfield/exr_io.hpp"
 #include "test_support/build_paths.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
@@ -53,8 +54,7 @@ CliRun run(const std::string& arguments) {
 }
 
 // One folder per process: CTest runs each test in a process of its own, in parallel.
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("field_cli_" + std::to_string(getpid()));
+const fs::path kDir = test::process_folder("field_cli");
 const std::string kSpot = std::string(gfield::build_paths::mesh_dir()) + "/spot.obj";
 
 class FieldCli : public ::testing::Test {

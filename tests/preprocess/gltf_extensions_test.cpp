@@ -28,6 +28,7 @@
 #include "gfield/image.hpp"
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
@@ -37,13 +38,7 @@ using nlohmann::json;
 using test::CliRun;
 using test::run_cli;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("gltf_ext_" + std::to_string(::getpid()));
-
-void write(const fs::path& file, const std::string& bytes) {
-  fs::create_directories(file.parent_path());
-  std::ofstream(file, std::ios::binary) << bytes;
-}
+const fs::path kDir = test::process_folder("gltf_ext");
 
 template <class T>
 std::string bytes_of(const std::vector<T>& values) {
@@ -73,7 +68,7 @@ bool read_mesh(const fs::path& file, TriangleMesh& mesh, MeshAppearance& appeara
 
 /// A tetrahedron whose buffer is tet.bin in `dir` (positions, then indices).
 json tetrahedron(const fs::path& dir) {
-  write(dir / "tet.bin", bytes_of(kPositions) + bytes_of(kIndices));
+  test::write_file(dir / "tet.bin", bytes_of(kPositions) + bytes_of(kIndices));
   json d = one_mesh({{"POSITION", 0}}, 1);
   d["accessors"] = {
       {{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
@@ -89,7 +84,7 @@ TEST(GltfExtensions, AnUnimplementedRequiredExtensionIsRefusedNamingIt) {
   json d = tetrahedron(dir);
   d["extensionsUsed"] = {"KHR_mesh_quantization", "EXT_gfield_unheard_of"};
   d["extensionsRequired"] = {"KHR_mesh_quantization", "EXT_gfield_unheard_of"};
-  write(dir / "s.gltf", d.dump());
+  test::write_file(dir / "s.gltf", d.dump());
   const std::string file = (dir / "s.gltf").string();
   Scene scene;
   std::vector<std::string> warnings;
@@ -111,7 +106,7 @@ TEST(GltfExtensions, AnUnimplementedRequiredExtensionIsRefusedNamingIt) {
   EXPECT_FALSE(fs::exists(dir / "out.png"));
   // Required and implemented: it loads.
   d["extensionsRequired"] = {"KHR_mesh_quantization"};
-  write(dir / "s.gltf", d.dump());
+  test::write_file(dir / "s.gltf", d.dump());
   EXPECT_TRUE(load_scene_file(file, scene, warnings, error)) << error;
 }
 
@@ -124,7 +119,7 @@ TEST(GltfExtensions, AnUnimplementedExtensionUsedButNotRequiredIsAWarningNamingW
                      {"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}}}}}}};
   d["meshes"][0]["primitives"][0]["material"] = 0;
   d["nodes"][0]["extensions"] = {{"EXT_mesh_gpu_instancing", {{"attributes", json::object()}}}};
-  write(dir / "s.gltf", d.dump());
+  test::write_file(dir / "s.gltf", d.dump());
   Scene scene;
   std::vector<std::string> warnings;
   std::string error;
@@ -149,8 +144,8 @@ json quantized(const fs::path& dir) {
                                                 0, 32767, 0, 0, 0,     0, -32768, 0};
   const std::vector<std::uint16_t> integers = {0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0};
   const std::vector<std::uint8_t> uvs = {0, 0, 0, 0, 255, 0, 0, 0, 0, 255, 0, 0, 51, 102, 0, 0};
-  write(dir / "q.bin",
-        bytes_of(normalized) + bytes_of(integers) + bytes_of(uvs) + bytes_of(kIndices));
+  test::write_file(dir / "q.bin",
+                   bytes_of(normalized) + bytes_of(integers) + bytes_of(uvs) + bytes_of(kIndices));
   json d = one_mesh({{"POSITION", 0}, {"TEXCOORD_0", 2}}, 3);
   d["meshes"].push_back(one_mesh({{"POSITION", 1}, {"TEXCOORD_0", 2}}, 3)["meshes"][0]);
   d["nodes"].push_back({{"mesh", 1}, {"scale", {0.5, 0.5, 0.5}}});
@@ -188,7 +183,7 @@ json quantized(const fs::path& dir) {
 TEST(GltfExtensions, QuantizedAttributesReadAsTheSpecificationSays) {
   const fs::path dir = kDir / "quantized";
   json d = quantized(dir);
-  write(dir / "q.gltf", d.dump());
+  test::write_file(dir / "q.gltf", d.dump());
   TriangleMesh mesh;
   MeshAppearance a;
   std::string error;
@@ -219,7 +214,7 @@ TEST(GltfExtensions, QuantizedAttributesReadAsTheSpecificationSays) {
   // Without KHR_mesh_quantization, glTF allows floats only for POSITION.
   d.erase("extensionsUsed");
   d.erase("extensionsRequired");
-  write(dir / "plain.gltf", d.dump());
+  test::write_file(dir / "plain.gltf", d.dump());
   EXPECT_FALSE(read_mesh(dir / "plain.gltf", mesh, a, error, "#0"));
   EXPECT_NE(error.find("meshes[0].primitives[0]: POSITION: accessor 0 is SHORT normalized, which "
                        "glTF allows only with KHR_mesh_quantization"),
@@ -274,7 +269,7 @@ TEST(GltfExtensions, TextureTransformMapsTheTexCoordSetItNames) {
                              {"scale", {0.5, 0.5}},
                              {"texCoord", 1}}}}}}}}}}};
   d["meshes"][0]["primitives"][0]["material"] = 0;
-  write(dir / "t.glb", glb_bytes(d.dump(), bin));
+  test::write_file(dir / "t.glb", glb_bytes(d.dump(), bin));
   TriangleMesh mesh;
   MeshAppearance a;
   std::string error;
@@ -288,13 +283,13 @@ TEST(GltfExtensions, TextureTransformMapsTheTexCoordSetItNames) {
   // A transform that leaves the limits of texture coordinates is refused, naming it.
   d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]
    ["KHR_texture_transform"]["scale"] = {1e9, 1};
-  write(dir / "far.glb", glb_bytes(d.dump(), bin));
+  test::write_file(dir / "far.glb", glb_bytes(d.dump(), bin));
   EXPECT_FALSE(read_mesh(dir / "far.glb", mesh, a, error));
   EXPECT_NE(error.find("baseColorTexture.KHR_texture_transform.scale"), std::string::npos) << error;
   // A texCoord set the primitive lacks reads the texture at (0, 0): a warning naming the place.
   d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]
    ["KHR_texture_transform"] = {{"texCoord", 2}};
-  write(dir / "set2.glb", glb_bytes(d.dump(), bin));
+  test::write_file(dir / "set2.glb", glb_bytes(d.dump(), bin));
   std::vector<std::string> warnings;
   ASSERT_TRUE(load_mesh(MeshSource{(dir / "set2.glb").string(), ""}, mesh, &a, warnings, error))
       << error;
@@ -381,7 +376,7 @@ TEST(GltfExtensions, DracoPrimitivesDecodeToTheMeshTheyEncode) {
   const fs::path dir = kDir / "draco";
   int points = 0, position_id = -1, uv_id = -1;
   const std::string compressed = draco_tetrahedron(points, position_id, uv_id);
-  write(dir / "d.glb", draco_glb(compressed, points, position_id, uv_id));
+  test::write_file(dir / "d.glb", draco_glb(compressed, points, position_id, uv_id));
   TriangleMesh mesh;
   MeshAppearance a;
   std::string error;
@@ -402,17 +397,17 @@ TEST(GltfExtensions, DracoPrimitivesDecodeToTheMeshTheyEncode) {
 
   // What gfield checks around the decoder, each named at the extension's pointer.
   const std::string pointer = "/meshes/0/primitives/0/extensions/KHR_draco_mesh_compression";
-  write(dir / "count.glb", draco_glb(compressed, points + 1, position_id, uv_id));
+  test::write_file(dir / "count.glb", draco_glb(compressed, points + 1, position_id, uv_id));
   EXPECT_FALSE(read_mesh(dir / "count.glb", mesh, a, error));
   EXPECT_NE(error.find(pointer + ": attributes.POSITION: Draco decoded " + std::to_string(points) +
                        " points"),
             std::string::npos)
       << error;
-  write(dir / "truncated.glb",
-        draco_glb(compressed.substr(0, compressed.size() / 2), points, position_id, uv_id));
+  test::write_file(dir / "truncated.glb", draco_glb(compressed.substr(0, compressed.size() / 2),
+                                                    points, position_id, uv_id));
   EXPECT_FALSE(read_mesh(dir / "truncated.glb", mesh, a, error));
   EXPECT_NE(error.find(pointer + ": "), std::string::npos) << error;
-  write(dir / "id.glb", draco_glb(compressed, points, position_id, 77));
+  test::write_file(dir / "id.glb", draco_glb(compressed, points, position_id, 77));
   EXPECT_FALSE(read_mesh(dir / "id.glb", mesh, a, error));
   EXPECT_NE(error.find("attributes.TEXCOORD_0: no Draco attribute of that id"), std::string::npos)
       << error;
@@ -466,7 +461,7 @@ std::string meshopt_glb(size_t cut, std::uint64_t claimed) {
 
 TEST(GltfExtensions, MeshoptBufferViewsDecodeToTheBytesTheyEncode) {
   const fs::path dir = kDir / "meshopt";
-  write(dir / "m.glb", meshopt_glb(0, 0));
+  test::write_file(dir / "m.glb", meshopt_glb(0, 0));
   TriangleMesh mesh;
   MeshAppearance a;
   std::string error;
@@ -488,17 +483,17 @@ TEST(GltfExtensions, MeshoptBufferViewsDecodeToTheBytesTheyEncode) {
         << f;
 
   const std::string pointer = "/bufferViews/1/extensions/EXT_meshopt_compression";
-  write(dir / "cut.glb", meshopt_glb(3, 0));
+  test::write_file(dir / "cut.glb", meshopt_glb(3, 0));
   EXPECT_FALSE(read_mesh(dir / "cut.glb", mesh, a, error));
   EXPECT_NE(error.find(pointer + ": meshoptimizer cannot decode"), std::string::npos) << error;
-  write(dir / "claims.glb", meshopt_glb(0, 36));  // count 12 x stride 2 is 24, not 36
+  test::write_file(dir / "claims.glb", meshopt_glb(0, 36));  // count 12 x stride 2 is 24, not 36
   EXPECT_FALSE(read_mesh(dir / "claims.glb", mesh, a, error));
   EXPECT_NE(error.find(pointer + ": count 12 x byteStride 2 is not the buffer view's byteLength "
                                  "36"),
             std::string::npos)
       << error;
   // A view claiming 2 GiB decoded is refused before anything is decoded or allocated.
-  write(dir / "huge.glb", meshopt_glb(0, (std::uint64_t(2) << 30) - 48));
+  test::write_file(dir / "huge.glb", meshopt_glb(0, (std::uint64_t(2) << 30) - 48));
   EXPECT_FALSE(read_mesh(dir / "huge.glb", mesh, a, error));
   EXPECT_NE(error.find("would decode to more than 2147483648 bytes"), std::string::npos) << error;
 }
@@ -511,7 +506,7 @@ bool tetrahedron_material(const json& material, Material& m, std::vector<std::st
   json d = tetrahedron(dir);
   d["materials"] = {material};
   d["meshes"][0]["primitives"][0]["material"] = 0;
-  write(dir / "m.gltf", d.dump());
+  test::write_file(dir / "m.gltf", d.dump());
   Scene scene;
   warnings.clear();
   if (!load_scene_file((dir / "m.gltf").string(), scene, warnings, error))
@@ -594,7 +589,7 @@ TEST(GltfMaterials, TransmissiveSurfacesThatAreNoSolidsAreRefused) {
   const fs::path dir = kDir / "quad";
   const std::vector<float> quad = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
   const std::vector<std::uint16_t> indices = {0, 1, 2, 0, 2, 3};
-  write(dir / "quad.bin", bytes_of(quad) + bytes_of(indices));
+  test::write_file(dir / "quad.bin", bytes_of(quad) + bytes_of(indices));
   json d = one_mesh({{"POSITION", 0}}, 1);
   d["accessors"] = {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
                     {{"bufferView", 1}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}};
@@ -605,7 +600,7 @@ TEST(GltfMaterials, TransmissiveSurfacesThatAreNoSolidsAreRefused) {
       "metallicFactor": 0}, "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
       "KHR_materials_volume": {"thicknessFactor": 1}}})")};
   d["meshes"][0]["primitives"][0]["material"] = 0;
-  write(dir / "quad.gltf", d.dump());
+  test::write_file(dir / "quad.gltf", d.dump());
   Scene scene;
   EXPECT_FALSE(load_scene_file((dir / "quad.gltf").string(), scene, warnings, error));
   EXPECT_NE(error.find("quad.gltf: meshes[0]: a transmissive surface that encloses no volume"),

@@ -16,18 +16,20 @@
 #include "gfield/exr_io.hpp"
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/refusal.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 using test::CliRun;
+using test::expect_refused;
 using test::run_cli;
 using test::run_program;
 
 const fs::path kRegressions = fs::path(gfield::build_paths::fuzz_dir()) / "regressions";
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("hardened_" + std::to_string(::getpid()));
+const fs::path kDir = test::process_folder("hardened");
 
 /// `text` in single quotes for the shell (file names may hold any byte but NUL).
 std::string quote(const std::string& text) {
@@ -36,16 +38,6 @@ std::string quote(const std::string& text) {
     out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   }
   return out + "'";
-}
-
-/// The contract for bad input: exit 2, one stderr line naming `file` (as printed: escaped),
-/// nothing on stdout.
-void expect_refused(const CliRun& run, const std::string& file, const std::string& what) {
-  EXPECT_EQ(run.exit_code, 2) << what << "\n" << run.err;
-  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << what << "\n" << run.err;
-  EXPECT_NE(run.err.find(file), std::string::npos) << what << ": must name " << file << "\n"
-                                                   << run.err;
-  EXPECT_TRUE(run.out.empty()) << what << "\n" << run.out;
 }
 
 std::vector<fs::path> files_in(const fs::path& folder) {
@@ -94,10 +86,10 @@ class HardenedInputs : public ::testing::Test {
 TEST_F(HardenedInputs, DamagedMeshFilesAreRefusedByInfoAndBuild) {
   for (const char* format : {"mesh_obj", "mesh_ply", "mesh_off", "mesh_stl"}) {
     for (const fs::path& file : files_in(kRegressions / format)) {
-      expect_refused(run_cli("info " + file.string()), file.string(), "info");
+      expect_refused(run_cli("info " + file.string()), {file.string()}, "info");
       const fs::path out = kDir / "build-out";
       expect_refused(run_cli("build " + file.string() + " -o " + (out / "x").string()),
-                     file.string(), "build");
+                     {file.string()}, "build");
       EXPECT_TRUE(empty_folder(out)) << file << ": build left files behind";
       fs::remove_all(out);
     }
@@ -133,7 +125,7 @@ TEST_F(HardenedInputs, DamagedScenesAreRefusedByRender) {
   for (const fs::path& scene : files_in(kRegressions / "scene")) {
     const fs::path out = kDir / "render.png";
     expect_refused(run_cli("render " + scene.string() + " -o " + out.string() + " --size 8x8"),
-                   scene.string(), "render");
+                   {scene.string()}, "render");
     EXPECT_FALSE(fs::exists(out)) << scene;
   }
 }
@@ -146,10 +138,10 @@ TEST_F(HardenedInputs, DamagedAssetFilesAreRefusedByVerifyAndThickness) {
       const fs::path dir = copy_asset("damaged");
       const std::string target = (dir / "tet").string() + extension;
       fs::copy_file(damaged, target, fs::copy_options::overwrite_existing);
-      expect_refused(run_cli("verify " + (dir / "tet").string() + " --rays 100"), target,
+      expect_refused(run_cli("verify " + (dir / "tet").string() + " --rays 100"), {target},
                      damaged.string());
       if (std::string(folder) != "gfield") {
-        expect_refused(run_cli("thickness " + (dir / "tet").string()), target, damaged.string());
+        expect_refused(run_cli("thickness " + (dir / "tet").string()), {target}, damaged.string());
         EXPECT_FALSE(fs::exists(dir / "tet.thickness.exr")) << damaged;
       }
     }
@@ -180,8 +172,8 @@ TEST_F(HardenedInputs, AbsurdGeometryImageValuesNeverReachEmbree) {
   });
   for (const fs::path& dir : {far, nan}) {
     const std::string file = (dir / "tet.gimage.exr").string();
-    expect_refused(run_cli("verify " + (dir / "tet").string() + " --rays 100"), file, "verify");
-    expect_refused(run_cli("thickness " + (dir / "tet").string()), file, "thickness");
+    expect_refused(run_cli("verify " + (dir / "tet").string() + " --rays 100"), {file}, "verify");
+    expect_refused(run_cli("thickness " + (dir / "tet").string()), {file}, "thickness");
   }
 }
 
@@ -195,8 +187,8 @@ TEST_F(HardenedInputs, AnotherMeshsParameterisationIsRefused) {
     p = 10.0 * p + 5.0;
   }
   ASSERT_TRUE(save_parameterized_mesh(obj, pm, error)) << error;
-  expect_refused(run_cli("verify " + (dir / "tet").string() + " --rays 100"), obj, "verify");
-  expect_refused(run_cli("thickness " + (dir / "tet").string()), obj, "thickness");
+  expect_refused(run_cli("verify " + (dir / "tet").string() + " --rays 100"), {obj}, "verify");
+  expect_refused(run_cli("thickness " + (dir / "tet").string()), {obj}, "thickness");
 }
 
 TEST_F(HardenedInputs, AbsurdSceneTransformsNeverReachEmbree) {
@@ -215,7 +207,7 @@ TEST_F(HardenedInputs, AbsurdSceneTransformsNeverReachEmbree) {
     std::ofstream(scene) << camera << object << scale << "\n";
     const fs::path out = kDir / "absurd.png";
     const CliRun run = run_cli("render " + scene.string() + " -o " + out.string() + " --size 8x8");
-    expect_refused(run, scene.string(), scale);
+    expect_refused(run, {scene.string()}, scale);
     EXPECT_NE(run.err.find("objects[0]"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("far.obj"), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out));
@@ -234,7 +226,7 @@ TEST_F(HardenedInputs, MeshesAtTheCoordinateLimitAreRenderedButNotMadeAssets) {
   EXPECT_EQ(run_cli("info " + name + ".obj").exit_code, 0);
   const CliRun build =
       run_cli("build " + name + ".obj -o " + name + " --size 8 --samples 4 --verify-rays 100");
-  expect_refused(build, name + ".obj", "build");
+  expect_refused(build, {name + ".obj"}, "build");
   EXPECT_NE(build.err.find("3.46e+15 units across"), std::string::npos) << build.err;
   std::ofstream(dir / "big.json") << R"({"camera": {"position": [0, 0, 9e14], "target": [0, 0, 0]},
     "objects": [{"shape": "mesh", "file": "big.obj", "material": {"type": "mirror"}}]})";
@@ -263,7 +255,7 @@ TEST_F(HardenedInputs, FileNamesThatAreNotUtf8AreEscaped) {
   EXPECT_EQ(j["mesh"], "caf\\xE9.obj");
 
   const std::string missing = (dir / "missing\xFF.obj").string();
-  expect_refused(run_cli("info " + quote(missing)), (dir / "missing\\xFF.obj").string(),
+  expect_refused(run_cli("info " + quote(missing)), {(dir / "missing\\xFF.obj").string()},
                  "missing file");
 }
 

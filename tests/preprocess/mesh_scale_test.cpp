@@ -19,6 +19,7 @@
 #include "gfield/geometry_field.hpp"
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
@@ -26,8 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_cli;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("mesh_scale_" + std::to_string(getpid()));
+const fs::path kDir = test::process_folder("mesh_scale");
 const std::string kFast = " --size 96 --samples 8 --verify-rays 4000";
 
 class MeshScale : public ::testing::Test {

@@ -13,6 +13,7 @@
 
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
@@ -20,8 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_cli;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("special_files_" + std::to_string(getpid()));
+const fs::path kDir = test::process_folder("special_files");
 
 class SpecialFiles : public ::testing::Test {
  protected:

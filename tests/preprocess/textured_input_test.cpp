@@ -20,6 +20,8 @@
 #include "gfield/geometry_image.hpp"
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/refusal.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
@@ -27,40 +29,26 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using test::CliRun;
+using test::expect_refused;
 using test::run_cli;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("textured_input_" + std::to_string(::getpid()));
+const fs::path kDir = test::process_folder("textured_input");
 
 /// A tetrahedron with texture coordinates and a material `mtl` (its map_Kd: `texture`).
 const char* kTetrahedronObj =
     "mtllib tet.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\n"
     "usemtl coat\nf 1/1 3/3 2/2\nf 1/1 2/2 4/3\nf 1/1 4/3 3/2\nf 2/1 3/2 4/3\n";
 
-void write(const fs::path& file, const std::string& text) {
-  fs::create_directories(file.parent_path());
-  std::ofstream(file, std::ios::binary) << text;
-}
-
-/// The contract for bad input: exit 2, one stderr line naming `file`, nothing on stdout.
-void expect_refused(const CliRun& run, const std::string& file, const std::string& what) {
-  EXPECT_EQ(run.exit_code, 2) << what << "\n" << run.err;
-  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << what << "\n" << run.err;
-  EXPECT_NE(run.err.find(file), std::string::npos) << what << ": must name " << file << "\n"
-                                                   << run.err;
-  EXPECT_TRUE(run.out.empty()) << what << "\n" << run.out;
-}
-
 /// `gfield image FILE` and `gfield info FILE` refuse `file`; the image leaves no file behind.
 void expect_image_refused(const fs::path& file, const std::string& what) {
   SCOPED_TRACE(what);
-  expect_refused(run_cli("info " + file.string()), file.string(), what + " (info)");
+  expect_refused(run_cli("info " + file.string()), {file.string()}, what + " (info)");
   const fs::path out = kDir / "out";
   fs::remove_all(out);
   fs::create_directories(out);
   expect_refused(
       run_cli("image " + file.string() + " -o " + (out / "x.gimage.exr").string() + " --size 16"),
-      file.string(), what + " (image)");
+      {file.string()}, what + " (image)");
   EXPECT_TRUE(fs::is_empty(out)) << what << ": image left files behind";
 }
 
@@ -71,7 +59,7 @@ json tetrahedron_gltf(const fs::path& folder) {
   std::string bin(72, '\0');
   std::memcpy(bin.data(), positions, 48);
   std::memcpy(bin.data() + 48, indices, 24);
-  write(folder / "tet.bin", bin);
+  test::write_file(folder / "tet.bin", bin);
   return json::parse(R"({
     "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
     "nodes": [{"mesh": 0}],
@@ -93,8 +81,8 @@ class TexturedInput : public ::testing::Test {
 
 TEST_F(TexturedInput, MissingTextureIsAWarningAndMidGrey) {
   const fs::path dir = kDir / "missing-texture";
-  write(dir / "tet.obj", kTetrahedronObj);
-  write(dir / "tet.mtl", "newmtl coat\nKd 1 1 1\nmap_Kd nowhere.png\n");
+  test::write_file(dir / "tet.obj", kTetrahedronObj);
+  test::write_file(dir / "tet.mtl", "newmtl coat\nKd 1 1 1\nmap_Kd nowhere.png\n");
   const fs::path out = dir / "tet.gimage.exr";
   const CliRun run =
       run_cli("image " + (dir / "tet.obj").string() + " -o " + out.string() + " --size 32");
@@ -116,9 +104,9 @@ TEST_F(TexturedInput, MissingTextureIsAWarningAndMidGrey) {
 
 TEST_F(TexturedInput, TextureThatIsNotAnImageIsRefused) {
   const fs::path dir = kDir / "not-an-image";
-  write(dir / "tet.obj", kTetrahedronObj);
-  write(dir / "tet.mtl", "newmtl coat\nKd 1 1 1\nmap_Kd coat.png\n");
-  write(dir / "coat.png", "this is text, not a PNG\n");
+  test::write_file(dir / "tet.obj", kTetrahedronObj);
+  test::write_file(dir / "tet.mtl", "newmtl coat\nKd 1 1 1\nmap_Kd coat.png\n");
+  test::write_file(dir / "coat.png", "this is text, not a PNG\n");
   expect_image_refused(dir / "tet.obj", "texture that is not an image");
 }
 
@@ -126,15 +114,15 @@ TEST_F(TexturedInput, NanTextureCoordinatesAreRefused) {
   const fs::path dir = kDir / "nan-uv";
   std::string obj = kTetrahedronObj;
   obj.replace(obj.find("vt 1 0"), 6, "vt nan 0");
-  write(dir / "tet.obj", obj);
-  write(dir / "tet.mtl", "newmtl coat\nKd 1 1 1\n");
+  test::write_file(dir / "tet.obj", obj);
+  test::write_file(dir / "tet.mtl", "newmtl coat\nKd 1 1 1\n");
   expect_image_refused(dir / "tet.obj", "NaN uv");
 }
 
 TEST_F(TexturedInput, DamagedGltfFilesAreRefused) {
   const fs::path dir = kDir / "gltf";
   const json good = tetrahedron_gltf(dir);
-  write(dir / "good.gltf", good.dump());
+  test::write_file(dir / "good.gltf", good.dump());
   const CliRun ok = run_cli("info " + (dir / "good.gltf").string());
   ASSERT_EQ(ok.exit_code, 0) << ok.err;
   const std::pair<const char*, std::function<void(json&)>> cases[] = {
@@ -151,14 +139,14 @@ TEST_F(TexturedInput, DamagedGltfFilesAreRefused) {
     json doc = good;
     damage(doc);
     const fs::path file = dir / (std::string(name) + ".gltf");
-    write(file, doc.dump());
+    test::write_file(file, doc.dump());
     expect_image_refused(file, name);
   }
 }
 
 TEST_F(TexturedInput, ZeroLengthAndTruncatedGlbAreRefused) {
   const fs::path dir = kDir / "glb";
-  write(dir / "empty.glb", "");
+  test::write_file(dir / "empty.glb", "");
   expect_image_refused(dir / "empty.glb", "zero-length .glb");
   std::ifstream in(fs::path(gfield::build_paths::data_dir()) / "scenes/textured-mirror.glb",
                    std::ios::binary);
@@ -166,11 +154,11 @@ TEST_F(TexturedInput, ZeroLengthAndTruncatedGlbAreRefused) {
   ASSERT_GT(glb.size(), 1000u);
   for (const size_t keep : {size_t(11), size_t(40), glb.size() / 2, glb.size() - 1}) {
     const fs::path file = dir / ("truncated-" + std::to_string(keep) + ".glb");
-    write(file, glb.substr(0, keep));
+    test::write_file(file, glb.substr(0, keep));
     expect_image_refused(file, "truncated .glb");
     const fs::path picture = dir / "render.png";
     expect_refused(run_cli("render " + file.string() + " --size 8x8 -q -o " + picture.string()),
-                   file.string(), "render of a truncated .glb");
+                   {file.string()}, "render of a truncated .glb");
     EXPECT_FALSE(fs::exists(picture));
   }
 }

@@ -13,13 +13,13 @@
 
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/test_files.hpp"
 
 namespace gfield {
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path kDir =
-    fs::path(gfield::build_paths::test_tmp()) / ("scene_assets_" + std::to_string(getpid()));
+const fs::path kDir = test::process_folder("scene_assets");
 const char* kFiles[] = {".gimage.exr", ".gimage.obj", ".gfield.exr", ".report.json"};
 
 class SceneAssets : public ::testing::Test {
