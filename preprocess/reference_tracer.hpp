@@ -16,22 +16,11 @@
 
 #include "gfield/image.hpp"
 #include "gfield/scene.hpp"
+#include "preprocess/dielectric_split.hpp"
 #include "preprocess/job_control.hpp"
+#include "preprocess/render_budget.hpp"
 
 namespace gfield {
-
-/// What happens at a dielectric surface.
-///  kFull:        reflected and refracted rays, weighted by the exact Fresnel reflectance R and
-///                1 - R (1 and 0 under total internal reflection).
-///  kRefractOnly: only the refracted ray, weight 1; under total internal reflection the path ends
-///                (black).
-///  kTirOnly:     the refracted ray with weight 1, or, under total internal reflection only, the
-///                reflected ray with weight 1 (the references of Davis & Wyman 2007, Fig. 8).
-enum class DielectricMode { kFull, kRefractOnly, kTirOnly };
-
-/// "full", "refract-only", "tir-only" -> mode; false for anything else.
-bool parse_dielectric_mode(std::string_view name, DielectricMode& mode);
-const char* dielectric_mode_name(DielectricMode mode);
 
 struct RenderOptions {
   int width = 0;   ///< 0: the scene's
@@ -76,20 +65,6 @@ struct PathEvent {
   glm::dvec3 direction{0.0};  ///< unit direction leaving the event (kEscape: the escaping ray's)
 };
 
-/// Reflectance and transmittance at one dielectric interface, as the tracer uses them.
-struct InterfaceSplit {
-  bool total_internal_reflection = false;
-  double reflected_weight = 0.0;
-  double transmitted_weight = 0.0;
-  glm::dvec3 reflected{0.0};
-  glm::dvec3 transmitted{0.0};  ///< zero under total internal reflection
-};
-
-/// The split of unit `incident` at a surface with unit normal `normal` facing the incident side,
-/// from index n1 into n2, under `mode`.
-InterfaceSplit split_at_interface(glm::dvec3 incident, glm::dvec3 normal, double n1, double n2,
-                                  DielectricMode mode);
-
 class ReferenceTracer {
  public:
   ReferenceTracer();
@@ -122,21 +97,5 @@ class ReferenceTracer {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-/// Resources a render would take: refused by the CLI above the limits.
-struct RenderBudget {
-  double image_bytes = 0.0;        ///< the float image
-  double camera_samples = 0.0;     ///< width * height * spp
-  double estimated_seconds = 0.0;  ///< at kEstimatedRaysPerSecond, ~3 rays per camera sample
-};
-/// Camera rays per second assumed for estimates (measured on 2 cores: bench_reference_tracer).
-inline constexpr double kEstimatedRaysPerSecond = 4.0e6;
-inline constexpr double kMaxCameraSamples = 4.0e9;
-inline constexpr double kMaxImageBytes = 2.0e9;
-RenderBudget estimate_render(int width, int height, int samples_per_pixel);
-/// False with "refusing WxH at S spp: ... camera samples (limit ...), image ... GB (limit ...),
-/// estimated ... on this machine" when a render of that size is beyond kMaxCameraSamples,
-/// kMaxImageBytes or 65,536 pixels per side (`gfield render` and gfield.render refuse it).
-bool check_render_budget(int width, int height, int samples_per_pixel, std::string& error);
 
 }  // namespace gfield

@@ -1,10 +1,7 @@
 #include "runtime/gpu_assets.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
-
-#include <glm/gtx/norm.hpp>
 
 #include "geometry/mesh_appearance.hpp"
 #include "geometry/mesh_io.hpp"
@@ -14,6 +11,7 @@
 #include "gfield/gpu_contract.hpp"
 #include "gfield/gpu_storage.hpp"
 #include "runtime/image_atlas.hpp"
+#include "runtime/image_grid.hpp"
 
 namespace gfield {
 namespace {
@@ -471,62 +469,6 @@ bool GpuAssets::load_parameterized_meshes(const Scene& scene, std::string& error
   }
   loaded_.parameterized_meshes = true;
   return true;
-}
-
-std::string asset_memory_lines(const Scene& scene, const GpuAssets& assets) {
-  std::string text;
-  const char* format = assets.field_bits() == 8    ? "RG8"
-                       : assets.field_bits() == 16 ? "RG16"
-                                                   : "RG32F";
-  for (size_t m = 0; m < assets.assets().size() && m < scene.meshes.size(); ++m) {
-    const GpuAsset& a = assets.assets()[m];
-    char part[128];
-    std::string parts;
-    if (a.layer >= 0) {
-      std::snprintf(part, sizeof(part), "image %.1f MB", double(a.image_bytes) / 1e6);
-      parts += part;
-    }
-    if (a.samples_per_side > 0) {
-      std::snprintf(part, sizeof(part), ", field %s + line table %.1f MB (up to %d hits a line)",
-                    format, double(a.field_bytes) / 1e6, a.field_layers);
-      parts += part;
-    }
-    if (a.bvh_root >= 0) {
-      std::snprintf(part, sizeof(part), ", BVH %.1f MB", double(a.bvh_bytes) / 1e6);
-      parts += part;
-    }
-    if (parts.rfind(", ", 0) == 0)
-      parts.erase(0, 2);
-    text += std::filesystem::path(scene.meshes[m].file).filename().string() + ": " +
-            (parts.empty() ? "nothing loaded" : parts) + "\n";
-  }
-  return text;
-}
-
-std::vector<unsigned> geometry_image_triangles(const GeometryImage& image) {
-  const int n = image.size;
-  std::vector<unsigned> indices;
-  const auto covered = [&](int i, int j) {
-    return image.coverage[texel_index(image, i, j)] > 0.5f;
-  };
-  for (int j = 0; j + 1 < n; ++j) {
-    for (int i = 0; i + 1 < n; ++i) {
-      if (!covered(i, j) || !covered(i + 1, j) || !covered(i, j + 1) || !covered(i + 1, j + 1))
-        continue;
-      const unsigned a = unsigned(texel_index(image, i, j));
-      const unsigned b = unsigned(texel_index(image, i + 1, j));
-      const unsigned c = unsigned(texel_index(image, i, j + 1));
-      const unsigned d = unsigned(texel_index(image, i + 1, j + 1));
-      const float ad = glm::distance2(image.position[a], image.position[d]);
-      const float bc = glm::distance2(image.position[b], image.position[c]);
-      if (ad <= bc) {
-        indices.insert(indices.end(), {a, b, d, a, d, c});
-      } else {
-        indices.insert(indices.end(), {a, b, c, b, d, c});
-      }
-    }
-  }
-  return indices;
 }
 
 }  // namespace gfield

@@ -176,15 +176,6 @@ class GpuAssets {
   int field_bits_ = 0;
 };
 
-/// One line per asset: "NAME: image 10.5 MB, field RG8 + line table 23.0 MB (up to 8 hits a
-/// line)" (the scene's mesh files),
-/// with ", BVH 1.2 MB" where BVHs are loaded and "no field" for a mesh without one.
-std::string asset_memory_lines(const Scene& scene, const GpuAssets& assets);
-
-/// Grid triangles of a geometry image: two per quad of texel centres whose 4 corners are covered
-/// (A > 0.5), as indices j * n + i. Quads are split along the shorter diagonal.
-std::vector<unsigned> geometry_image_triangles(const GeometryImage& image);
-
 /// The missing-asset message for `mesh`: what was expected where, and the command that makes it.
 std::string missing_asset_message(const MeshAsset& mesh, const std::string& scene_file,
                                   const char* what);

@@ -6,6 +6,7 @@
 #include "gfield/image_metrics.hpp"
 #include "gfield/printable.hpp"
 #include "gfield/stopwatch.hpp"
+#include "runtime/asset_memory.hpp"
 #include "runtime/gl_context.hpp"
 
 namespace gfield {

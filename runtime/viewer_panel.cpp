@@ -8,6 +8,7 @@
 
 #include "gfield/image.hpp"
 #include "gfield/optics.hpp"
+#include "runtime/asset_memory.hpp"
 #include "runtime/method_panel.hpp"
 #include "runtime/viewer.hpp"
 #include "runtime/viewer_input.hpp"

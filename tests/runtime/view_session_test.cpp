@@ -10,7 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include "gfield/exr_io.hpp"
+#include "gfield/gpu_storage.hpp"
 #include "gfield/image_metrics.hpp"
+#include "runtime/asset_memory.hpp"
 #include "runtime/method_registry.hpp"
 #include "runtime/shader_program.hpp"
 #include "runtime/view_session.hpp"
@@ -168,6 +171,24 @@ TEST_F(ViewSessionTest, SecondMethodFillsTheRightHalf) {
       ASSERT_EQ(both.at(x, y), expected.at(x, y)) << x << "," << y;
     }
   }
+}
+
+TEST_F(ViewSessionTest, AssetMemoryNamesEachMeshsGpuBytes) {
+  Scene scene;
+  std::string error;
+  ASSERT_TRUE(load_scene((kDir / "scene.json").string(), scene, error, OutsidePaths::kAllowed))
+      << error;
+  ViewSession session;
+  ASSERT_TRUE(session.load(scene, default_shader_dir(), error)) << error;
+  ASSERT_TRUE(session.select(session.find("field"), error)) << error;
+  GeometryField field;
+  ASSERT_TRUE(load_geometry_field((kDir / "spot.gfield.exr").string(), field, error)) << error;
+  char expected[160];
+  std::snprintf(expected, sizeof(expected),
+                "spot.obj: image %.1f MB, field RG8 + line table %.1f MB (up to %d hits a line)\n",
+                double(geometry_image_gpu_bytes(128)) / 1e6,
+                double(field_gpu_bytes(field, 8)) / 1e6, field.layers);
+  EXPECT_EQ(asset_memory_lines(scene, session.scene().assets()), expected);
 }
 
 }  // namespace
