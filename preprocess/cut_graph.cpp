@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "geometry/edge_key.hpp"
+#include "gfield/check.hpp"
 
 namespace gfield {
 namespace {
@@ -118,6 +119,9 @@ VertexTree vertex_tree(const EdgeGraph& graph, size_t vertices, int root) {
       queue.push_back(w);
     }
   }
+  for (size_t v = 0; v < vertices; ++v)
+    GF_CHECK(tree.parent_edge[v] < 0 || graph.other(tree.parent_edge[v], int(v)) != int(v),
+             "a tree edge joins its vertex to another");
   return tree;
 }
 
@@ -125,10 +129,12 @@ VertexTree vertex_tree(const EdgeGraph& graph, size_t vertices, int root) {
 std::vector<char> face_cotree(const EdgeGraph& graph, size_t faces,
                               const std::vector<char>& in_tree) {
   std::vector<char> face_reached(faces, 0), in_cotree(graph.edges.size(), 0);
+  size_t trees = 0, cotree_edges = 0;
   for (size_t start = 0; start < faces; ++start) {
     if (face_reached[start])
       continue;
     face_reached[start] = 1;
+    ++trees;
     std::deque<int> queue{int(start)};
     while (!queue.empty()) {
       const int f = queue.front();
@@ -142,10 +148,12 @@ std::vector<char> face_cotree(const EdgeGraph& graph, size_t faces,
           continue;
         face_reached[g] = 1;
         in_cotree[e] = 1;
+        ++cotree_edges;
         queue.push_back(g);
       }
     }
   }
+  GF_CHECK_EQ(cotree_edges + trees, faces, "a spanning forest: one edge fewer than faces per tree");
   return in_cotree;
 }
 

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <numeric>
 #include <vector>
 
+#include "gfield/check.hpp"
 #include "gfield/field_lines.hpp"
 #include "gfield/stopwatch.hpp"
 #include "preprocess/field_casts.hpp"
@@ -326,6 +328,8 @@ bool build_geometry_field(const ParameterizedMesh& pm, const EmbreeMesh& embree,
     }
     return sum;
   });
+  GF_CHECK_EQ(std::accumulate(s.lines_by_hits.begin(), s.lines_by_hits.end(), size_t(0)), s.rays,
+              "every ray between samples on different faces cast once");
   s.hits = s.rays - s.lines_by_hits[0];
   s.seconds = watch.seconds();
   if (stats != nullptr) {

@@ -24,6 +24,8 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "gfield/check.hpp"
+
 namespace gfield {
 namespace {
 
@@ -80,6 +82,7 @@ double signed_area(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c
 /// Mirrors the chart across its diagonal (keeps the square and the orbifold cones at (0,0) and
 /// (1,1)) when most of its area is clockwise, then counts faults.
 void orient_and_count(Chart& chart) {
+  GF_CHECK_EQ(chart.corner_uv.size() % 3, size_t(0), "three corner uvs per face");
   double total = 0.0;
   for (size_t f = 0; 3 * f < chart.corner_uv.size(); ++f)
     total +=
@@ -331,6 +334,7 @@ bool parameterize_disk(const TriangleMesh& component, const std::vector<Edge>& c
   }
   if (CGAL::halfedges_around_face(borders[0], sm).size() == 3) {  // three border vertices
     chart.corner_uv = tutte_triangle_border(sm, borders[0], disk.triangles);
+    GF_CHECK_EQ(chart.corner_uv.size(), 3 * disk.triangles.size(), "a uv per corner");
     chart.weights = "uniform";
     orient_and_count(chart);
     if (chart.flipped == 0 && all_finite(chart.corner_uv))

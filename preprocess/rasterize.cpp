@@ -9,6 +9,8 @@
 #include <set>
 #include <tuple>
 
+#include "gfield/check.hpp"
+
 namespace gfield {
 namespace {
 
@@ -288,6 +290,9 @@ void rasterize_charts(const TriangleMesh& mesh, const std::vector<glm::dvec3>& n
   const RasterSource source{mesh, normals, albedo};
   for (const RasterChart& chart : charts) {
     const ChartRect& rect = chart.rect;
+    GF_CHECK(rect.x >= 0 && rect.y >= 0 && rect.size > 0, "a packed chart's rectangle");
+    GF_CHECK_LE(std::max(rect.x, rect.y) + rect.size, size, "a packed chart inside the image");
+    GF_CHECK_EQ(chart.corner_uv.size(), 3 * chart.faces.size(), "a uv per corner of its faces");
     const std::vector<ChartTransform> copies = chart_copies(chart);
     auto to_texels = [&](glm::dvec2 uv) {
       return glm::dvec2(rect.x, rect.y) + uv * double(rect.size);

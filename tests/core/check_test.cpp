@@ -22,6 +22,23 @@ TEST(CheckDeathTest, CheckPrintsFileLineConditionAndMessageAndAborts) {
                "check_test\\.cpp:[0-9]+: check failed: v\\.size\\(\\) == 3: a vector of 2");
 }
 
+TEST(CheckDeathTest, ComparisonsPrintBothValuesAndEvaluateEachOperandOnce) {
+  int calls = 0;
+  const auto next = [&] { return ++calls; };
+  GF_CHECK_EQ(next(), 1, "never printed");
+  GF_CHECK_LT(next(), 3, "never printed");
+  GF_CHECK_GE(2.5, 2.5, "never printed");
+  EXPECT_EQ(calls, 2);
+  const size_t rays = 96;
+  EXPECT_DEATH(GF_CHECK_EQ(rays, 95u, "every ray counted once"),
+               "check_test\\.cpp:[0-9]+: check failed: rays == 95u \\(96 vs 95\\): every ray "
+               "counted once");
+  EXPECT_DEATH(GF_CHECK_LE(0.1 + 0.2, 0.3, "sums"),
+               "0\\.1 \\+ 0\\.2 <= 0\\.3 "
+               "\\(0\\.30000000000000004 vs 0\\.29999999999999999\\)");
+  EXPECT_DEATH(GF_CHECK_NE(std::string("a"), "a", "names"), "\\(a vs a\\): names");
+}
+
 TEST(CheckDeathTest, DcheckEvaluatesAndFiresOnlyWhereItIsOn) {
   int evaluated = 0;
   GF_DCHECK(++evaluated == 1, "counted once where it is on");
