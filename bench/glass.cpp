@@ -6,7 +6,8 @@
 //
 //   bench_glass [--quick] [--vertices N,N,...] [--frames F] [--azimuths A]
 //   (default: 100K-800K in steps of 100K, 3 timed frames after a warm-up, 4 azimuths, four
-//   resolutions; --quick: 100K-400K, 1 frame, 2 azimuths, two resolutions)
+//   resolutions; --quick: 100K-400K, 1 frame, 2 azimuths, two resolutions; an option given
+//   keeps its value)
 
 #include <algorithm>
 #include <chrono>
@@ -154,7 +155,7 @@ int main(int argc, char** argv) {
   bool quick = false;
   std::vector<int> counts = {100000, 200000, 300000, 400000, 500000, 600000, 700000, 800000};
   int frames = 3, azimuths = 4;
-  bool set_frames = false, set_azimuths = false;
+  bool set_vertices = false, set_frames = false, set_azimuths = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const char* value = i + 1 < argc ? argv[i + 1] : nullptr;
@@ -164,6 +165,7 @@ int main(int argc, char** argv) {
     } else if (arg == "--vertices" && value != nullptr) {
       counts = parse_counts(value);
       ok = !counts.empty();
+      set_vertices = true;
       ++i;
     } else if (arg == "--frames" && value != nullptr) {
       frames = std::atoi(value);
@@ -186,7 +188,7 @@ int main(int argc, char** argv) {
     }
   }
   if (quick) {
-    counts = {100000, 200000, 400000};
+    counts = set_vertices ? counts : std::vector<int>{100000, 200000, 400000};
     frames = set_frames ? frames : 1;
     azimuths = set_azimuths ? azimuths : 2;
   }
