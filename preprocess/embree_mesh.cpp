@@ -32,18 +32,8 @@ EmbreeMesh::~EmbreeMesh() {
   }
 }
 
-bool EmbreeMesh::build(const TriangleMesh& mesh, std::string& error, RTCBuildQuality quality) {
-  device_ = rtcNewDevice(nullptr);
-  if (!device_) {
-    error =
-        "Embree: cannot create a device (" + embree_error_text(rtcGetDeviceError(nullptr)) + ")";
-    return false;
-  }
-  scene_ = rtcNewScene(device_);
-  rtcSetSceneBuildQuality(scene_, quality);
-  // Casts may pass an intersection filter in their context (the layered field build).
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
-  RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+bool attach_triangle_mesh(RTCDevice device, RTCScene scene, const TriangleMesh& mesh) {
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   // Embree reads vertex buffers with 16-byte loads: rtcSetNewGeometryBuffer pads for that.
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
                                                                RTC_FORMAT_FLOAT3, 3 * sizeof(float),
@@ -53,8 +43,6 @@ bool EmbreeMesh::build(const TriangleMesh& mesh, std::string& error, RTCBuildQua
                               3 * sizeof(unsigned), mesh.triangles.size()));
   if (!vertices || !indices) {
     rtcReleaseGeometry(geometry);
-    error = "Embree: cannot allocate buffers for " + std::to_string(mesh.triangles.size()) +
-            " triangles";
     return false;
   }
   for (size_t v = 0; v < mesh.positions.size(); ++v) {
@@ -68,8 +56,27 @@ bool EmbreeMesh::build(const TriangleMesh& mesh, std::string& error, RTCBuildQua
     }
   }
   rtcCommitGeometry(geometry);
-  rtcAttachGeometryByID(scene_, geometry, 0);
+  rtcAttachGeometryByID(scene, geometry, 0);
   rtcReleaseGeometry(geometry);
+  return true;
+}
+
+bool EmbreeMesh::build(const TriangleMesh& mesh, std::string& error, RTCBuildQuality quality) {
+  device_ = rtcNewDevice(nullptr);
+  if (!device_) {
+    error =
+        "Embree: cannot create a device (" + embree_error_text(rtcGetDeviceError(nullptr)) + ")";
+    return false;
+  }
+  scene_ = rtcNewScene(device_);
+  rtcSetSceneBuildQuality(scene_, quality);
+  // Casts may pass an intersection filter in their context (the layered field build).
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+  if (!attach_triangle_mesh(device_, scene_, mesh)) {
+    error = "Embree: cannot allocate buffers for " + std::to_string(mesh.triangles.size()) +
+            " triangles";
+    return false;
+  }
   rtcCommitScene(scene_);
   if (const RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE) {
     error = "Embree: building the BVH of " + std::to_string(mesh.triangles.size()) +

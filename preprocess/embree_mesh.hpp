@@ -12,11 +12,16 @@
 
 namespace gfield {
 
-/// Owns an RTCDevice and an RTCScene with the mesh as geometry 0 (primID = triangle index).
-/// Build quality MEDIUM, non-robust (DESIGN.md: fastest to build at equal cast speed).
 /// What an Embree error code means, in words ("out of memory", ...).
 std::string embree_error_text(RTCError error);
 
+/// Attaches `mesh` to `scene` (of `device`) as its geometry 0, a committed triangle geometry of
+/// its positions rounded to float (primID = triangle index). False when Embree cannot allocate
+/// its buffers.
+bool attach_triangle_mesh(RTCDevice device, RTCScene scene, const TriangleMesh& mesh);
+
+/// Owns an RTCDevice and an RTCScene with the mesh as geometry 0 (primID = triangle index).
+/// Build quality MEDIUM, non-robust (DESIGN.md: fastest to build at equal cast speed).
 class EmbreeMesh {
  public:
   EmbreeMesh() = default;

@@ -43,51 +43,29 @@ std::string describe_surface(const ComponentTopology& c) {
 
 }  // namespace
 
-nlohmann::json topology_to_json(const TopologyReport& r) {
-  nlohmann::json j;
-  j["vertices"] = r.vertices;
-  j["unreferenced_vertices"] = r.unreferenced_vertices;
-  j["duplicate_positions"] = r.duplicate_positions;
-  j["faces"] = r.faces;
-  j["edges"] = r.edges;
-  j["degenerate_faces"] = r.degenerate_faces;
-  j["boundary_edges"] = r.boundary_edges;
-  j["boundary_loops"] = r.boundary_loops;
-  j["non_manifold_edges"] = r.non_manifold_edges;
-  j["non_manifold_vertices"] = r.non_manifold_vertices;
-  j["euler_characteristic"] = r.euler_characteristic;
-  j["closed"] = r.closed();
-  j["manifold"] = r.manifold();
-  j["area"] = r.area;
-  j["bounds"] = {{"min", vec_json(r.bounds_min)}, {"max", vec_json(r.bounds_max)}};
-  j["components"] = nlohmann::json::array();
-  for (const ComponentTopology& c : r.components) {
-    j["components"].push_back(
-        {{"vertices", c.vertices},
-         {"edges", c.edges},
-         {"faces", c.faces},
-         {"boundary_edges", c.boundary_edges},
-         {"boundary_loops", c.boundary_loops},
-         {"non_manifold_edges", c.non_manifold_edges},
-         {"non_manifold_vertices", c.non_manifold_vertices},
-         {"oriented", c.oriented},
-         {"euler_characteristic", c.euler_characteristic},
-         {"genus", c.genus},
-         {"surface", describe_surface(c)},
-         {"area", c.area},
-         {"bounds", {{"min", vec_json(c.bounds_min)}, {"max", vec_json(c.bounds_max)}}}});
-  }
-  return j;
-}
-
 namespace {
 
 glm::dvec3 vec_from_json(const nlohmann::json& j) {
   return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
 }
 
-ComponentTopology component_from_json(const nlohmann::json& j) {
-  ComponentTopology c;
+/// The figures a component and the whole mesh both have (ComponentTopology, TopologyReport).
+template <class Counts>
+nlohmann::json counts_to_json(const Counts& c) {
+  return {{"vertices", c.vertices},
+          {"edges", c.edges},
+          {"faces", c.faces},
+          {"boundary_edges", c.boundary_edges},
+          {"boundary_loops", c.boundary_loops},
+          {"non_manifold_edges", c.non_manifold_edges},
+          {"non_manifold_vertices", c.non_manifold_vertices},
+          {"euler_characteristic", c.euler_characteristic},
+          {"area", c.area},
+          {"bounds", {{"min", vec_json(c.bounds_min)}, {"max", vec_json(c.bounds_max)}}}};
+}
+
+template <class Counts>
+void counts_from_json(const nlohmann::json& j, Counts& c) {
   c.vertices = j.at("vertices").get<size_t>();
   c.edges = j.at("edges").get<size_t>();
   c.faces = j.at("faces").get<size_t>();
@@ -95,35 +73,45 @@ ComponentTopology component_from_json(const nlohmann::json& j) {
   c.boundary_loops = j.at("boundary_loops").get<size_t>();
   c.non_manifold_edges = j.at("non_manifold_edges").get<size_t>();
   c.non_manifold_vertices = j.at("non_manifold_vertices").get<size_t>();
-  c.oriented = j.at("oriented").get<bool>();
   c.euler_characteristic = j.at("euler_characteristic").get<long>();
-  c.genus = j.at("genus").get<long>();
   c.area = j.at("area").get<double>();
   c.bounds_min = vec_from_json(j.at("bounds").at("min"));
   c.bounds_max = vec_from_json(j.at("bounds").at("max"));
-  return c;
 }
 
 }  // namespace
 
+nlohmann::json topology_to_json(const TopologyReport& r) {
+  nlohmann::json j = counts_to_json(r);
+  j["unreferenced_vertices"] = r.unreferenced_vertices;
+  j["duplicate_positions"] = r.duplicate_positions;
+  j["degenerate_faces"] = r.degenerate_faces;
+  j["closed"] = r.closed();
+  j["manifold"] = r.manifold();
+  j["components"] = nlohmann::json::array();
+  for (const ComponentTopology& c : r.components) {
+    nlohmann::json component = counts_to_json(c);
+    component["oriented"] = c.oriented;
+    component["genus"] = c.genus;
+    component["surface"] = describe_surface(c);
+    j["components"].push_back(std::move(component));
+  }
+  return j;
+}
+
 TopologyReport topology_from_json(const nlohmann::json& j) {
   TopologyReport r;
-  r.vertices = j.at("vertices").get<size_t>();
+  counts_from_json(j, r);
   r.unreferenced_vertices = j.at("unreferenced_vertices").get<size_t>();
   r.duplicate_positions = j.at("duplicate_positions").get<size_t>();
-  r.faces = j.at("faces").get<size_t>();
-  r.edges = j.at("edges").get<size_t>();
   r.degenerate_faces = j.at("degenerate_faces").get<size_t>();
-  r.boundary_edges = j.at("boundary_edges").get<size_t>();
-  r.boundary_loops = j.at("boundary_loops").get<size_t>();
-  r.non_manifold_edges = j.at("non_manifold_edges").get<size_t>();
-  r.non_manifold_vertices = j.at("non_manifold_vertices").get<size_t>();
-  r.euler_characteristic = j.at("euler_characteristic").get<long>();
-  r.area = j.at("area").get<double>();
-  r.bounds_min = vec_from_json(j.at("bounds").at("min"));
-  r.bounds_max = vec_from_json(j.at("bounds").at("max"));
-  for (const nlohmann::json& c : j.at("components"))
-    r.components.push_back(component_from_json(c));
+  for (const nlohmann::json& c : j.at("components")) {
+    ComponentTopology component;
+    counts_from_json(c, component);
+    component.oriented = c.at("oriented").get<bool>();
+    component.genus = c.at("genus").get<long>();
+    r.components.push_back(component);
+  }
   return r;
 }
 

@@ -96,29 +96,10 @@ bool TracerScene::build_mesh(MeshRecord& record, const MeshAsset& asset, std::st
   record.vertex_normals = outward_vertex_normals(mesh);
   record.scene = rtcNewScene(device);
   rtcSetSceneBuildQuality(record.scene, RTC_BUILD_QUALITY_MEDIUM);
-  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                               mesh.positions.size()));
-  auto* indices = static_cast<unsigned*>(
-      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                              3 * sizeof(unsigned), mesh.triangles.size()));
-  if (!vertices || !indices) {
-    rtcReleaseGeometry(geometry);
+  if (!attach_triangle_mesh(device, record.scene, mesh)) {
     error = file + ": Embree cannot allocate the mesh buffers";
     return false;
   }
-  for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    for (int k = 0; k < 3; ++k)
-      vertices[3 * v + size_t(k)] = float(mesh.positions[v][k]);
-  }
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    for (int k = 0; k < 3; ++k)
-      indices[3 * f + size_t(k)] = unsigned(mesh.triangles[f][k]);
-  }
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometryByID(record.scene, geometry, 0);
-  rtcReleaseGeometry(geometry);
   rtcCommitScene(record.scene);
   return true;
 }
