@@ -130,28 +130,30 @@ SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, SurfaceO
 
 namespace {
 
-/// The rays that leave the exact first hits of random_view_rays(box) on `mesh`: reflected about
-/// the smooth normal (angle-weighted vertex normals; about the face's normal where that would
-/// leave below the face), or with `ior` > 0 refracted into the solid (eta = 1 / ior; reflected
-/// where the refraction is total).
-SurfaceRays view_hit_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
-                          size_t count, SurfaceOffsets offsets, uint64_t seed, float ior) {
+/// The rays that leave the exact first hits of `rays` on `mesh` (a ray i with ignored[i] >= 0
+/// leaves that triangle), up to `count`: reflected about the smooth normal (angle-weighted vertex
+/// normals; about the face's normal where that would leave below the face), or with `eta` > 0
+/// refracted through the surface (eta: the index of refraction on the ray's side over the one
+/// beyond; reflected where the refraction is total).
+SurfaceRays rays_leaving_hits(const EmbreeMesh& embree, const TriangleMesh& mesh,
+                              const std::vector<Ray>& rays, const std::vector<int>& ignored,
+                              size_t count, SurfaceOffsets offsets, float eta) {
   const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
-  const std::vector<Ray> view = random_view_rays(box, 4 * count, seed);
-  std::vector<RayHit> hits(view.size());
-  tbb::parallel_for(size_t(0), view.size(), [&](size_t i) {
-    hits[i] = intersect(embree, view[i].origin, view[i].direction, 0.0f, view[i].t_max);
+  std::vector<RayHit> hits(rays.size());
+  tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
+    hits[i] = intersect(embree, rays[i].origin, rays[i].direction, rays[i].t_min, rays[i].t_max,
+                        ignored.empty() ? -1 : ignored[i]);
   });
   SurfaceRays out;
   out.self_t_min = 2.0f * offsets.self;
-  for (size_t i = 0; i < view.size() && out.rays.size() < count; ++i) {
+  for (size_t i = 0; i < rays.size() && out.rays.size() < count; ++i) {
     const RayHit& h = hits[i];
-    const glm::vec3 origin = view[i].origin + h.t * view[i].direction;
+    const glm::vec3 origin = rays[i].origin + h.t * rays[i].direction;
     if (!h.hit ||
         !std::isfinite(origin.x + origin.y + origin.z)) {  // t overflows at the 1e15 limit
       continue;
     }
-    const glm::vec3 d = view[i].direction;
+    const glm::vec3 d = glm::normalize(rays[i].direction);
     const glm::ivec3 t = mesh.triangles[size_t(h.triangle)];
     const glm::dvec3 smooth = (1.0 - h.u - h.v) * normals[size_t(t[0])] +
                               double(h.u) * normals[size_t(t[1])] +
@@ -160,9 +162,9 @@ SurfaceRays view_hit_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, co
     g = glm::dot(d, g) < 0.0f ? g : -g;
     glm::vec3 n = glm::length(smooth) > 0.0 ? glm::vec3(glm::normalize(smooth)) : g;
     n = glm::dot(d, n) < 0.0f ? n : -n;
-    glm::vec3 r = ior > 0.0f ? glm::refract(d, n, 1.0f / ior) : glm::vec3(0.0f);
-    if (ior > 0.0f && glm::dot(r, r) > 0.0f && glm::dot(r, g) < 0.0f) {
-      g = -g;  // into the solid
+    glm::vec3 r = eta > 0.0f ? glm::refract(d, n, eta) : glm::vec3(0.0f);
+    if (eta > 0.0f && glm::dot(r, r) > 0.0f && glm::dot(r, g) < 0.0f) {
+      g = -g;  // through the surface
     } else {
       r = glm::reflect(d, n);
       if (glm::dot(r, g) <= 0.0f) {
@@ -182,12 +184,20 @@ SurfaceRays view_hit_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, co
 
 SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
                                 size_t count, SurfaceOffsets offsets, uint64_t seed) {
-  return view_hit_rays(embree, mesh, box, count, offsets, seed, 0.0f);
+  return rays_leaving_hits(embree, mesh, random_view_rays(box, 4 * count, seed), {}, count, offsets,
+                           0.0f);
 }
 
 SurfaceRays glass_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
                                size_t count, SurfaceOffsets offsets, uint64_t seed, float ior) {
-  return view_hit_rays(embree, mesh, box, count, offsets, seed, ior);
+  return rays_leaving_hits(embree, mesh, random_view_rays(box, 4 * count, seed), {}, count, offsets,
+                           1.0f / ior);
+}
+
+SurfaceRays glass_inside_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
+                              size_t count, SurfaceOffsets offsets, uint64_t seed, float ior) {
+  const SurfaceRays into = glass_surface_rays(embree, mesh, box, 2 * count, offsets, seed, ior);
+  return rays_leaving_hits(embree, mesh, into.rays, into.triangles, count, offsets, ior);
 }
 
 }  // namespace gfield

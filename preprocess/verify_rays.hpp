@@ -59,5 +59,11 @@ SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
 SurfaceRays glass_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
                                size_t count, SurfaceOffsets offsets, uint64_t seed,
                                float ior = 1.5f);
+/// The glass path's next step: up to `count` rays leaving the exact hits of
+/// glass_surface_rays(... 2 * count ...) on the inside of the surface, refracted out into the open
+/// (facing +1) or, where the refraction is total, reflected back into the solid (facing -1).
+SurfaceRays glass_inside_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
+                              size_t count, SurfaceOffsets offsets, uint64_t seed,
+                              float ior = 1.5f);
 
 }  // namespace gfield

@@ -36,8 +36,16 @@
 GF_CONST int GF_NEWTON_ITERATIONS = 16;
 GF_CONST float GF_NEWTON_MAX_STEP = 8.0f;
 GF_CONST float GF_NEWTON_TOLERANCE = 1.0e-5f;
+// A Newton search stalls at a step where its squared residual stays above half the last one; it
+// gives up after GF_NEWTON_STALLS stalls in a row (near a root Newton's method converges
+// quadratically; a line passing beside the surface makes no such progress).
+GF_CONST int GF_NEWTON_STALLS = 2;
 // Least weight of the hitting pairs among the 16 for a chart border to count as a seam.
 GF_CONST float GF_SEAM_WEIGHT = 0.999f;
+// Least weight of the hitting pairs among the 16 for the refined lookup to search every candidate
+// on its own once its groups found no hit: the linear kernel's threshold for a hit. Below it the
+// neighbourhood says miss, and a ray there that hits is one the groups' searches found.
+GF_CONST float GF_PAIRS_WEIGHT = 0.25f;
 // A point at a chart border (across a seam, or on a patch with padding corners) is accepted only
 // when the ray's start lies farther than this many texels off the surface's tangent plane there:
 // a ray leaving the surface next to a chart border runs within a texel of the border's patches
@@ -50,9 +58,14 @@ GF_CONST float GF_SEAM_CLEARANCE = 2.0f;
 GF_CONST float GF_UNVERIFIED_MARGIN = 0.5f;
 // Crossings of the surface a ray leaves that gf_trace_leaving looks beyond at most.
 GF_CONST int GF_SELF_CROSSINGS = 2;
-// The refined lookup's candidates lie together when all are within GF_GROUP_TEXELS texels (max
-// norm) of the first.
-GF_CONST float GF_GROUP_TEXELS = 16.0f;
+// The refined lookup groups candidates that lie within GF_GROUP_REACH (uv, max norm) of a group's
+// first: a 16th of the image. The 16 pairs' lines lie a sample spacing apart, and where they hit
+// one surface their uvs spread over a part of the image that depends on the surface, not on the
+// image's resolution.
+GF_CONST float GF_GROUP_REACH = 0.0625f;
+// Once the refined lookup has verified a hit, a start whose surface point lies beyond it along the
+// ray by more than this many sample spacings is not searched.
+GF_CONST float GF_PRUNE_SPACINGS = 1.0f;
 
 struct GfHit {
   bool hit;       // false: miss (or an invalid ray)
@@ -235,6 +248,8 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
   vec4 t10 = vec4(0.0f);
   vec4 t01 = vec4(0.0f);
   vec4 t11 = vec4(0.0f);
+  float previous = GF_FAR;
+  int stalls = 0;
   for (int iteration = 0; iteration < GF_NEWTON_ITERATIONS; iteration++) {
     GF_COUNT(WORK_NEWTON_STEPS, 1);
     ivec2 c = gf_image_cell(x, n);
@@ -262,6 +277,12 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
       return covered == 4 ||
              (covered > 0 && gf_clear_of_start(uv, p, start, max(dot(pu, pu), dot(pv, pv))));
     }
+    float residual = dot(r, r);
+    stalls = residual > 0.5f * previous ? stalls + 1 : 0;
+    if (stalls >= GF_NEWTON_STALLS) {
+      return false;
+    }
+    previous = residual;
     float j11 = dot(pu, e1);
     float j12 = dot(pv, e1);
     float j21 = dot(pu, e2);
@@ -418,7 +439,7 @@ vec2 gf_pair_candidate(GF_IN(GfLine) line, int i, int j, GF_INOUT(GfLineHits) hi
   return gf_first_beyond(line, line.k_entry[i], line.k_exit[j], uv, hits);
 }
 
-// The 16 pairs' candidates in two groups: those within GF_GROUP_TEXELS texels (max norm) of the
+// The 16 pairs' candidates in two groups: those within GF_GROUP_REACH (uv, max norm) of the
 // first candidate, and those within that of the first candidate outside it. Away from
 // silhouettes and seams the candidates agree, and one Newton search from the first group's
 // weighted mean is the lookup; two groups are two surfaces (or two sides of a seam). Plain
@@ -469,7 +490,7 @@ GfCandidates gf_gather_candidates(GF_IN(GfLine) line) {
   GfCandidates c = gf_no_candidates();
   vec2 first0 = vec2(-1.0f);
   vec2 first1 = vec2(-1.0f);
-  float reach = GF_GROUP_TEXELS / float(gf_image_size());
+  float reach = GF_GROUP_REACH;
   for (int i = 0; i < 4; i++) {
     for (int j = 0; j < 4; j++) {
       GfLineHits hits;
@@ -583,8 +604,8 @@ bool gf_next_pair(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
 // that starts inside the box tries the nearest pair's candidate alone first (reading the lines
 // past the hits behind the origin costs most there). Then the 16 pairs' candidates: the groups
 // in their order along the ray, each from its mean and, where its heaviest candidate lies more
-// than a texel off that, from that one; then, where no group verified a hit or the candidates
-// lie on more than two surfaces, every candidate on its own.
+// than a texel off that, from that one; then, where the pairs whose lines hit carry at least
+// GF_PAIRS_WEIGHT, every candidate on its own.
 bool gf_next_start(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
   if (s.stage == GF_STAGE_NEAREST_PAIR) {
     s.stage = GF_STAGE_GROUP0;
@@ -614,12 +635,13 @@ bool gf_next_start(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
     }
   }
   s.from = GF_STAGE_PAIRS;
-  return gf_next_pair(line, s, uv);
+  return s.candidates.weight >= GF_PAIRS_WEIGHT && gf_next_pair(line, s, uv);
 }
 
-// GF_MODE_REFINED: Newton searches (gf_refine) from the starts of gf_next_start. A hit verified
-// in [t_min, t_max] from the nearest pair or the candidates' mean or heaviest is the answer;
-// searched on their own, the nearest of the candidates' verified hits is. None is a miss. When
+// GF_MODE_REFINED: Newton searches (gf_refine) from the starts of gf_next_start. The first hit
+// verified in [t_min, t_max] from the nearest pair or a group (in order along the ray) is the
+// answer; searched on their own, the nearest of the candidates' verified hits is. None is a
+// miss. When
 // nearly all of the neighbourhood's lines hit, the surface around the ray is closed and a chart
 // border there is a seam (unknown for the nearest pair alone: no seams then).
 GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
@@ -638,10 +660,18 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   float nearest_t = GF_FAR;
   vec2 uv;
   for (int visit = 0; visit < 4 + 32 + 1; visit++) {
-    // The groups' nearest hit is the answer when no candidate lies outside them.
-    bool groups_done = s.stage == GF_STAGE_PAIRS && s.from < GF_STAGE_PAIRS;
-    if ((groups_done && nearest.hit && s.candidates.together) || !gf_next_start(line, s, uv)) {
+    if (!gf_next_start(line, s, uv)) {
       break;
+    }
+    // Once a hit is verified, a start whose surface point lies beyond it cannot lead to a nearer
+    // one (GF_PRUNE_SPACINGS).
+    if (nearest.hit) {
+      float t_start = dot(gf_image_position_nearest(uv) - line.o, line.d) / dot(line.d, line.d);
+      if ((line.last ? -t_start : t_start) > nearest_t + GF_PRUNE_SPACINGS * 2.0f * line.margin) {
+        s.pair += s.deeper ? 1 : 0;
+        s.deeper = false;
+        continue;
+      }
     }
     vec3 p;
     bool seams = s.from > GF_STAGE_NEAREST_PAIR && s.candidates.weight >= GF_SEAM_WEIGHT;
@@ -658,13 +688,12 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
     }
     nearest = gf_hit(t, uv, p);
     nearest_t = along;
-    // One surface's candidates: the first verified hit is the answer.
-    bool one_surface = s.candidates.sum1.z == 0.0f && s.candidates.together;
-    if (s.from == GF_STAGE_NEAREST_PAIR || one_surface) {
+    // The nearest pair's hit is the answer, and a group's when no candidate lies outside the
+    // groups (the groups are in order along the ray: a hit of the first is the nearer).
+    if (s.from == GF_STAGE_NEAREST_PAIR || (s.from < GF_STAGE_PAIRS && s.candidates.together)) {
       return nearest;
     }
-    // A group's hit is kept (the other group may lie nearer); its heaviest candidate is not
-    // searched.
+    // A group's hit: its heaviest candidate is not searched.
     s.stage = s.from == GF_STAGE_GROUP0 ? GF_STAGE_GROUP1 : s.stage;
     s.stage = s.from == GF_STAGE_GROUP1 ? GF_STAGE_PAIRS : s.stage;
   }

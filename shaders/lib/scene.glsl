@@ -179,9 +179,10 @@ SelfLookup self_lookup(SceneHit hit, vec3 g, float offset) {
 // The nearest hit of o + t d (world, d unit) on object k with t in (t_min, t_max): for meshes the
 // field's first hit beyond t_min over its layers (a ray leaving the surface or inside the solid
 // sees the surface beyond its origin), or the exact one of its BVH. A mesh that the ray leaves
-// (self.object == k; o: object_epsilon(k, false) off the surface) is looked up as
-// gf_trace_leaving does from self.origin (a shadow ray, which looks from its own start, beyond
-// self.t_min). Each lookup is called once here: the shader holds one copy of it.
+// (self.object == k) is looked up as gf_trace_leaving does, from self.origin on the side
+// self.facing: a path ray that starts object_epsilon(k, false) off the surface looks beyond 2 of
+// them; a shadow ray, and a path ray from a point a lookup found (both start at self.origin),
+// beyond self.t_min. Each lookup is called once here: the shader holds one copy of it.
 SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, SelfLookup self) {
   vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
   vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
@@ -192,12 +193,12 @@ SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, SelfL
 #endif
 #if GF_FIELD_MESHES
     bool own = self.object == k;
-    bool leaving = own && self.origin != o;
-    float from = leaving ? 2.0f * object_epsilon(k, false, o) : (own ? self.t_min : t_min);
+    float from = own ? self.t_min : t_min;
+    if (own && self.origin != o) from = 2.0f * object_epsilon(k, false, o);
     vec3 ls = (objects[k].to_object * vec4(self.origin, 1.0f)).xyz;
     select_mesh(k);
     return world_mesh_hit(k, gf_trace_from(lo, ld, from, t_max, ls, self.t_min, self.facing,
-                                           SCENE_LOOKUP_MODE, leaving));
+                                           SCENE_LOOKUP_MODE, own));
 #endif
     return scene_miss();
   }
@@ -274,5 +275,6 @@ bool light_from(SceneHit hit, vec3 geometric_normal, vec3 incoming, int i, out v
   float falloff = point ? 1.0f / (distance * distance) : 1.0f;
   radiance = hit.albedo * lights[i].color.rgb * cosine * falloff;
   self = self_lookup(hit, g, shadow_epsilon(hit));
+  self.facing = 0.0f;
   return true;
 }
