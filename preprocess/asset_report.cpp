@@ -1,5 +1,6 @@
 #include "preprocess/asset_report.hpp"
 
+#include "gfield/asset_source.hpp"
 #include "gfield/file_read.hpp"
 
 namespace gfield {
@@ -70,7 +71,7 @@ AssetReport asset_report_from_json(const nlohmann::json& j) {
   r.source_path = j.at("source_path").get<std::string>();
   r.build_id = j.at("build_id").get<std::string>();
   r.inputs = j.at("inputs");
-  if (!built_mesh_from_report(j, r.built_mesh))
+  if (BuiltMesh mesh; !built_mesh_from_inputs(r.inputs, mesh))
     throw nlohmann::json::other_error::create(501, "no record of its mesh (inputs.mesh)", &j);
   r.mesh_part = j.value("mesh_part", std::string());
   r.warnings = j.at("warnings").get<std::vector<std::string>>();

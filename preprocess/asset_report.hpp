@@ -9,7 +9,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gfield/asset_source.hpp"
 #include "gfield/box.hpp"
 #include "gfield/exr_io.hpp"
 #include "preprocess/asset_files.hpp"
@@ -35,9 +34,8 @@ struct AssetReport {
   std::string source_path;  ///< its absolute path when built (printable)
   std::string build_id;     ///< gfield/build_id.hpp
   /// The build's hashed inputs (build_inputs.hpp, BuildInputs::record): kept as the JSON that
-  /// was hashed; `built_mesh` is its record of the mesh file.
+  /// was hashed; built_mesh_from_inputs reads its record of the mesh file.
   nlohmann::json inputs = nlohmann::json::object();
-  BuiltMesh built_mesh;
   std::string mesh_part;              ///< the glTF mesh built ("": the whole file)
   std::vector<std::string> warnings;  ///< the mesh reader's (printable)
   TopologyReport topology;            ///< of the mesh as read

@@ -21,14 +21,11 @@ std::string short_hash(const std::string& hex) {
 
 }  // namespace
 
-bool built_mesh_from_report(const nlohmann::json& report, BuiltMesh& mesh) {
-  if (!report.is_object())
+bool built_mesh_from_inputs(const nlohmann::json& inputs, BuiltMesh& mesh) {
+  if (!inputs.is_object())
     return false;
-  const auto inputs = report.find("inputs");
-  if (inputs == report.end() || !inputs->is_object())
-    return false;
-  const auto record = inputs->find("mesh");
-  if (record == inputs->end() || !record->is_object())
+  const auto record = inputs.find("mesh");
+  if (record == inputs.end() || !record->is_object())
     return false;
   const auto bytes = record->find("bytes"), sha256 = record->find("sha256");
   if (bytes == record->end() || !bytes->is_number_unsigned() || sha256 == record->end() ||
@@ -38,6 +35,13 @@ bool built_mesh_from_report(const nlohmann::json& report, BuiltMesh& mesh) {
   mesh.sha256 = sha256->get<std::string>();
   mesh.file = record->value("file", std::string("?"));
   return true;
+}
+
+bool built_mesh_from_report(const nlohmann::json& report, BuiltMesh& mesh) {
+  if (!report.is_object())
+    return false;
+  const auto inputs = report.find("inputs");
+  return inputs != report.end() && built_mesh_from_inputs(*inputs, mesh);
 }
 
 std::string asset_report_path(const std::string& geometry_image) {

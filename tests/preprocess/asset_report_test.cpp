@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gfield/asset_source.hpp"
 #include "preprocess/asset_build.hpp"
 #include "preprocess/asset_report.hpp"
 #include "preprocess/verify.hpp"
@@ -63,9 +64,10 @@ TEST_F(AssetReportTest, TheWrittenReportIsTheBuildsReport) {
   EXPECT_EQ(asset_report_to_json(*built_), written_);
   ASSERT_TRUE(built_->accuracy.has_value());
   EXPECT_EQ(built_->accuracy->references.size(), 2u);  // the built mesh and spot.obj
-  EXPECT_EQ(built_->built_mesh.file, "spot.obj");
-  EXPECT_EQ(built_->built_mesh.bytes,
-            fs::file_size(std::string(build_paths::mesh_dir()) + "/spot.obj"));
+  BuiltMesh mesh;
+  ASSERT_TRUE(built_mesh_from_inputs(built_->inputs, mesh));
+  EXPECT_EQ(mesh.file, "spot.obj");
+  EXPECT_EQ(mesh.bytes, fs::file_size(std::string(build_paths::mesh_dir()) + "/spot.obj"));
 }
 
 TEST_F(AssetReportTest, ReadingAndWritingAgainGivesTheSameJson) {

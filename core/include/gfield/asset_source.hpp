@@ -18,8 +18,11 @@ struct BuiltMesh {
   std::string sha256;       ///< SHA-256 of its bytes, hex
 };
 
-/// The record of the mesh in `report` (an asset report's JSON). False where it holds none of
-/// that shape.
+/// The record of the mesh in a build's hashed inputs (an asset report's "inputs"). False where
+/// they hold none of that shape.
+bool built_mesh_from_inputs(const nlohmann::json& inputs, BuiltMesh& mesh);
+/// The record of the mesh in `report` (an asset report's JSON): built_mesh_from_inputs of its
+/// "inputs".
 bool built_mesh_from_report(const nlohmann::json& report, BuiltMesh& mesh);
 
 /// The report of the asset whose geometry image is `geometry_image` (NAME.gimage.exr ->
