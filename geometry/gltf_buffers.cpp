@@ -17,7 +17,7 @@ bool is_meshopt_fallback(const nlohmann::json& buffer) {
 
 bool read_gltf_buffers(const nlohmann::json& document, const std::string& folder,
                        const std::string& bin_chunk, std::vector<GltfBufferBytes>& buffers,
-                       CheckFailure& failure) {
+                       JsonFailure& failure) {
   buffers.clear();
   const nlohmann::json empty = nlohmann::json::array();
   const nlohmann::json& list = document.contains("buffers") ? document["buffers"] : empty;

@@ -28,6 +28,6 @@ bool is_meshopt_fallback(const nlohmann::json& buffer);
 /// `failure` for data that does not decode or a file that changed since it was checked.
 bool read_gltf_buffers(const nlohmann::json& document, const std::string& folder,
                        const std::string& bin_chunk, std::vector<GltfBufferBytes>& buffers,
-                       CheckFailure& failure);
+                       JsonFailure& failure);
 
 }  // namespace gfield

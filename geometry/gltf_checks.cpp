@@ -102,7 +102,7 @@ bool check_index(const json& value, size_t size, const char* target, std::string
   return true;
 }
 
-bool check_references(const json& document, CheckFailure& failure) {
+bool check_references(const json& document, JsonFailure& failure) {
   for (const auto& [pattern, target] : kReferences) {
     std::vector<std::pair<const json*, std::string>> found;
     collect(document, pattern, "", found);
@@ -132,7 +132,7 @@ bool check_references(const json& document, CheckFailure& failure) {
 
 /// Every top-level array within kMaxGltfElements, the materials within kMaxMeshMaterials (as
 /// every mesh format's).
-bool check_array_sizes(const json& document, CheckFailure& failure) {
+bool check_array_sizes(const json& document, JsonFailure& failure) {
   if (array_size(document, "materials") > kMaxMeshMaterials) {
     failure = {"/materials", std::to_string(array_size(document, "materials")) +
                                  " materials, more than the limit of " +
@@ -152,7 +152,7 @@ bool check_array_sizes(const json& document, CheckFailure& failure) {
 
 /// The parent of every node (-1: a root) from the nodes' children; false with `failure` for a
 /// node that is its own child or is the child of two nodes. One visit per node and per child.
-bool node_parents(const json& document, std::vector<std::int64_t>& parent, CheckFailure& failure,
+bool node_parents(const json& document, std::vector<std::int64_t>& parent, JsonFailure& failure,
                   std::uint64_t& visits) {
   const size_t nodes = array_size(document, "nodes");
   parent.assign(nodes, -1);
@@ -185,7 +185,7 @@ bool node_parents(const json& document, std::vector<std::int64_t>& parent, Check
 /// from the roots down (each node once), then from an unreached node up to the cycle above it
 /// (each node once more). False with `failure` naming the cycle's nodes.
 bool check_no_cycle(const json& document, const std::vector<std::int64_t>& parent,
-                    CheckFailure& failure, std::uint64_t& visits) {
+                    JsonFailure& failure, std::uint64_t& visits) {
   const size_t nodes = parent.size();
   std::vector<char> reached(nodes, 0);
   std::vector<size_t> stack;
@@ -225,7 +225,7 @@ bool check_no_cycle(const json& document, const std::vector<std::int64_t>& paren
 
 }  // namespace
 
-bool check_node_forest(const json& document, CheckFailure& failure, std::uint64_t& visits) {
+bool check_node_forest(const json& document, JsonFailure& failure, std::uint64_t& visits) {
   std::vector<std::int64_t> parent;
   if (!node_parents(document, parent, failure, visits) ||
       !check_no_cycle(document, parent, failure, visits))
@@ -260,7 +260,7 @@ std::string uri_scheme(const std::string& uri) {
 /// Buffer and image URIs: data: URIs, or relative paths inside `folder` (the glTF file's)
 /// unless `outside` is kAllowed; checked before any file they name is touched.
 bool check_uris(const json& document, const std::string& folder, OutsidePaths outside,
-                CheckFailure& failure) {
+                JsonFailure& failure) {
   std::vector<std::pair<const json*, std::string>> uris;
   collect(document, "buffers/*/uri", "", uris);
   collect(document, "images/*/uri", "", uris);
@@ -289,7 +289,7 @@ bool check_uris(const json& document, const std::string& folder, OutsidePaths ou
 /// when it is not one or above `max`.
 bool unsigned_member(const json& object, const std::string& pointer, const char* key,
                      std::uint64_t fallback, std::uint64_t max, std::uint64_t& value,
-                     CheckFailure& failure) {
+                     JsonFailure& failure) {
   value = fallback;
   if (!object.is_object() || !object.contains(key)) {
     return true;
@@ -306,7 +306,7 @@ bool unsigned_member(const json& object, const std::string& pointer, const char*
 
 /// Buffers: present on disk with their byteLength (external), within the BIN chunk (.glb).
 bool check_buffers(const json& document, const std::string& folder, std::int64_t bin_bytes,
-                   std::vector<std::uint64_t>& lengths, CheckFailure& failure) {
+                   std::vector<std::uint64_t>& lengths, JsonFailure& failure) {
   for (size_t b = 0; b < array_size(document, "buffers"); ++b) {
     const json& buffer = document["buffers"][b];
     const std::string pointer = json_pointer_child("/buffers", b);
@@ -351,7 +351,7 @@ bool check_buffers(const json& document, const std::string& folder, std::int64_t
 
 /// Buffer views within their buffers; `extents` receives each view's byteLength.
 bool check_buffer_views(const json& document, const std::vector<std::uint64_t>& buffers,
-                        std::vector<std::uint64_t>& lengths, CheckFailure& failure) {
+                        std::vector<std::uint64_t>& lengths, JsonFailure& failure) {
   for (size_t v = 0; v < array_size(document, "bufferViews"); ++v) {
     const json& view = document["bufferViews"][v];
     const std::string pointer = json_pointer_child("/bufferViews", v);
@@ -379,7 +379,7 @@ bool check_buffer_views(const json& document, const std::vector<std::uint64_t>& 
 
 /// Accessors: valid types, within their buffer views.
 bool check_accessors(const json& document, const std::vector<std::uint64_t>& views,
-                     CheckFailure& failure) {
+                     JsonFailure& failure) {
   for (size_t a = 0; a < array_size(document, "accessors"); ++a) {
     const json& accessor = document["accessors"][a];
     const std::string pointer = json_pointer_child("/accessors", a);
@@ -471,7 +471,7 @@ std::string decode_uri(const std::string& uri) {
 }
 
 bool check_gltf_json(const nlohmann::json& document, const std::string& folder,
-                     std::int64_t bin_bytes, OutsidePaths outside, CheckFailure& failure) {
+                     std::int64_t bin_bytes, OutsidePaths outside, JsonFailure& failure) {
   if (!document.is_object()) {
     failure = {"", "the document is not a JSON object"};
     return false;

@@ -52,7 +52,7 @@ std::uint64_t element_bytes(const json& a) {
 
 /// The bytes everything decodes to: buffers, meshopt views, Draco accessors; false with
 /// `failure` when they exceed kMaxMeshFileBytes (checked before any decoder runs).
-bool check_budget(const json& document, CheckFailure& failure) {
+bool check_budget(const json& document, JsonFailure& failure) {
   std::uint64_t total = 0;
   for (const json& buffer : array_of(document, "buffers"))
     total += is_meshopt_fallback(buffer) ? 0 : buffer.value("byteLength", std::uint64_t(0));
@@ -93,7 +93,7 @@ std::uint64_t append(std::string& bin, const std::string& bytes) {
 /// Every buffer view into the one buffer of `bin`: plain views moved by their buffer's offset,
 /// meshopt views decoded.
 bool rewrite_views(const json& document, const std::vector<GltfBufferBytes>& buffers, json& out,
-                   std::string& bin, CheckFailure& failure) {
+                   std::string& bin, JsonFailure& failure) {
   std::vector<std::uint64_t> offsets;
   for (const GltfBufferBytes& b : buffers)
     offsets.push_back(b.fallback ? 0 : append(bin, b.bytes));
@@ -122,7 +122,7 @@ bool rewrite_views(const json& document, const std::vector<GltfBufferBytes>& buf
 
 /// Every Draco primitive decoded: its accessors given new buffer views at the end of `out`'s.
 bool rewrite_draco(const json& document, json& out, std::string& bin, std::set<int>& decoded,
-                   CheckFailure& failure) {
+                   JsonFailure& failure) {
   std::map<size_t, std::string> filled;  // accessor -> bytes, for every Draco primitive
   const bool ok = for_each_draco_primitive(document, [&](size_t m, size_t p, const json& ext) {
     const json* view = json_at(ext, {"bufferView"});
@@ -167,7 +167,7 @@ bool gltf_is_compressed(const json& document) {
 
 bool decompress_gltf(const json& document, const std::string& folder, const std::string& bin_chunk,
                      json& out, std::string& bin, std::set<int>& draco_accessors,
-                     CheckFailure& failure) {
+                     JsonFailure& failure) {
   std::vector<GltfBufferBytes> buffers;
   if (!check_budget(document, failure) ||
       !read_gltf_buffers(document, folder, bin_chunk, buffers, failure))

@@ -28,6 +28,6 @@ bool gltf_is_compressed(const nlohmann::json& document);
 /// `draco_accessors` receives the accessors decoded from Draco.
 bool decompress_gltf(const nlohmann::json& document, const std::string& folder,
                      const std::string& bin_chunk, nlohmann::json& json, std::string& bin,
-                     std::set<int>& draco_accessors, CheckFailure& failure);
+                     std::set<int>& draco_accessors, JsonFailure& failure);
 
 }  // namespace gfield

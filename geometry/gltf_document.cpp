@@ -95,7 +95,7 @@ bool parse_with_tinygltf(const std::string& data, const std::string& json, bool 
 
 /// "FILE:LINE:COLUMN: POINTER: what" for `failure`, located in `located`.
 std::string located_failure(const std::string& filename, const LocatedJson& located,
-                            const CheckFailure& failure) {
+                            const JsonFailure& failure) {
   const JsonLocation where = located.at(failure.pointer);
   return filename + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": " +
          printable(failure.pointer + ": " + failure.what);
@@ -126,7 +126,7 @@ bool load_gltf_document(const std::string& filename, OutsidePaths outside, GltfD
     return false;
   }
   const std::string folder = fs::path(filename).parent_path().string();
-  CheckFailure failure;
+  JsonFailure failure;
   if (!check_gltf_json(located.value, folder, bin_bytes, outside, failure)) {
     error = located_failure(filename, located, failure);
     return false;

@@ -141,7 +141,7 @@ bool decode_mesh(const std::string& compressed, std::unique_ptr<draco::Mesh>& me
 
 bool decode_draco_primitive(const json& document, size_t mesh_index, size_t primitive_index,
                             const std::string& compressed, std::map<size_t, std::string>& accessors,
-                            CheckFailure& failure) {
+                            JsonFailure& failure) {
   const json& primitive = document["meshes"][mesh_index]["primitives"][primitive_index];
   const json& ext = primitive["extensions"]["KHR_draco_mesh_compression"];
   failure.pointer = json_pointer_child(

@@ -23,6 +23,6 @@ namespace gfield {
 /// at the extension's pointer.
 bool decode_draco_primitive(const nlohmann::json& document, size_t mesh, size_t primitive,
                             const std::string& compressed, std::map<size_t, std::string>& accessors,
-                            CheckFailure& failure);
+                            JsonFailure& failure);
 
 }  // namespace gfield

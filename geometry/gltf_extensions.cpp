@@ -61,7 +61,7 @@ bool gltf_extension_implemented(const std::string& name) {
   return std::binary_search(known.begin(), known.end(), name);
 }
 
-bool check_required_extensions(const json& document, CheckFailure& failure) {
+bool check_required_extensions(const json& document, JsonFailure& failure) {
   if (!document.contains("extensionsRequired"))
     return true;
   const json& required = document["extensionsRequired"];

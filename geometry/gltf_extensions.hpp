@@ -22,7 +22,7 @@ bool gltf_extension_implemented(const std::string& name);
 
 /// The document's extensionsRequired: false with `failure` at "/extensionsRequired/I" for the
 /// first entry that is not a string or names an extension gfield does not implement.
-bool check_required_extensions(const nlohmann::json& document, CheckFailure& failure);
+bool check_required_extensions(const nlohmann::json& document, JsonFailure& failure);
 
 /// Appends a warning for every place of `document` (glTF file `file`) that uses an extension
 /// gfield does not implement: "FILE: materials[M] 'NAME': extension X is ignored (...)" below a

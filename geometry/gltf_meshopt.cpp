@@ -79,7 +79,7 @@ int run_decoder(const MeshoptView& m, const unsigned char* source, std::string& 
 
 bool decode_meshopt_view(const json& document, size_t index,
                          const std::vector<GltfBufferBytes>& buffers, std::string& decoded,
-                         CheckFailure& failure) {
+                         JsonFailure& failure) {
   const json& view = document["bufferViews"][index];
   const std::string pointer = json_pointer_child(
       json_pointer_child(json_pointer_child("/bufferViews", index), "extensions"),

@@ -22,6 +22,6 @@ namespace gfield {
 /// view's byteLength. False with `failure` at the extension's pointer.
 bool decode_meshopt_view(const nlohmann::json& document, size_t index,
                          const std::vector<GltfBufferBytes>& buffers, std::string& decoded,
-                         CheckFailure& failure);
+                         JsonFailure& failure);
 
 }  // namespace gfield

@@ -37,7 +37,7 @@ struct PolygonAttributes {
 };
 
 /// Where reading stopped: the 1-based line of a text file (0 for binary data or the whole file)
-/// and what is wrong.
+/// and what is wrong (JSON documents say where by a pointer: JsonFailure, gfield/located_json.hpp).
 struct ReadFailure {
   size_t line = 0;
   std::string what;

@@ -32,7 +32,7 @@ Camera read_camera(const SceneReader& r, const std::string& p) {
   c.fov_degrees = float(r.number(p, "fov", c.fov_degrees));
   std::string key;
   if (const std::string problem = camera_problem(c, &key); !problem.empty())
-    throw SceneError{key.empty() ? p : json_pointer_child(p, key), problem};
+    throw JsonFailure{key.empty() ? p : json_pointer_child(p, key), problem};
   return c;
 }
 
@@ -43,7 +43,7 @@ EnvironmentDesc read_environment(const SceneReader& r, const std::string& p) {
   e.intensity = float(r.intensity(p));
   auto forbid = [&](const char* key) {
     if (r.has(p, key)) {
-      throw SceneError{
+      throw JsonFailure{
           json_pointer_child(p, key),
           std::string("\"") + key + "\" does not apply to a \"" + type + "\" environment"};
     }
@@ -70,16 +70,16 @@ EnvironmentDesc read_environment(const SceneReader& r, const std::string& p) {
     r.require(p, "faces");
     const std::string fp = json_pointer_child(p, "faces");
     if (!r.at(fp).is_array() || r.at(fp).size() != 6) {
-      throw SceneError{fp, "expected 6 files in the order +X, -X, +Y, -Y, +Z, -Z"};
+      throw JsonFailure{fp, "expected 6 files in the order +X, -X, +Y, -Y, +Z, -Z"};
     }
     for (size_t f = 0; f < 6; ++f)
       e.faces[f] = r.file(json_pointer_child(fp, f));
     forbid("color");
     forbid("file");
   } else {
-    throw SceneError{json_pointer_child(p, "type"),
-                     "unknown environment type \"" + type + "\" (expected " +
-                         list_names({"studio", "constant", "equirect", "cube"}) + ")"};
+    throw JsonFailure{json_pointer_child(p, "type"),
+                      "unknown environment type \"" + type + "\" (expected " +
+                          list_names({"studio", "constant", "equirect", "cube"}) + ")"};
   }
   return e;
 }
@@ -95,22 +95,22 @@ Light read_light(const SceneReader& r, const std::string& p) {
     l.type = LightType::kDirectional;
     r.require(p, "direction");
     if (r.has(p, "position")) {
-      throw SceneError{json_pointer_child(p, "position"), "a directional light has no position"};
+      throw JsonFailure{json_pointer_child(p, "position"), "a directional light has no position"};
     }
     const glm::vec3 d = r.vec3(json_pointer_child(p, "direction"));
     if (glm::length(d) <= 0.0f)
-      throw SceneError{json_pointer_child(p, "direction"), "zero direction"};
+      throw JsonFailure{json_pointer_child(p, "direction"), "zero direction"};
     l.direction = glm::normalize(d);
   } else if (type == "point") {
     l.type = LightType::kPoint;
     r.require(p, "position");
     if (r.has(p, "direction")) {
-      throw SceneError{json_pointer_child(p, "direction"), "a point light has no direction"};
+      throw JsonFailure{json_pointer_child(p, "direction"), "a point light has no direction"};
     }
     l.position = r.vec3(json_pointer_child(p, "position"));
   } else {
-    throw SceneError{json_pointer_child(p, "type"),
-                     "unknown light type \"" + type + "\" (expected directional or point)"};
+    throw JsonFailure{json_pointer_child(p, "type"),
+                      "unknown light type \"" + type + "\" (expected directional or point)"};
   }
   return l;
 }
@@ -134,14 +134,14 @@ TextureType read_texture(const SceneReader& r, const std::string& p, ShapeType s
     return TextureType::kColorChart;
   }
   if (texture == "mesh" || texture == "checker" || texture == "color-chart") {
-    throw SceneError{tp, mesh ? "a mesh takes \"mesh\" (its own texture, vertex or material "
-                                "colours) or \"none\"; procedural textures apply to analytic "
-                                "shapes"
-                              : "\"mesh\" applies to meshes (analytic shapes take none, "
-                                "checker or color-chart)"};
+    throw JsonFailure{tp, mesh ? "a mesh takes \"mesh\" (its own texture, vertex or material "
+                                 "colours) or \"none\"; procedural textures apply to analytic "
+                                 "shapes"
+                               : "\"mesh\" applies to meshes (analytic shapes take none, "
+                                 "checker or color-chart)"};
   }
-  throw SceneError{tp, "unknown texture \"" + texture + "\" (expected " +
-                           (mesh ? "mesh or none" : "none, checker or color-chart") + ")"};
+  throw JsonFailure{tp, "unknown texture \"" + texture + "\" (expected " +
+                            (mesh ? "mesh or none" : "none, checker or color-chart") + ")"};
 }
 
 /// A checker texture's "colors" (two colours) and "scale" (squares along u and v: a number or
@@ -150,7 +150,7 @@ void read_checker(const SceneReader& r, const std::string& p, Material& m) {
   if (r.has(p, "colors")) {
     const std::string cp = json_pointer_child(p, "colors");
     if (!r.at(cp).is_array() || r.at(cp).size() != 2) {
-      throw SceneError{cp, "expected two colours"};
+      throw JsonFailure{cp, "expected two colours"};
     }
     for (size_t i = 0; i < 2; ++i) {
       m.checker_colors[i] = r.color(json_pointer_child(cp, i));
@@ -164,10 +164,10 @@ void read_checker(const SceneReader& r, const std::string& p, Material& m) {
       m.checker_scale = glm::vec2(float(r.number(json_pointer_child(sp, size_t(0)))),
                                   float(r.number(json_pointer_child(sp, size_t(1)))));
     } else {
-      throw SceneError{sp, "expected a number or [squares along u, squares along v]"};
+      throw JsonFailure{sp, "expected a number or [squares along u, squares along v]"};
     }
     if (!(m.checker_scale.x > 0.0f && m.checker_scale.y > 0.0f)) {
-      throw SceneError{sp, "must be positive"};
+      throw JsonFailure{sp, "must be positive"};
     }
   }
 }
@@ -184,7 +184,7 @@ void read_ior(const SceneReader& r, const std::string& p, Material& m) {
       for (const IorPreset& preset : ior_presets()) {
         names += (names.empty() ? "" : ", ") + std::string(preset.name);
       }
-      throw SceneError{
+      throw JsonFailure{
           ip, "unknown refractive index preset \"" + m.ior_preset + "\" (known: " + names + ")"};
     }
     m.ior = *index;
@@ -203,8 +203,8 @@ Material read_material(const SceneReader& r, const std::string& p, ShapeType sha
       const bool ok = std::any_of(allowed.begin(), allowed.end(),
                                   [&](const char* a) { return std::string(a) == key; });
       if (!ok && r.has(p, key)) {
-        throw SceneError{json_pointer_child(p, key),
-                         std::string("\"") + key + "\" does not apply to a " + type + " material"};
+        throw JsonFailure{json_pointer_child(p, key),
+                          std::string("\"") + key + "\" does not apply to a " + type + " material"};
       }
     }
   };
@@ -218,8 +218,8 @@ Material read_material(const SceneReader& r, const std::string& p, ShapeType sha
     if (m.texture != TextureType::kChecker) {
       for (const char* key : {"colors", "scale"}) {
         if (r.has(p, key)) {
-          throw SceneError{json_pointer_child(p, key),
-                           std::string("\"") + key + "\" applies to the checker texture only"};
+          throw JsonFailure{json_pointer_child(p, key),
+                            std::string("\"") + key + "\" applies to the checker texture only"};
         }
       }
     }
@@ -232,13 +232,13 @@ Material read_material(const SceneReader& r, const std::string& p, ShapeType sha
     m.type = MaterialType::kDielectric;
     only({"ior", "absorption"});
     if (!shape_is_closed(shape)) {
-      throw SceneError{p, std::string("a dielectric needs a closed shape (a ") + shape_name(shape) +
-                              " bounds no volume)"};
+      throw JsonFailure{p, std::string("a dielectric needs a closed shape (a ") +
+                               shape_name(shape) + " bounds no volume)"};
     }
     read_ior(r, p, m);
     m.absorption = r.color(p, "absorption", m.absorption);
   } else {
-    throw SceneError{
+    throw JsonFailure{
         json_pointer_child(p, "type"),
         "unknown material type \"" + type + "\" (expected diffuse, mirror or dielectric)"};
   }
@@ -278,11 +278,11 @@ ShapeType read_shape_type(const SceneReader& r, const std::string& p) {
   const auto found = std::find_if(std::begin(shapes), std::end(shapes),
                                   [&](const auto& s) { return shape == s.first; });
   if (found == std::end(shapes)) {
-    throw SceneError{json_pointer_child(p, "shape"),
-                     "unknown shape \"" + shape + "\" (expected " +
-                         list_names({"mesh", "sphere", "quad", "box", "cylinder", "slab",
-                                     "hollow-cylinder", "gltf"}) +
-                         ")"};
+    throw JsonFailure{json_pointer_child(p, "shape"),
+                      "unknown shape \"" + shape + "\" (expected " +
+                          list_names({"mesh", "sphere", "quad", "box", "cylinder", "slab",
+                                      "hollow-cylinder", "gltf"}) +
+                          ")"};
   }
   return found->second;
 }
@@ -315,8 +315,8 @@ void check_shape_keys(const SceneReader& r, const std::string& p, ShapeType type
   }
   for (auto it = r.at(p).begin(); it != r.at(p).end(); ++it) {
     if (!allowed.count(it.key())) {
-      throw SceneError{json_pointer_child(p, it.key()),
-                       "\"" + it.key() + "\" does not apply to a " + shape_name(type)};
+      throw JsonFailure{json_pointer_child(p, it.key()),
+                        "\"" + it.key() + "\" does not apply to a " + shape_name(type)};
     }
   }
 }
@@ -328,11 +328,11 @@ glm::vec3 read_size2(const SceneReader& r, const std::string& p, glm::vec3 fallb
   const std::string sp = json_pointer_child(p, "size");
   const json& v = r.at(sp);
   if (!v.is_array() || v.size() != 2)
-    throw SceneError{sp, "expected [width, height]"};
+    throw JsonFailure{sp, "expected [width, height]"};
   glm::vec3 out(float(r.number(json_pointer_child(sp, size_t(0)))),
                 float(r.number(json_pointer_child(sp, size_t(1)))), 0.0f);
   if (!(out.x > 0.0f && out.y > 0.0f))
-    throw SceneError{sp, "sizes must be positive"};
+    throw JsonFailure{sp, "sizes must be positive"};
   return out;
 }
 
@@ -351,7 +351,7 @@ void read_mesh_shape(const SceneReader& r, const std::string& p, Scene& scene, S
       r.has(p, "gfield") ? r.file(json_pointer_child(p, "gfield")) : beside(file, "gfield");
   const std::string normals = r.string(p, "normals", "smooth");
   if (normals != "smooth" && normals != "flat") {
-    throw SceneError{json_pointer_child(p, "normals"), "expected \"smooth\" or \"flat\""};
+    throw JsonFailure{json_pointer_child(p, "normals"), "expected \"smooth\" or \"flat\""};
   }
   s.smooth_normals = normals == "smooth";
   std::error_code ec;
@@ -367,7 +367,7 @@ void read_mesh_shape(const SceneReader& r, const std::string& p, Scene& scene, S
   }
   if ((r.has(p, "gimage") && same->geometry_image != asset.geometry_image) ||
       (r.has(p, "gfield") && same->geometry_field != asset.geometry_field)) {
-    throw SceneError{p, "instances of one mesh file must name the same gimage/gfield"};
+    throw JsonFailure{p, "instances of one mesh file must name the same gimage/gfield"};
   }
   s.mesh = int(same - scene.meshes.begin());
 }
@@ -388,7 +388,7 @@ void read_analytic_shape(const SceneReader& r, const std::string& p, Shape& s) {
         const std::string sp = json_pointer_child(p, "size");
         s.size = r.at(sp).is_number() ? glm::vec3(float(r.number(sp))) : r.vec3(sp);
         if (!(s.size.x > 0.0f && s.size.y > 0.0f && s.size.z > 0.0f)) {
-          throw SceneError{sp, "sizes must be positive"};
+          throw JsonFailure{sp, "sizes must be positive"};
         }
       }
       break;
@@ -405,8 +405,8 @@ void read_analytic_shape(const SceneReader& r, const std::string& p, Shape& s) {
       s.height = float(r.positive(p, "height", 2.0));
       s.thickness = float(r.positive(p, "thickness", 0.1));
       if (!(s.thickness < s.radius)) {
-        throw SceneError{json_pointer_child(p, "thickness"),
-                         "wall thickness must be smaller than the radius"};
+        throw JsonFailure{json_pointer_child(p, "thickness"),
+                          "wall thickness must be smaller than the radius"};
       }
       break;
   }
@@ -433,8 +433,8 @@ SceneObject read_object(const SceneReader& r, const std::string& p, Scene& scene
     shape_bounds(s, lo, hi);
     const double reach = box_reach(object_to_world(o.transform), lo, hi);
     if (reach > kMaxCoordinate) {
-      throw SceneError{p, "reaches " + SceneReader::fmt(reach) +
-                              " in world coordinates after its transform (limit 1e15)"};
+      throw JsonFailure{p, "reaches " + SceneReader::fmt(reach) +
+                               " in world coordinates after its transform (limit 1e15)"};
     }
   }
   o.material = read_material(r, json_pointer_child(p, "material"), s.type);
@@ -503,11 +503,11 @@ bool parse_scene(const std::string& text, const std::string& filename, Scene& sc
                            outside);
   try {
     read_scene(reader, result);
-  } catch (const SceneError& e) {
+  } catch (const JsonFailure& e) {
     const JsonLocation where = document.at(e.pointer);
     const std::string path = readable_path(e.pointer);
     error = filename + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
-            ": " + printable((path.empty() ? "" : path + ": ") + e.message);
+            ": " + printable((path.empty() ? "" : path + ": ") + e.what);
     return false;
   }
   for (SceneInclude& include : result.includes) {

@@ -61,34 +61,34 @@ void SceneReader::object(const std::string& pointer,
                          std::initializer_list<const char*> keys) const {
   const json& v = at(pointer);
   if (!v.is_object())
-    throw SceneError{pointer, "expected an object"};
+    throw JsonFailure{pointer, "expected an object"};
   for (auto it = v.begin(); it != v.end(); ++it) {
     const bool known =
         std::any_of(keys.begin(), keys.end(), [&](const char* k) { return it.key() == k; });
     if (!known) {
-      throw SceneError{json_pointer_child(pointer, it.key()),
-                       "unknown key \"" + it.key() + "\" (expected " + list_names(keys) + ")"};
+      throw JsonFailure{json_pointer_child(pointer, it.key()),
+                        "unknown key \"" + it.key() + "\" (expected " + list_names(keys) + ")"};
     }
   }
 }
 
 void SceneReader::require(const std::string& pointer, const char* key) const {
   if (!has(pointer, key)) {
-    throw SceneError{pointer, std::string("missing key \"") + key + "\""};
+    throw JsonFailure{pointer, std::string("missing key \"") + key + "\""};
   }
 }
 
 double SceneReader::raw_number(const std::string& pointer) const {
   const json& v = at(pointer);
   if (!v.is_number())
-    throw SceneError{pointer, "expected a number"};
+    throw JsonFailure{pointer, "expected a number"};
   return v.get<double>();
 }
 
 double SceneReader::number(const std::string& pointer) const {
   const double d = raw_number(pointer);
   if (std::abs(d) > kMaxCoordinate)
-    throw SceneError{pointer, "number " + fmt(d) + " is beyond the limit of 1e15"};
+    throw JsonFailure{pointer, "number " + fmt(d) + " is beyond the limit of 1e15"};
   return d;
 }
 
@@ -96,7 +96,7 @@ double SceneReader::in_range(const std::string& pointer, double lo, double hi, c
                              const std::string& what) const {
   const double d = raw_number(pointer);
   if (!(d >= lo && d <= hi)) {
-    throw SceneError{
+    throw JsonFailure{
         pointer, (what.empty() ? "" : what + " ") + "must be in " + range + " (is " + fmt(d) + ")"};
   }
   return d;
@@ -108,14 +108,14 @@ glm::dvec3 SceneReader::vec3_in_range(const std::string& pointer, double lo, dou
   if (v.is_number())
     return glm::dvec3(in_range(pointer, lo, hi, range, what));
   if (!v.is_array() || v.size() != 3)
-    throw SceneError{pointer, "expected a number or [x, y, z]"};
+    throw JsonFailure{pointer, "expected a number or [x, y, z]"};
   glm::dvec3 out;
   for (int i = 0; i < 3; ++i)
     out[i] = raw_number(json_pointer_child(pointer, size_t(i)));
   if (glm::any(glm::lessThan(out, glm::dvec3(lo))) ||
       glm::any(glm::greaterThan(out, glm::dvec3(hi)))) {
-    throw SceneError{pointer, what + " must be in " + range + " (are " + fmt(out.x) + ", " +
-                                  fmt(out.y) + ", " + fmt(out.z) + ")"};
+    throw JsonFailure{pointer, what + " must be in " + range + " (are " + fmt(out.x) + ", " +
+                                   fmt(out.y) + ", " + fmt(out.z) + ")"};
   }
   return out;
 }
@@ -127,7 +127,7 @@ double SceneReader::number(const std::string& pointer, const char* key, double f
 double SceneReader::positive(const std::string& pointer, const char* key, double fallback) const {
   const double v = number(pointer, key, fallback);
   if (!(v > 0.0)) {
-    throw SceneError{json_pointer_child(pointer, key), "must be positive (is " + fmt(v) + ")"};
+    throw JsonFailure{json_pointer_child(pointer, key), "must be positive (is " + fmt(v) + ")"};
   }
   return v;
 }
@@ -139,11 +139,11 @@ int SceneReader::integer(const std::string& pointer, const char* key, int fallba
   const std::string p = json_pointer_child(pointer, key);
   const json& v = at(p);
   if (!v.is_number_integer())
-    throw SceneError{p, "expected an integer"};
+    throw JsonFailure{p, "expected an integer"};
   const auto i = v.get<long long>();
   if (i < lo || i > hi) {
-    throw SceneError{p, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (is " +
-                            std::to_string(i) + ")"};
+    throw JsonFailure{p, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                             "] (is " + std::to_string(i) + ")"};
   }
   return int(i);
 }
@@ -151,7 +151,7 @@ int SceneReader::integer(const std::string& pointer, const char* key, int fallba
 std::string SceneReader::string(const std::string& pointer) const {
   const json& v = at(pointer);
   if (!v.is_string())
-    throw SceneError{pointer, "expected a string"};
+    throw JsonFailure{pointer, "expected a string"};
   return v.get<std::string>();
 }
 
@@ -163,7 +163,7 @@ std::string SceneReader::string(const std::string& pointer, const char* key,
 glm::vec3 SceneReader::vec3(const std::string& pointer) const {
   const json& v = at(pointer);
   if (!v.is_array() || v.size() != 3)
-    throw SceneError{pointer, "expected [x, y, z]"};
+    throw JsonFailure{pointer, "expected [x, y, z]"};
   glm::vec3 out;
   for (int i = 0; i < 3; ++i)
     out[i] = float(number(json_pointer_child(pointer, size_t(i))));
@@ -192,10 +192,10 @@ double SceneReader::intensity(const std::string& pointer) const {
 const json& SceneReader::array(const std::string& pointer, size_t max) const {
   const json& v = at(pointer);
   if (!v.is_array())
-    throw SceneError{pointer, "expected an array"};
+    throw JsonFailure{pointer, "expected an array"};
   if (v.size() > max) {
-    throw SceneError{pointer, std::to_string(v.size()) + " elements, more than the limit of " +
-                                  std::to_string(max)};
+    throw JsonFailure{pointer, std::to_string(v.size()) + " elements, more than the limit of " +
+                                   std::to_string(max)};
   }
   return v;
 }
@@ -203,13 +203,13 @@ const json& SceneReader::array(const std::string& pointer, size_t max) const {
 std::string SceneReader::file(const std::string& pointer) const {
   const std::string name = string(pointer);
   if (name.empty())
-    throw SceneError{pointer, "empty file name"};
+    throw JsonFailure{pointer, "empty file name"};
   std::string path, problem;
   if (!resolve_named_path(base_, name, files_root_, outside_, path, problem, true))
-    throw SceneError{pointer, problem};
+    throw JsonFailure{pointer, problem};
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
-    throw SceneError{pointer, "file not found: " + path};
+    throw JsonFailure{pointer, "file not found: " + path};
   }
   return path;
 }

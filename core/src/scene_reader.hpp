@@ -1,6 +1,6 @@
 #pragma once
 // Reading the values of a scene file's JSON document (core/src/scene_json.cpp): each read checks
-// its value (type, range, the keys an object may hold, a file's place) and throws SceneError with
+// its value (type, range, the keys an object may hold, a file's place) and throws JsonFailure with
 // the value's JSON pointer, which parse_scene turns into "FILE:LINE:COL: path: message".
 
 #include <filesystem>
@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gfield/confined_path.hpp"
+#include "gfield/located_json.hpp"
 
 namespace gfield {
 
@@ -18,19 +19,13 @@ namespace gfield {
 /// float range through any number of bounces' products).
 inline constexpr double kMaxRadiometric = 1e6;
 
-/// A validation failure at a JSON pointer.
-struct SceneError {
-  std::string pointer;
-  std::string message;
-};
-
 /// "/objects/2/material" -> "objects[2].material".
 std::string readable_path(const std::string& pointer);
 
 /// "a, b or c".
 std::string list_names(std::initializer_list<const char*> names);
 
-/// Reads values out of the document by JSON pointer, throwing SceneError with the pointer.
+/// Reads values out of the document by JSON pointer, throwing JsonFailure with the pointer.
 class SceneReader {
  public:
   /// `base`: the scene file's folder; `files_root`: the folder its files must lie in

@@ -119,7 +119,7 @@ TEST_F(AdversarialInputs, NodeForestCheckOfAMillionNodeChainIsLinear) {
   constexpr size_t kNodes = 1'000'000;
   for (const bool reversed : {false, true}) {
     const json chain = node_chain(kNodes, reversed);
-    CheckFailure failure;
+    JsonFailure failure;
     std::uint64_t visits = 0;
     EXPECT_TRUE(check_node_forest(chain, failure, visits)) << failure.pointer << failure.what;
     EXPECT_GE(visits, kNodes);
@@ -129,7 +129,7 @@ TEST_F(AdversarialInputs, NodeForestCheckOfAMillionNodeChainIsLinear) {
   json cycle = node_chain(kNodes, false);
   cycle["nodes"][kNodes - 1]["children"] = json::array({0});
   cycle.erase("scenes");
-  CheckFailure failure;
+  JsonFailure failure;
   std::uint64_t visits = 0;
   EXPECT_FALSE(check_node_forest(cycle, failure, visits));
   EXPECT_NE(failure.what.find("a cycle of 1000000 nodes"), std::string::npos) << failure.what;

@@ -25,6 +25,14 @@ struct LocatedJson {
   JsonLocation at(const std::string& pointer) const;
 };
 
+/// What is wrong in a JSON document (a scene, a glTF file) and where: a JSON pointer into it,
+/// which LocatedJson::at turns into a line and column. (Text formats read line by line say where
+/// by a line: ReadFailure, geometry/mesh_readers.hpp.)
+struct JsonFailure {
+  std::string pointer;
+  std::string what;
+};
+
 /// Parses `text`. On failure returns false with `error` = "LINE:COLUMN: problem".
 /// Duplicate keys, non-finite numbers (e.g. 1e999), trailing text and nesting deeper than
 /// kMaxJsonDepth (gfield/limits.hpp) are errors.
