@@ -43,8 +43,8 @@ GF_CONST int GF_NEWTON_STALLS = 2;
 // Least weight of the hitting pairs among the 16 for a chart border to count as a seam.
 GF_CONST float GF_SEAM_WEIGHT = 0.999f;
 // Least weight of the hitting pairs among the 16 for the refined lookup to search every candidate
-// on its own once its groups found no hit: the linear kernel's threshold for a hit. Below it the
-// neighbourhood says miss, and a ray there that hits is one the groups' searches found.
+// on its own once its groups found no hit (half the linear kernel's threshold for a hit). Below it
+// the neighbourhood says miss, and a ray there that hits is one the groups' searches found.
 GF_CONST float GF_PAIRS_WEIGHT = 0.25f;
 // A point at a chart border (across a seam, or on a patch with padding corners) is accepted only
 // when the ray's start lies farther than this many texels off the surface's tangent plane there:
@@ -334,6 +334,12 @@ struct GfLine {
   vec4 w_exit;
 };
 
+// Where stored uv lies along the line's ray: the projection of its nearest texel (one fetch,
+// within half a texel of the surface point), as a ray parameter t.
+float gf_stored_t(GF_IN(GfLine) line, vec2 uv) {
+  return dot(gf_image_position_nearest(uv) - line.o, line.d) / dot(line.d, line.d);
+}
+
 // The first layer from `layer` on whose stored hit of the pair (entry, exit) lies beyond the
 // line's origin: its projection onto the ray at least t_min + margin (for `last`, whose layers
 // run from the exit side: at most t_max - margin); the last layer K - 1 is taken as it is (K = 1
@@ -350,7 +356,7 @@ int gf_layer_beyond(GF_IN(GfLine) line, int layer, int entry, int exit, float ma
     if (!line.beyond || l == gf_field_layers() - 1) {
       return l;
     }
-    float t = dot(gf_image_position_nearest(uv) - line.o, line.d) / dot(line.d, line.d);
+    float t = gf_stored_t(line, uv);
     if (line.last ? t <= line.t_max - margin : t >= line.t_min + margin) {
       return l;
     }
@@ -374,7 +380,7 @@ vec2 gf_first_beyond(GF_IN(GfLine) line, int entry, int exit, vec2 uv, GF_INOUT(
         return uv;
       }
     }
-    float t = dot(gf_image_position_nearest(uv) - line.o, line.d) / dot(line.d, line.d);
+    float t = gf_stored_t(line, uv);
     if (line.last ? t <= line.t_max : t >= line.t_min) {
       return uv;
     }
@@ -565,6 +571,12 @@ struct GfSearch {
   bool deeper;  // GF_STAGE_PAIRS: next, the second crossing after the candidate of `pair`
 };
 
+// The start returned last is done with: in GF_STAGE_PAIRS, not its next crossing either.
+void gf_search_done_with_start(GF_INOUT(GfSearch) s) {
+  s.pair += s.deeper ? 1 : 0;
+  s.deeper = false;
+}
+
 // The start of a group's stage (group 0 or 1, `best`: its heaviest candidate, else its mean);
 // false when the group is empty or its heaviest candidate lies within a texel of its mean.
 bool gf_group_start(GF_IN(GfCandidates) c, int group, bool best, GF_OUT(vec2) uv) {
@@ -641,9 +653,8 @@ bool gf_next_start(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
 // GF_MODE_REFINED: Newton searches (gf_refine) from the starts of gf_next_start. The first hit
 // verified in [t_min, t_max] from the nearest pair or a group (in order along the ray) is the
 // answer; searched on their own, the nearest of the candidates' verified hits is. None is a
-// miss. When
-// nearly all of the neighbourhood's lines hit, the surface around the ray is closed and a chart
-// border there is a seam (unknown for the nearest pair alone: no seams then).
+// miss. When nearly all of the neighbourhood's lines hit, the surface around the ray is closed
+// and a chart border there is a seam (unknown for the nearest pair alone: no seams then).
 GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   vec3 e1;
   vec3 e2;
@@ -666,10 +677,9 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
     // Once a hit is verified, a start whose surface point lies beyond it cannot lead to a nearer
     // one (GF_PRUNE_SPACINGS).
     if (nearest.hit) {
-      float t_start = dot(gf_image_position_nearest(uv) - line.o, line.d) / dot(line.d, line.d);
+      float t_start = gf_stored_t(line, uv);
       if ((line.last ? -t_start : t_start) > nearest_t + GF_PRUNE_SPACINGS * 2.0f * line.margin) {
-        s.pair += s.deeper ? 1 : 0;
-        s.deeper = false;
+        gf_search_done_with_start(s);
         continue;
       }
     }
@@ -678,9 +688,7 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
     if (!gf_refine(line.o, e1, e2, tolerance, seams, start, uv, p)) {
       continue;
     }
-    // A candidate that verified is done with: not its next crossing.
-    s.pair += s.deeper ? 1 : 0;
-    s.deeper = false;
+    gf_search_done_with_start(s);  // a candidate that verified
     float t = dot(p - line.o, line.d) / dot(line.d, line.d);
     float along = line.last ? -t : t;
     if (t < line.t_min || t > line.t_max || along >= nearest_t) {

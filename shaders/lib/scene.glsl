@@ -148,7 +148,8 @@ SceneHit world_bvh_hit(int k, BvhMeshHit m) {
 
 // How a ray looks up the object it leaves (the camera's: object -1): a mesh from `origin` (its
 // start moved SceneHit.self_offset off the surface) beyond `t_min` (gf_trace_leaving); `facing`:
-// +1 when it leaves into the open, -1 into the solid.
+// +1 when it leaves into the open, -1 into the solid, 0 either (shadow rays: with their side
+// known the lookup lost self-shadows near chart borders).
 struct SelfLookup {
   int object;
   vec3 origin;
@@ -275,6 +276,6 @@ bool light_from(SceneHit hit, vec3 geometric_normal, vec3 incoming, int i, out v
   float falloff = point ? 1.0f / (distance * distance) : 1.0f;
   radiance = hit.albedo * lights[i].color.rgb * cosine * falloff;
   self = self_lookup(hit, g, shadow_epsilon(hit));
-  self.facing = 0.0f;
+  self.facing = 0.0f;  // SelfLookup: a shadow ray looks its surface up on either side
   return true;
 }
