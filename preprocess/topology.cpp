@@ -6,9 +6,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <unordered_map>
-
-#include "geometry/edge_key.hpp"
 
 namespace gfield {
 
@@ -31,13 +28,6 @@ struct UnionFind {
       parent[size_t(std::max(a, b))] = std::min(a, b);
     }
   }
-};
-
-// Use of one undirected edge: faces on it, and how often it runs low -> high index.
-struct EdgeUse {
-  int faces = 0;
-  int low_to_high = 0;
-  bool counted = false;  // already attributed to a component
 };
 
 bool has_repeated_corner(const glm::ivec3& t) {
@@ -88,54 +78,100 @@ size_t count_duplicate_positions(const TriangleMesh& mesh) {
   return duplicates;
 }
 
-/// Every undirected edge's use. Faces with a repeated corner contribute only their proper edges.
-std::unordered_map<uint64_t, EdgeUse> edge_uses(const TriangleMesh& mesh) {
-  std::unordered_map<uint64_t, EdgeUse> edges;
-  edges.reserve(mesh.triangles.size() * 2);
-  for (const glm::ivec3& t : mesh.triangles) {
+/// Every edge's faces: each side of a face (corners a != b) filed under its lower vertex, sorted
+/// by the higher one, so that an undirected edge is a run of equal `high` within its vertex's
+/// range halves[first[v], first[v + 1]). Faces with a repeated corner contribute their proper
+/// sides.
+struct EdgeTable {
+  struct Side {
+    int high = 0, face = 0;
+    bool low_to_high = false;  ///< the face runs along it from the lower index to the higher
+    bool operator<(const Side& o) const { return high != o.high ? high < o.high : face < o.face; }
+  };
+  std::vector<size_t> first;  ///< V + 1 offsets
+  std::vector<Side> sides;
+
+  /// Calls `edge(low, begin, end)` for each undirected edge, [begin, end) its sides.
+  template <typename F>
+  void for_each_edge(F&& edge) const {
+    for (size_t v = 0; v + 1 < first.size(); ++v)
+      for (size_t run = first[v]; run < first[v + 1];) {
+        size_t stop = run + 1;
+        while (stop < first[v + 1] && sides[stop].high == sides[run].high)
+          ++stop;
+        edge(int(v), run, stop);
+        run = stop;
+      }
+  }
+};
+
+EdgeTable edge_table(const TriangleMesh& mesh) {
+  EdgeTable table;
+  table.first.assign(mesh.positions.size() + 1, 0);
+  for (const glm::ivec3& t : mesh.triangles)
+    for (int c = 0; c < 3; ++c)
+      if (t[c] != t[(c + 1) % 3])
+        ++table.first[size_t(std::min(t[c], t[(c + 1) % 3])) + 1];
+  std::partial_sum(table.first.begin(), table.first.end(), table.first.begin());
+  table.sides.resize(table.first.back());
+  std::vector<size_t> next(table.first.begin(), table.first.end() - 1);
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const glm::ivec3& t = mesh.triangles[f];
     for (int c = 0; c < 3; ++c) {
       const int a = t[c], b = t[(c + 1) % 3];
-      if (a == b)
-        continue;
-      EdgeUse& use = edges[edge_key(a, b)];
-      ++use.faces;
-      use.low_to_high += a < b ? 1 : 0;
+      if (a != b)
+        table.sides[next[size_t(std::min(a, b))]++] = {std::max(a, b), int(f), a < b};
     }
   }
-  return edges;
+  for (size_t v = 0; v + 1 < table.first.size(); ++v)
+    std::sort(table.sides.begin() + std::ptrdiff_t(table.first[v]),
+              table.sides.begin() + std::ptrdiff_t(table.first[v + 1]));
+  return table;
 }
 
 /// Fans: around each vertex, faces linked through the edges they share at that vertex. A vertex
 /// with more than one fan is pinched (non-manifold) and counts once per fan, i.e. the surface is
-/// analysed as if pinched vertices were split. fan_of[v][k] is the fan (a local index: the
-/// smallest k of its faces) of the k-th face around v, vertex_faces[v][k].
+/// analysed as if pinched vertices were split. faces[first[v], first[v + 1]) are the faces
+/// around v in increasing order, fan[] at the same places their fans (a local index: the
+/// smallest local index of the fan's faces).
 struct Fans {
-  std::vector<std::vector<int>> vertex_faces;
-  std::vector<std::vector<int>> fan_of;
+  std::vector<size_t> first;  ///< V + 1 offsets
+  std::vector<int> faces;
+  std::vector<int> fan;
   /// The fan of face f around vertex v.
   int at(int v, int f) const {
-    const std::vector<int>& around = vertex_faces[size_t(v)];
-    return fan_of[size_t(v)][size_t(std::find(around.begin(), around.end(), f) - around.begin())];
+    const auto begin = faces.begin() + std::ptrdiff_t(first[size_t(v)]);
+    const auto end = faces.begin() + std::ptrdiff_t(first[size_t(v) + 1]);
+    return fan[size_t(std::lower_bound(begin, end, f) - faces.begin())];
   }
 };
 
 Fans vertex_fans(const TriangleMesh& mesh) {
   Fans fans;
-  fans.vertex_faces.resize(mesh.positions.size());
+  fans.first.assign(mesh.positions.size() + 1, 0);
+  for (const glm::ivec3& t : mesh.triangles)
+    if (!has_repeated_corner(t))
+      for (int c = 0; c < 3; ++c)
+        ++fans.first[size_t(t[c]) + 1];
+  std::partial_sum(fans.first.begin(), fans.first.end(), fans.first.begin());
+  fans.faces.resize(fans.first.back());
+  fans.fan.resize(fans.first.back());
+  std::vector<size_t> next(fans.first.begin(), fans.first.end() - 1);
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
     const glm::ivec3& t = mesh.triangles[f];
     if (!has_repeated_corner(t))
       for (int c = 0; c < 3; ++c)
-        fans.vertex_faces[size_t(t[c])].push_back(int(f));
+        fans.faces[next[size_t(t[c])]++] = int(f);
   }
-  fans.fan_of.resize(mesh.positions.size());
+  UnionFind fan(0);
   std::vector<std::pair<int, int>> corners;  // (other corner, local face index), sorted
   for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    const std::vector<int>& around = fans.vertex_faces[v];
-    UnionFind fan(around.size());
+    const size_t begin = fans.first[v], count = fans.first[v + 1] - begin;
+    fan.parent.resize(count);
+    std::iota(fan.parent.begin(), fan.parent.end(), 0);
     corners.clear();
-    for (size_t k = 0; k < around.size(); ++k) {
-      const glm::ivec3& t = mesh.triangles[size_t(around[k])];
+    for (size_t k = 0; k < count; ++k) {
+      const glm::ivec3& t = mesh.triangles[size_t(fans.faces[begin + k])];
       for (int c = 0; c < 3; ++c)
         if (t[c] != int(v))
           corners.emplace_back(t[c], int(k));
@@ -144,9 +180,8 @@ Fans vertex_fans(const TriangleMesh& mesh) {
     for (size_t i = 1; i < corners.size(); ++i)  // faces sharing an edge at v share a fan
       if (corners[i].first == corners[i - 1].first)
         fan.unite(corners[i - 1].second, corners[i].second);
-    fans.fan_of[v].resize(around.size());
-    for (size_t k = 0; k < around.size(); ++k)
-      fans.fan_of[v][k] = fan.find(int(k));
+    for (size_t k = 0; k < count; ++k)
+      fans.fan[begin + k] = fan.find(int(k));
   }
   return fans;
 }
@@ -154,37 +189,31 @@ Fans vertex_fans(const TriangleMesh& mesh) {
 /// Components: faces connected through shared edges, with their faces and area counted.
 struct Components {
   UnionFind face_sets;
-  std::unordered_map<int, size_t> index_of_root;
+  std::vector<int> index_of_root;  ///< F: a root face's index in `list`, or -1
   std::vector<ComponentTopology> list;
 
-  explicit Components(size_t faces) : face_sets(faces) {}
+  explicit Components(size_t faces) : face_sets(faces), index_of_root(faces, -1) {}
   /// Index in `list` of the component of `face` (made on first use).
   size_t index(int face) {
-    auto [it, inserted] = index_of_root.emplace(face_sets.find(face), list.size());
-    if (inserted) {
+    int& index = index_of_root[size_t(face_sets.find(face))];
+    if (index < 0) {
+      index = int(list.size());
       list.emplace_back();
       list.back().bounds_min = glm::dvec3(std::numeric_limits<double>::max());
       list.back().bounds_max = glm::dvec3(std::numeric_limits<double>::lowest());
     }
-    return it->second;
+    return size_t(index);
   }
   ComponentTopology& of(int face) { return list[index(face)]; }
 };
 
-Components face_components(const TriangleMesh& mesh, const std::vector<double>& face_area) {
+Components face_components(const TriangleMesh& mesh, const EdgeTable& edges,
+                           const std::vector<double>& face_area) {
   Components components(mesh.triangles.size());
-  std::unordered_map<uint64_t, int> first_face_on;
-  first_face_on.reserve(2 * mesh.triangles.size());
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const glm::ivec3& t = mesh.triangles[f];
-    for (int c = 0; c < 3; ++c) {
-      if (t[c] == t[(c + 1) % 3])
-        continue;
-      auto [it, inserted] = first_face_on.emplace(edge_key(t[c], t[(c + 1) % 3]), int(f));
-      if (!inserted)
-        components.face_sets.unite(it->second, int(f));
-    }
-  }
+  edges.for_each_edge([&](int, size_t begin, size_t end) {
+    for (size_t k = begin + 1; k < end; ++k)
+      components.face_sets.unite(edges.sides[begin].face, edges.sides[k].face);
+  });
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
     ComponentTopology& c = components.of(int(f));
     ++c.faces;
@@ -197,61 +226,68 @@ Components face_components(const TriangleMesh& mesh, const std::vector<double>& 
 /// several fans in one component. Returns the vertices with more than one fan in all.
 size_t count_fan_vertices(const TriangleMesh& mesh, const Fans& fans, Components& components) {
   size_t pinched = 0;
+  std::vector<size_t> fan_components;  // the component of each fan at a vertex, sorted
   for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    std::map<size_t, int> fans_in_component;
-    for (size_t k = 0; k < fans.vertex_faces[v].size(); ++k) {
-      if (fans.fan_of[v][k] != int(k))
+    fan_components.clear();
+    for (size_t k = 0; k < fans.first[v + 1] - fans.first[v]; ++k) {
+      if (fans.fan[fans.first[v] + k] != int(k))
         continue;
-      const size_t index = components.index(fans.vertex_faces[v][k]);
+      const size_t index = components.index(fans.faces[fans.first[v] + k]);
       ComponentTopology& c = components.list[index];
       ++c.vertices;
       c.bounds_min = glm::min(c.bounds_min, mesh.positions[v]);
       c.bounds_max = glm::max(c.bounds_max, mesh.positions[v]);
-      ++fans_in_component[index];
+      fan_components.push_back(index);
     }
-    size_t count = 0;
-    for (const auto& [index, fans_here] : fans_in_component) {
-      count += size_t(fans_here);
-      components.list[index].non_manifold_vertices += fans_here > 1 ? 1 : 0;
-    }
-    pinched += count > 1 ? 1 : 0;
+    std::sort(fan_components.begin(), fan_components.end());
+    for (size_t k = 1; k < fan_components.size(); ++k)
+      if (fan_components[k] == fan_components[k - 1] &&
+          (k == 1 || fan_components[k - 2] != fan_components[k]))
+        ++components.list[fan_components[k]].non_manifold_vertices;
+    pinched += fan_components.size() > 1 ? 1 : 0;
   }
   return pinched;
 }
 
-/// A boundary edge, directed as in its one face.
+/// A boundary edge, directed as in its one face; `side` is its place in that face (0-2).
 struct BoundaryEdge {
-  int from, to, face;
+  int from, to, face, side;
 };
 
-/// Edge classes per component (each undirected edge counted once, in the component of its first
-/// face: boundary, non-manifold, orientation); the boundary edges.
-std::vector<BoundaryEdge> classify_edges(const TriangleMesh& mesh,
-                                         std::unordered_map<uint64_t, EdgeUse>& edges,
+/// Edge classes per component (each undirected edge of a face without a repeated corner counted
+/// once: boundary, non-manifold, orientation); the boundary edges in face order.
+std::vector<BoundaryEdge> classify_edges(const TriangleMesh& mesh, const EdgeTable& edges,
                                          Components& components) {
   std::vector<BoundaryEdge> boundary;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const glm::ivec3& t = mesh.triangles[f];
-    if (has_repeated_corner(t))
-      continue;
-    for (int c = 0; c < 3; ++c) {
-      const int a = t[c], b = t[(c + 1) % 3];
-      ComponentTopology& comp = components.of(int(f));
-      EdgeUse& use = edges[edge_key(a, b)];
-      if (!use.counted) {
-        use.counted = true;
-        ++comp.edges;
-        if (use.faces == 1)
-          ++comp.boundary_edges;
-        else if (use.faces > 2)
-          ++comp.non_manifold_edges;
-        else if (use.low_to_high != 1)
-          comp.oriented = false;
-      }
-      if (use.faces == 1)
-        boundary.push_back({a, b, int(f)});
+  edges.for_each_edge([&](int low, size_t begin, size_t end) {
+    int proper_face = -1, low_to_high = 0;
+    for (size_t k = begin; k < end; ++k) {
+      const EdgeTable::Side& side = edges.sides[k];
+      low_to_high += side.low_to_high ? 1 : 0;
+      if (proper_face < 0 && !has_repeated_corner(mesh.triangles[size_t(side.face)]))
+        proper_face = side.face;
     }
-  }
+    if (proper_face < 0)
+      return;
+    ComponentTopology& comp = components.of(proper_face);
+    const size_t faces = end - begin;
+    ++comp.edges;
+    if (faces == 1) {
+      ++comp.boundary_edges;
+      const EdgeTable::Side& side = edges.sides[begin];
+      const int from = side.low_to_high ? low : side.high, to = side.low_to_high ? side.high : low;
+      const glm::ivec3& t = mesh.triangles[size_t(side.face)];
+      const int place = t[0] == from ? 0 : t[1] == from ? 1 : 2;
+      boundary.push_back({from, to, side.face, place});
+    } else if (faces > 2) {
+      ++comp.non_manifold_edges;
+    } else if (low_to_high != 1) {
+      comp.oriented = false;
+    }
+  });
+  std::sort(boundary.begin(), boundary.end(), [](const BoundaryEdge& a, const BoundaryEdge& b) {
+    return a.face != b.face ? a.face < b.face : a.side < b.side;
+  });
   return boundary;
 }
 
@@ -301,9 +337,9 @@ TopologyReport analyze_topology(const TriangleMesh& mesh) {
   r.faces = mesh.triangles.size();
   const std::vector<double> face_area = measure_faces(mesh, r);
   r.duplicate_positions = count_duplicate_positions(mesh);
-  std::unordered_map<uint64_t, EdgeUse> edges = edge_uses(mesh);
+  const EdgeTable edges = edge_table(mesh);
   const Fans fans = vertex_fans(mesh);
-  Components components = face_components(mesh, face_area);
+  Components components = face_components(mesh, edges, face_area);
   r.non_manifold_vertices = count_fan_vertices(mesh, fans, components);
   const std::vector<BoundaryEdge> boundary = classify_edges(mesh, edges, components);
   count_boundary_loops(boundary, fans, components);
