@@ -10,10 +10,6 @@
 // Times are wall seconds of one build each on an otherwise idle machine; the build runs as its
 // own process (its peak resident memory from wait4).
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench/build_runs.hpp"
 #include "bench/example_scenes.hpp"
 #include "bench/pn_subdivision.hpp"
 #include "geometry/parameterized_mesh.hpp"
@@ -33,34 +30,6 @@
 namespace {
 
 using namespace gfield;
-
-/// One `gfield build MESH -o NAME --json`: its report and peak resident megabytes; false (with
-/// a message) when it fails.
-bool run_build(const std::string& mesh, const std::string& name, nlohmann::json& report,
-               double& peak_mb) {
-  const std::string out = name + ".stdout";
-  std::fflush(stdout);  // the child must not write this process's buffered lines again
-  const pid_t pid = fork();
-  if (pid == 0) {
-    std::FILE* file = std::freopen(out.c_str(), "w", stdout);
-    if (file == nullptr)
-      _exit(127);
-    execl(gfield::build_paths::cli(), gfield::build_paths::cli(), "build", mesh.c_str(), "-o",
-          name.c_str(), "--json", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  if (pid < 0 || wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) ||
-      WEXITSTATUS(status) != 0) {
-    std::fprintf(stderr, "gfield build %s failed\n", mesh.c_str());
-    return false;
-  }
-  peak_mb = double(usage.ru_maxrss) / 1024.0;
-  std::ifstream text(out);
-  report = nlohmann::json::parse(text, nullptr, false);
-  return report.is_object();
-}
 
 /// Seconds of the bare first-hit cast of the field's rays on the asset's parameterised mesh.
 double bare_cast_seconds(const std::string& name, int samples_per_side) {
@@ -137,7 +106,7 @@ int main(int argc, char** argv) {
     const std::string name = (folder.path / std::filesystem::path(mesh).stem()).string() + "-asset";
     nlohmann::json report;
     double peak_mb = 0.0;
-    if (!run_build(mesh, name, report, peak_mb))
+    if (!run_build(mesh, name, {}, report, peak_mb))
       continue;
     const double bare =
         bare_cast_seconds(name, report["geometry_field"]["samples_per_side"].get<int>());

@@ -495,6 +495,7 @@ bool make_proxy(const TriangleMesh& input, const MeshAppearance* appearance,
   report.proxy.input_faces = input.triangles.size();
   report.proxy.faces = proxy.proxy.triangles.size();
   report.proxy.error_percent = diagonal > 0.0 ? 100.0 * proxy.error / diagonal : 0.0;
+  report.proxy.flat_flips = proxy.flat_flips;
   return true;
 }
 

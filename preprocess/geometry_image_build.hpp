@@ -22,8 +22,9 @@ enum class ParameterizationMethod { kAuto, kOrbifold, kSquare };
 enum class ComponentSelection { kAll, kLargest };
 
 /// Largest input accepted (faces). Above it the pipeline stops with an error instead of
-/// exhausting memory (about 1.5 KB per face at peak: the bunny, 70K faces, peaks at 105 MB).
-inline constexpr size_t kMaxFaces = 4'000'000;
+/// exhausting memory: a build through its proxy peaks at about 0.25 KB per face (the bunny
+/// midpoint-subdivided to 4.4M faces: 1.0 GB), one without (a rejected proxy) at about 2 KB.
+inline constexpr size_t kMaxFaces = 8'000'000;
 /// Image sizes accepted (texels per side).
 inline constexpr int kMinImageSize = 8;
 inline constexpr int kMaxImageSize = 8192;
@@ -94,6 +95,7 @@ struct ProxyReport {
   size_t input_faces = 0;
   size_t faces = 0;            ///< of the proxy
   double error_percent = 0.0;  ///< meshoptimizer's bound, percent of the input's diagonal
+  size_t flat_flips = 0;       ///< edges of the proxy flipped where it is flat (flat_flips.hpp)
   double mean_percent = 0.0;   ///< the proxy image's mean mesh -> image distance (percent)
   long input_genus = -1;       ///< the mesh's genus (-1: not a manifold, not compared)
   long genus = 0;              ///< the proxy's charts' genus, summed

@@ -45,6 +45,7 @@ nlohmann::json geometry_image_report_to_json(const GeometryImageReport& r) {
                                          {"input_faces", r.proxy.input_faces},
                                          {"faces", r.proxy.faces},
                                          {"error_percent", r.proxy.error_percent},
+                                         {"flat_flips", r.proxy.flat_flips},
                                          {"mesh_to_image_mean_percent", r.proxy.mean_percent},
                                          {"genus", r.proxy.genus},
                                          {"mesh_genus", r.proxy.input_genus},
@@ -123,6 +124,7 @@ ProxyReport proxy_from_json(const nlohmann::json& j) {
   p.input_faces = j.at("input_faces").get<size_t>();
   p.faces = j.at("faces").get<size_t>();
   p.error_percent = j.at("error_percent").get<double>();
+  p.flat_flips = j.value("flat_flips", size_t(0));  // absent in reports of older builds
   p.mean_percent = j.at("mesh_to_image_mean_percent").get<double>();
   p.genus = j.at("genus").get<long>();
   p.input_genus = j.at("mesh_genus").get<long>();
@@ -217,9 +219,9 @@ std::string geometry_image_report_to_text(const GeometryImageReport& r) {
         kept.mesh_to_image_mean > r.max_mean_error ? ", not reached at the largest size" : "");
   }
   if (r.proxy.used)
-    add("proxy: %zu faces charted for %zu (meshoptimizer, error bound %.4f%% of the diagonal); "
-        "texels projected onto the full surface",
-        r.proxy.faces, r.proxy.input_faces, r.proxy.error_percent);
+    add("proxy: %zu faces charted for %zu (meshoptimizer, error bound %.4f%% of the diagonal; %zu "
+        "edges flipped where flat); texels projected onto the full surface",
+        r.proxy.faces, r.proxy.input_faces, r.proxy.error_percent, r.proxy.flat_flips);
   else if (r.proxy.faces > 0)
     add("proxy: %zu faces tried for %zu and rejected (%s); built from the full mesh", r.proxy.faces,
         r.proxy.input_faces, r.proxy.rejected.c_str());

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gfield/stopwatch.hpp"
+#include "preprocess/flat_flips.hpp"
 
 namespace gfield {
 namespace {
@@ -192,6 +193,11 @@ bool make_mesh_proxy(const TriangleMesh& input, size_t target_faces, MeshProxy& 
     }
     out.proxy.triangles.push_back(t);
   }
+  // Collapses on flat parts leave needles (three collinear corners); flips within a tenth of
+  // the error bound remove them.
+  const double scale =
+      double(meshopt_simplifyScale(positions.data(), welded.positions.size(), 3 * sizeof(float)));
+  out.flat_flips = flip_flat_edges(out.proxy, 0.1 * out.error + 1e-7 * scale).flips;
   out.seconds = watch.seconds();
   return true;
 }

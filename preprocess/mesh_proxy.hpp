@@ -27,6 +27,8 @@ struct MeshProxy {
   double error = 0.0;
   /// The welded mesh's genus, summed over its components (surface_genus); -1: not a manifold.
   long genus = -1;
+  /// Edges of the simplified mesh flipped where it is flat (flat_flips.hpp).
+  size_t flat_flips = 0;
   double seconds = 0.0;
 };
 

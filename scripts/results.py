@@ -51,6 +51,11 @@ SECTIONS = [
      "`bench_asset_build`: each build's stages and peak memory against its floor (its "
      "parameterisation plus the bare first-hit cast of the field's rays).",
      ["build/bench/bench_asset_build"], []),
+    ("proxy-families", "Large meshes through a proxy, across mesh families",
+     "`bench_proxy_families --largest`: flat-faced (midpoint-subdivided), smooth (PN-split) and "
+     "bundled meshes built with the defaults, beside the same mesh without a proxy and the "
+     "original it was refined from.",
+     ["build/bench/bench_proxy_families --largest"], []),
     ("lookup-work", "CPU lookups: work and agreement with exact casts",
      "`bench_lookup_work 20000`: per ray family and mode, texel fetches and Newton steps per ray "
      "beside the hit/miss agreement with Embree's casts of the same rays.",

@@ -19,6 +19,7 @@
 #include "preprocess/geometry_image_build.hpp"
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/midpoint_subdivision.hpp"
 
 namespace gfield {
 namespace {
@@ -190,6 +191,29 @@ TEST(GeometryImageProxy, AProxyWhoseRouteFailsGivesWayToTheFullMesh) {
   ASSERT_TRUE(build_geometry_image(torus, options, full_image, full_pm, full, error)) << error;
   EXPECT_EQ(pm.mesh.triangles.size(), torus.triangles.size());
   EXPECT_TRUE(image.position == full_image.position);
+}
+
+TEST(GeometryImageProxy, AFlatTessellatedMeshChartsItsProxyWithoutHoles) {
+  // Collapses on the flat faces of a midpoint-subdivided mesh leave needles with collinear
+  // corners; unflipped, repair drops them and opens a hole per needle, and the charts' maps
+  // stretch around the holes.
+  const TriangleMesh spot = test::midpoint_subdivided(bundled("spot.obj"), 2);
+  GeometryImageOptions options;
+  options.size = 256;
+  options.proxy_above = 20000;
+  GeometryImage image, full_image;
+  ParameterizedMesh pm, full_pm;
+  GeometryImageReport report, full;
+  std::string error;
+  ASSERT_TRUE(build_geometry_image(spot, options, image, pm, report, error)) << error;
+  options.proxy_above = 0;
+  ASSERT_TRUE(build_geometry_image(spot, options, full_image, full_pm, full, error)) << error;
+  ASSERT_TRUE(report.proxy.used) << report.proxy.rejected;
+  EXPECT_GT(report.proxy.flat_flips, 0u);
+  EXPECT_EQ(report.repair.degenerate_faces, 0u);
+  EXPECT_EQ(report.repair.holes_found, full.repair.holes_found);
+  // Within the factor an automatic size accepts (unflipped: 55 times the full mesh's image's).
+  EXPECT_LE(report.mesh_to_image.mean, kProxyErrorFactor * full.mesh_to_image.mean);
 }
 
 /// `gfield build homer.obj` at 256^2, N = 12, with --proxy-above `proxy_above`: its report.
