@@ -14,11 +14,6 @@ AssetFiles asset_files(const std::string& name) {
   return {image, parameterized_mesh_path(image), name + ".gfield.exr", name + ".report.json"};
 }
 
-std::string published_build(const std::string& name) {
-  std::error_code ec;
-  return std::filesystem::read_symlink(name + ".builds/current", ec).string();
-}
-
 bool read_report_build_id(const std::string& report_file, std::string& build_id,
                           std::string& error) {
   AssetReport report;

@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "gfield/published_build.hpp"
+
 namespace gfield {
 
 struct AssetFiles {
@@ -16,10 +18,6 @@ struct AssetFiles {
 
 /// The files of asset `name` (a path without extension: DIR/NAME).
 AssetFiles asset_files(const std::string& name);
-
-/// The folder the asset's published files lie in, as NAME.builds/current names it ("" for an
-/// asset of plain files or none): it changes when the asset is republished.
-std::string published_build(const std::string& name);
 
 /// The build id recorded in a report file. False with an error "FILE: problem" when the file
 /// cannot be read or is not an asset report (read_asset_report).

@@ -10,6 +10,7 @@
 #include "gfield/field_lookup.hpp"
 #include "gfield/gpu_contract.hpp"
 #include "gfield/gpu_storage.hpp"
+#include "gfield/published_build.hpp"
 #include "runtime/image_atlas.hpp"
 #include "runtime/image_grid.hpp"
 
@@ -166,7 +167,33 @@ std::string missing_asset_message(const MeshAsset& mesh, const std::string& scen
          scene_file + "; make them with: gfield build " + mesh.file + " -o DIR/" + stem + ")";
 }
 
+namespace {
+
+/// Each mesh's published build, as its geometry image's name names the asset.
+std::vector<std::string> published_builds(const Scene& scene) {
+  std::vector<std::string> builds;
+  for (const MeshAsset& mesh : scene.meshes) {
+    const std::string name = asset_name_of(mesh.geometry_image);
+    builds.push_back(name.empty() ? "" : published_build(name));
+  }
+  return builds;
+}
+
+}  // namespace
+
 bool GpuAssets::require(const Scene& scene, AssetNeeds needs, std::string& error) {
+  for (int attempt = 0;; ++attempt) {
+    if (!loaded_.images && !loaded_.fields && !loaded_.parameterized_meshes)
+      read_builds_ = published_builds(scene);
+    if (require_once(scene, needs, error))
+      return true;
+    if (attempt == 2 || published_builds(scene) == read_builds_)
+      return false;
+    loaded_.images = loaded_.fields = loaded_.parameterized_meshes = false;
+  }
+}
+
+bool GpuAssets::require_once(const Scene& scene, AssetNeeds needs, std::string& error) {
   if (assets_.size() != scene.meshes.size())
     assets_ = std::vector<GpuAsset>(scene.meshes.size());
   needs.images = needs.images || needs.fields || needs.parameterized_meshes;

@@ -107,7 +107,9 @@ class GpuAssets {
  public:
   /// Loads and uploads, for every mesh of `scene`, what `needs` asks for and is not loaded yet.
   /// False with "FILE: problem" for a missing or damaged asset, a field that does not belong to
-  /// its image, or a size beyond the GL limits.
+  /// its image, or a size beyond the GL limits. Where a read fails after an asset was
+  /// republished (since its first file was read), every asset file is read again, of the builds
+  /// published now (3 tries): the assets drawn are one build each.
   bool require(const Scene& scene, AssetNeeds needs, std::string& error);
   /// Uploads in-memory geometry images, one asset each, and their fields (fields[i] null or
   /// `fields` empty: none) at `field_bits` bits, replacing what is loaded (tests, tools that make
@@ -139,6 +141,8 @@ class GpuAssets {
   int texture_uploads() const { return texture_uploads_; }
 
  private:
+  /// require's one try: what `needs` asks for and is not loaded yet.
+  bool require_once(const Scene& scene, AssetNeeds needs, std::string& error);
   bool load_images(const Scene& scene, bool optional, std::string& error);
   bool load_fields(const Scene& scene, int bits, bool optional, std::string& error);
   /// False with the missing-asset message of the first mesh without a geometry image or field.
@@ -160,6 +164,8 @@ class GpuAssets {
   std::vector<GpuAsset> assets_;
   std::vector<GeometryImage> images_;  ///< kept for the grid fallback of parameterized meshes
   AssetNeeds loaded_;
+  /// Each mesh's published build (published_build.hpp) when its first asset file was read.
+  std::vector<std::string> read_builds_;
   GlTexture positions_;
   GlTexture normals_;
   GlTexture fields_;

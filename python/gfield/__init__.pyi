@@ -105,7 +105,9 @@ class GeometryField:
     """A geometry field (NAME.gfield.exr) with the geometry image it indexes."""
 
     @staticmethod
-    def load(path: _Path, image: GeometryImage | _Path | None = None) -> GeometryField: ...
+    def load(
+        path: _Path, image: GeometryImage | _Path | None = None, *, mesh: _Path | None = None
+    ) -> GeometryField: ...
     @property
     def samples_per_side(self) -> int:
         """N."""

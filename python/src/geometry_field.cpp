@@ -3,10 +3,12 @@
 
 #include <filesystem>
 
+#include "gfield/asset_source.hpp"
 #include "gfield/exr_io.hpp"
 #include "gfield/field_lines.hpp"
 #include "gfield/field_lookup.hpp"
 #include "gfield/printable.hpp"
+#include "gfield/published_build.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/ray_batch.hpp"
 
@@ -61,9 +63,9 @@ void attach_image(FieldAsset& asset, const py::object& image) {
   }
 }
 
-std::shared_ptr<FieldAsset> load(const std::filesystem::path& path, const py::object& image) {
+std::shared_ptr<FieldAsset> load_once(const std::string& file, const py::object& image) {
   auto asset = std::make_shared<FieldAsset>();
-  asset->file = path_text(path);
+  asset->file = file;
   std::string error;
   bool loaded = false;
   {
@@ -75,6 +77,47 @@ std::shared_ptr<FieldAsset> load(const std::filesystem::path& path, const py::ob
   }
   attach_image(*asset, image);
   return asset;
+}
+
+/// Raises Error where the asset of `field_file` was not built from the mesh file `mesh` as it
+/// is now (its report's record: size, then SHA-256; no report: nothing to check).
+void check_built_from(const std::string& field_file, const py::object& mesh) {
+  if (!py::isinstance<py::str>(mesh) && !py::isinstance<py::bytes>(mesh) &&
+      !py::hasattr(mesh, "__fspath__")) {
+    throw py::type_error("mesh: expected None or a path, not " +
+                         std::string(py::str(py::type::of(mesh).attr("__name__"))));
+  }
+  const std::string name = asset_name_of(field_file);
+  if (name.empty()) {
+    throw Error(field_file + ": not named NAME.gfield.exr, so no report to check mesh= against");
+  }
+  std::string error;
+  bool checked = false;
+  if (!check_asset_source(name + ".report.json", path_text(mesh.cast<std::filesystem::path>()),
+                          checked, error)) {
+    throw Error(error);
+  }
+}
+
+std::shared_ptr<FieldAsset> load(const std::filesystem::path& path, const py::object& image,
+                                 const py::object& mesh) {
+  const std::string file = path_text(path);
+  if (!mesh.is_none()) {
+    check_built_from(file, mesh);
+  }
+  // An asset republished between the field's read and the image's gives files of two builds:
+  // then both are read again, of the build published now (3 tries).
+  const std::string name = asset_name_of(file);
+  for (int attempt = 0;; ++attempt) {
+    const std::string before = name.empty() ? "" : published_build(name);
+    try {
+      return load_once(file, image);
+    } catch (const Error&) {
+      if (attempt == 2 || before.empty() || published_build(name) == before) {
+        throw;
+      }
+    }
+  }
 }
 
 py::dict lookup_rays(const FieldAsset& asset, const py::object& origins,
@@ -187,12 +230,17 @@ void bind_geometry_field(py::module_& m) {
       "A geometry field (NAME.gfield.exr, docs/geometry-field.md): for every line through two\n"
       "of the 6N^2 samples on the faces of the object's box, the geometry-image uvs of its\n"
       "hits; with its geometry image, lookups of any ray.")
-      .def_static("load", &load, py::arg("path"), py::arg("image") = py::none(),
+      .def_static("load", &load, py::arg("path"), py::arg("image") = py::none(), py::kw_only(),
+                  py::arg("mesh") = py::none(),
                   "Reads NAME.gfield.exr (format versions 1 to 3) and the geometry image it\n"
                   "indexes: `image` (a GeometryImage or a path) or, when None, NAME.gimage.exr\n"
-                  "beside it if that exists (lookup needs one). Raises gfield.Error with the\n"
-                  "reader's one-line message for a damaged file, or when the image does not\n"
-                  "belong to the field (box, source or build id).")
+                  "beside it if that exists (lookup needs one). mesh: None or the path of the\n"
+                  "mesh file the asset must have been built from, as it is now (checked against\n"
+                  "NAME.report.json: size, then SHA-256). An asset republished during the read\n"
+                  "is read again, of the new build. Raises gfield.Error with the reader's\n"
+                  "one-line message for a damaged file, when the image does not belong to the\n"
+                  "field (box, source or build id), or when the asset was built from another\n"
+                  "mesh than `mesh` (naming both files).")
       .def_property_readonly(
           "samples_per_side", [](const FieldAsset& a) { return a.field.samples_per_side; },
           "N, samples per side of each box face (6N^2 samples).")

@@ -2,10 +2,11 @@
 against Embree's exact casts of the meshes they were built from."""
 
 import shutil
+import threading
 
 import numpy as np
 import pytest
-from conftest import DATA_DIR
+from conftest import DATA_DIR, run_cli
 
 import gfield
 
@@ -150,6 +151,56 @@ def test_a_field_and_a_foreign_image_are_refused(spot_asset, tmp_path):
     refused = r"spot.gfield.exr: does not match .*torus.gimage.exr \("
     with pytest.raises(gfield.Error, match=refused):
         gfield.GeometryField.load(f"{spot_asset}.gfield.exr", image=f"{out}.gimage.exr")
+
+
+def test_an_asset_is_checked_against_the_mesh_it_names(spot_asset, tmp_path):
+    spot = DATA_DIR / "meshes" / "spot.obj"
+    field = gfield.GeometryField.load(f"{spot_asset}.gfield.exr", mesh=spot)
+    assert field.source == "spot.obj"
+    refused = rf"spot.report.json: built from spot.obj \(sha256 .*\), not from .*torus.obj"
+    with pytest.raises(gfield.Error, match=r"spot.report.json: built from spot.obj \(330624 bytes\), "
+                       r"not from .*torus.obj as it is now"):
+        gfield.GeometryField.load(f"{spot_asset}.gfield.exr", mesh=DATA_DIR / "meshes" / "torus.obj")
+    edited = tmp_path / "spot.obj"
+    edited.write_bytes(spot.read_bytes().replace(b"v ", b"v  ", 1)[:-1])  # same size, new bytes
+    assert edited.stat().st_size == spot.stat().st_size
+    with pytest.raises(gfield.Error, match=refused.replace("torus", "spot")):
+        gfield.GeometryField.load(f"{spot_asset}.gfield.exr", mesh=edited)
+    with pytest.raises(TypeError, match="mesh: expected None or a path, not int"):
+        gfield.GeometryField.load(f"{spot_asset}.gfield.exr", mesh=5)
+
+
+def test_a_load_while_the_asset_is_republished_reads_one_build(tmp_path):
+    """The asset republished with two sizes in turn while loads run: each load is one build."""
+    spot = DATA_DIR / "meshes" / "spot.obj"
+    name = tmp_path / "spot"
+
+    def publish(round_):
+        return run_cli("build", spot, "-o", name, "--samples", "4", "--verify-rays", "0",
+                       "--size", "64" if round_ % 2 else "96")
+
+    assert publish(0).returncode == 0
+    done = threading.Event()
+
+    def publisher():
+        for round_ in range(1, 7):
+            publish(round_)
+        done.set()
+
+    thread = threading.Thread(target=publisher)
+    thread.start()
+    try:
+        sizes = set()
+        loads = 0
+        while not done.is_set():
+            field = gfield.GeometryField.load(f"{name}.gfield.exr")
+            assert field.build_id == field.image.build_id
+            sizes.add(field.image.size)
+            loads += 1
+    finally:
+        done.set()
+        thread.join()
+    assert sizes == {64, 96} and loads > 100, (sizes, loads)  # the loads saw both builds
 
 
 def test_nearest_lookups_read_the_image_at_their_uv(spot_field):

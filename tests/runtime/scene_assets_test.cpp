@@ -6,8 +6,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -108,6 +110,35 @@ TEST_F(SceneAssets, AnAssetFileThatCannotBeReadIsNamedNotSkipped) {
   r = view();
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "gfield-view: " + field.string() + ": a dangling symbolic link\n");
+}
+
+TEST_F(SceneAssets, AViewWhileTheAssetIsRepublishedReadsOneBuild) {
+  // The asset published in the case's folder (linked layout), republished with two sizes in turn
+  // for as long as the views run: each view draws one build, never files of two.
+  const std::string spot = (kDir / "case" / "spot.obj").string();
+  const std::string name = (kDir / "case" / "assets" / "spot").string();
+  const auto publish = [&](int round) {
+    return test::run_cli("build " + spot + " -o " + name + " --samples 4 --verify-rays 0 --size " +
+                         (round % 2 ? "64" : "96"));
+  };
+  ASSERT_EQ(publish(0).exit_code, 0);
+  std::atomic<bool> done{false};
+  std::thread publisher([&] {
+    for (int round = 1; !done; ++round)
+      publish(round);
+  });
+  int failed = 0;
+  std::string failure;
+  for (int i = 0; i < 100; ++i) {
+    const test::CliRun r = view("--method field");
+    if (r.exit_code != 0) {
+      ++failed;
+      failure = r.err;
+    }
+  }
+  done = true;
+  publisher.join();
+  EXPECT_EQ(failed, 0) << failure;
 }
 
 }  // namespace
