@@ -261,6 +261,7 @@ AssetReport begin_report(const std::string& mesh_path, const TriangleMesh& mesh,
   report.source_path = printable(std::filesystem::absolute(mesh_path).string());
   report.build_id = inputs.build_id;
   report.inputs = inputs.record;
+  report.mesh_modified_ns = inputs.mesh_modified_ns;
   report.mesh_part = printable(options.part);
   for (const std::string& w : warnings) {
     report.warnings.push_back(printable(w));

@@ -6,9 +6,6 @@
 namespace gfield {
 namespace {
 
-/// Reports are a few hundred kB; anything far larger is not one.
-constexpr std::uint64_t kMaxReportBytes = 64ull << 20;
-
 nlohmann::json box_to_json(const Box& box) {
   return {{"min", {box.min.x, box.min.y, box.min.z}}, {"max", {box.max.x, box.max.y, box.max.z}}};
 }
@@ -57,6 +54,8 @@ nlohmann::json asset_report_to_json(const AssetReport& r) {
                       {"seconds", r.seconds}};
   if (!r.mesh_part.empty())
     j["mesh_part"] = r.mesh_part;
+  if (r.mesh_modified_ns != 0)
+    j["mesh_modified_ns"] = r.mesh_modified_ns;
   j["geometry_image"]["size"] = r.image_size;
   j["geometry_image"]["write_seconds"] = r.image_write_seconds;
   j["geometry_field"]["precision"] = r.field_precision == ExrPrecision::kHalf ? "half" : "float";
@@ -74,6 +73,7 @@ AssetReport asset_report_from_json(const nlohmann::json& j) {
   if (BuiltMesh mesh; !built_mesh_from_inputs(r.inputs, mesh))
     throw nlohmann::json::other_error::create(501, "no record of its mesh (inputs.mesh)", &j);
   r.mesh_part = j.value("mesh_part", std::string());
+  r.mesh_modified_ns = j.value("mesh_modified_ns", std::int64_t(0));
   r.warnings = j.at("warnings").get<std::vector<std::string>>();
   r.topology = topology_from_json(j.at("topology"));
   const nlohmann::json& image = j.at("geometry_image");
@@ -99,14 +99,9 @@ AssetReport asset_report_from_json(const nlohmann::json& j) {
 }
 
 bool read_asset_report(const std::string& file, AssetReport& report, std::string& error) {
-  std::string text;
-  if (!read_file(file, kMaxReportBytes, text, error))
+  nlohmann::json j;
+  if (!read_report_json(file, j, error))
     return false;
-  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-  if (!j.is_object()) {
-    error = file + ": not a JSON object";
-    return false;
-  }
   try {
     report = asset_report_from_json(j);
   } catch (const nlohmann::json::exception& e) {

@@ -3,6 +3,7 @@
 // struct written by asset_report_to_json and read back only by asset_report_from_json, so that
 // no reader looks a field up by name.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,7 +37,9 @@ struct AssetReport {
   /// The build's hashed inputs (build_inputs.hpp, BuildInputs::record): kept as the JSON that
   /// was hashed; built_mesh_from_inputs reads its record of the mesh file.
   nlohmann::json inputs = nlohmann::json::object();
-  std::string mesh_part;              ///< the glTF mesh built ("": the whole file)
+  std::string mesh_part;  ///< the glTF mesh built ("": the whole file)
+  /// The mesh file's modification time when hashed (BuildInputs::mesh_modified_ns; 0: none).
+  std::int64_t mesh_modified_ns = 0;
   std::vector<std::string> warnings;  ///< the mesh reader's (printable)
   TopologyReport topology;            ///< of the mesh as read
   GeometryImageReport geometry_image;

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "geometry/mesh_formats.hpp"
+#include "gfield/asset_source.hpp"
 #include "gfield/content_hash.hpp"
 #include "gfield/file_read.hpp"
 #include "gfield/printable.hpp"
@@ -26,6 +27,8 @@ bool hash_build_inputs(const std::string& mesh_path, const nlohmann::json& optio
   }
   std::error_code ec;
   std::string mesh_hash;
+  if (!file_modified_ns(mesh_path, inputs.mesh_modified_ns))
+    inputs.mesh_modified_ns = 0;
   if (!sha256_file(mesh_path, mesh_hash, error)) {
     return false;
   }

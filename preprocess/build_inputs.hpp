@@ -3,8 +3,10 @@
 // "Up to date by content"): the mesh file's name and bytes, its textures (an OBJ's mtllib files
 // and the maps they name), every option that changes an output, and gfield's version. A batch
 // rebuilds an asset exactly when this id differs from the one its files carry; file times are
-// never consulted.
+// never consulted for that (the mesh file's time is recorded beside the id only to spare a
+// reader that checks an asset against its mesh a second hash: asset_source.hpp).
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,9 @@ struct BuildInputs {
   /// "textures": [{"file", "sha256" (null: missing)}], "options": {...}}.
   nlohmann::json record;
   std::string build_id;  ///< the first kBuildIdDigits hex digits of SHA-256(record.dump())
+  /// The mesh file's modification time before it was hashed, ns since the epoch (not hashed:
+  /// readers compare it, with the size, before hashing the mesh again; asset_source.hpp).
+  std::int64_t mesh_modified_ns = 0;
 };
 
 /// Hashes the inputs of building `mesh_path` with `options` (an object of every output-changing

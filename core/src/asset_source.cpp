@@ -1,6 +1,7 @@
 #include "gfield/asset_source.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -41,7 +42,33 @@ bool built_mesh_from_report(const nlohmann::json& report, BuiltMesh& mesh) {
   if (!report.is_object())
     return false;
   const auto inputs = report.find("inputs");
-  return inputs != report.end() && built_mesh_from_inputs(*inputs, mesh);
+  if (inputs == report.end() || !built_mesh_from_inputs(*inputs, mesh))
+    return false;
+  const auto modified = report.find("mesh_modified_ns");
+  mesh.modified_ns =
+      modified != report.end() && modified->is_number_integer() ? modified->get<std::int64_t>() : 0;
+  return true;
+}
+
+bool read_report_json(const std::string& report_file, nlohmann::json& report, std::string& error) {
+  std::string text;
+  if (!read_file(report_file, kMaxReportBytes, text, error))
+    return false;
+  report = nlohmann::json::parse(text, nullptr, false);
+  if (!report.is_object()) {
+    error = report_file + ": not a JSON object";
+    return false;
+  }
+  return true;
+}
+
+bool file_modified_ns(const std::string& file, std::int64_t& ns) {
+  std::error_code ec;
+  const auto time = std::filesystem::last_write_time(file, ec);
+  if (ec)
+    return false;
+  ns = std::chrono::duration_cast<std::chrono::nanoseconds>(time.time_since_epoch()).count();
+  return true;
 }
 
 std::string asset_report_path(const std::string& geometry_image) {
@@ -57,11 +84,11 @@ bool check_asset_source(const std::string& report_file, const std::string& mesh_
   checked = false;
   if (file_problem(report_file) == "no such file")
     return true;
-  std::string text;
-  if (!read_file(report_file, kMaxReportBytes, text, error))
+  nlohmann::json report;
+  if (!read_report_json(report_file, report, error))
     return false;
   BuiltMesh built;
-  if (!built_mesh_from_report(nlohmann::json::parse(text, nullptr, false), built)) {
+  if (!built_mesh_from_report(report, built)) {
     error = report_file + ": no record of the mesh it was built from (inputs.mesh); rebuild it";
     return false;
   }
@@ -71,12 +98,16 @@ bool check_asset_source(const std::string& report_file, const std::string& mesh_
   }
   std::error_code ec;
   const std::uint64_t bytes = std::filesystem::file_size(mesh_file, ec);
+  std::int64_t modified = 0;
+  checked = true;
+  if (!ec && bytes == built.bytes && built.modified_ns != 0 &&
+      file_modified_ns(mesh_file, modified) && modified == built.modified_ns)
+    return true;
   std::string hash;
   if (ec || bytes == built.bytes) {
     if (!sha256_file(mesh_file, hash, error))
       return false;
   }
-  checked = true;
   if (!ec && bytes == built.bytes && hash == built.sha256)
     return true;
   const std::string now =

@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -67,6 +68,27 @@ TEST_F(AssetSource, AnotherSizeOrOtherBytesOfTheSameSizeAreRefusedNamingBothFile
     EXPECT_NE(error.find("not from " + mesh_), std::string::npos) << error;
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;
   }
+}
+
+TEST_F(AssetSource, TheRecordedSizeAndTimeAreTakenWithoutReadingTheMesh) {
+  std::int64_t modified = 0;
+  ASSERT_TRUE(file_modified_ns(mesh_, modified));
+  std::string error;
+  nlohmann::json report;
+  ASSERT_TRUE(read_report_json(report_, report, error)) << error;
+  report["mesh_modified_ns"] = modified;
+  write(report_, report.dump());
+  // Other bytes of the same size: with the recorded time they are not read (the size and the
+  // time say the file is the one hashed), with another time they are, and refused.
+  const auto when = fs::last_write_time(mesh_);
+  write(mesh_, "v 0 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\n");
+  fs::last_write_time(mesh_, when);
+  bool checked = false;
+  EXPECT_TRUE(check_asset_source(report_, mesh_, checked, error)) << error;
+  EXPECT_TRUE(checked);
+  fs::last_write_time(mesh_, when + std::chrono::seconds(1));
+  EXPECT_FALSE(check_asset_source(report_, mesh_, checked, error));
+  EXPECT_NE(error.find("sha256"), std::string::npos) << error;
 }
 
 TEST_F(AssetSource, AnAbsentReportIsNothingToCheck) {
