@@ -151,25 +151,36 @@ TEST(GeometryImageProxy, TexelsLieOnTheFullSurfaceAndMatchItsOwnImage) {
   EXPECT_LE(report.image_to_mesh.mean, 1.25 * full.image_to_mesh.mean);
 }
 
+/// One mesh's geometry image built with `options` (its proxy_above) and without a proxy.
+struct ProxyAndFull {
+  GeometryImage image, full_image;
+  ParameterizedMesh pm, full_pm;
+  GeometryImageReport report, full;
+};
+
+void build_with_and_without_proxy(const TriangleMesh& mesh, GeometryImageOptions options,
+                                  ProxyAndFull& out) {
+  std::string error;
+  ASSERT_TRUE(build_geometry_image(mesh, options, out.image, out.pm, out.report, error)) << error;
+  options.proxy_above = 0;
+  ASSERT_TRUE(build_geometry_image(mesh, options, out.full_image, out.full_pm, out.full, error))
+      << error;
+}
+
 TEST(GeometryImageProxy, AProxyMissingTheBoundGivesWayToTheFullMesh) {
   const TriangleMesh homer = bundled("homer.obj");
   GeometryImageOptions options;
   options.max_mean_error = 1e-9;  // no image reaches it: the proxy's is rejected
   options.proxy_above = 6000;
-  GeometryImage image, full_image;
-  ParameterizedMesh pm, full_pm;
-  GeometryImageReport report, full;
-  std::string error;
-  ASSERT_TRUE(build_geometry_image(homer, options, image, pm, report, error)) << error;
-  EXPECT_FALSE(report.proxy.used);
-  EXPECT_GT(report.proxy.faces, 0u);
-  EXPECT_GT(report.proxy.mean_percent, 2.0 * options.max_mean_error);
-  EXPECT_NE(report.proxy.rejected.find("exceeds"), std::string::npos) << report.proxy.rejected;
-  options.proxy_above = 0;
-  ASSERT_TRUE(build_geometry_image(homer, options, full_image, full_pm, full, error)) << error;
-  EXPECT_EQ(pm.mesh.triangles.size(), homer.triangles.size());
-  EXPECT_TRUE(image.position == full_image.position);
-  EXPECT_TRUE(image.normal == full_image.normal);
+  ProxyAndFull b;
+  ASSERT_NO_FATAL_FAILURE(build_with_and_without_proxy(homer, options, b));
+  EXPECT_FALSE(b.report.proxy.used);
+  EXPECT_GT(b.report.proxy.faces, 0u);
+  EXPECT_GT(b.report.proxy.mean_percent, 2.0 * options.max_mean_error);
+  EXPECT_NE(b.report.proxy.rejected.find("exceeds"), std::string::npos) << b.report.proxy.rejected;
+  EXPECT_EQ(b.pm.mesh.triangles.size(), homer.triangles.size());
+  EXPECT_TRUE(b.image.position == b.full_image.position);
+  EXPECT_TRUE(b.image.normal == b.full_image.normal);
 }
 
 TEST(GeometryImageProxy, AProxyWhoseRouteFailsGivesWayToTheFullMesh) {
@@ -179,41 +190,32 @@ TEST(GeometryImageProxy, AProxyWhoseRouteFailsGivesWayToTheFullMesh) {
   GeometryImageOptions options;
   options.size = 64;
   options.proxy_above = 16;
-  GeometryImage image, full_image;
-  ParameterizedMesh pm, full_pm;
-  GeometryImageReport report, full;
-  std::string error;
-  ASSERT_TRUE(build_geometry_image(torus, options, image, pm, report, error)) << error;
-  EXPECT_FALSE(report.proxy.used);
-  EXPECT_EQ(report.proxy.rejected.rfind("its route failed: ", 0), 0u) << report.proxy.rejected;
-  EXPECT_NE(report.proxy.rejected.find("no face with a positive area"), std::string::npos);
-  options.proxy_above = 0;
-  ASSERT_TRUE(build_geometry_image(torus, options, full_image, full_pm, full, error)) << error;
-  EXPECT_EQ(pm.mesh.triangles.size(), torus.triangles.size());
-  EXPECT_TRUE(image.position == full_image.position);
+  ProxyAndFull b;
+  ASSERT_NO_FATAL_FAILURE(build_with_and_without_proxy(torus, options, b));
+  EXPECT_FALSE(b.report.proxy.used);
+  const std::string& rejected = b.report.proxy.rejected;
+  EXPECT_EQ(rejected.rfind("its route failed: ", 0), 0u) << rejected;
+  EXPECT_NE(rejected.find("no face with a positive area"), std::string::npos) << rejected;
+  EXPECT_EQ(b.pm.mesh.triangles.size(), torus.triangles.size());
+  EXPECT_TRUE(b.image.position == b.full_image.position);
 }
 
 TEST(GeometryImageProxy, AFlatTessellatedMeshChartsItsProxyWithoutHoles) {
   // Collapses on the flat faces of a midpoint-subdivided mesh leave needles with collinear
   // corners; unflipped, repair drops them and opens a hole per needle, and the charts' maps
   // stretch around the holes.
-  const TriangleMesh spot = test::midpoint_subdivided(bundled("spot.obj"), 2);
   GeometryImageOptions options;
   options.size = 256;
   options.proxy_above = 20000;
-  GeometryImage image, full_image;
-  ParameterizedMesh pm, full_pm;
-  GeometryImageReport report, full;
-  std::string error;
-  ASSERT_TRUE(build_geometry_image(spot, options, image, pm, report, error)) << error;
-  options.proxy_above = 0;
-  ASSERT_TRUE(build_geometry_image(spot, options, full_image, full_pm, full, error)) << error;
-  ASSERT_TRUE(report.proxy.used) << report.proxy.rejected;
-  EXPECT_GT(report.proxy.flat_flips, 0u);
-  EXPECT_EQ(report.repair.degenerate_faces, 0u);
-  EXPECT_EQ(report.repair.holes_found, full.repair.holes_found);
+  ProxyAndFull b;
+  ASSERT_NO_FATAL_FAILURE(
+      build_with_and_without_proxy(test::midpoint_subdivided(bundled("spot.obj"), 2), options, b));
+  ASSERT_TRUE(b.report.proxy.used) << b.report.proxy.rejected;
+  EXPECT_GT(b.report.proxy.flat_flips, 0u);
+  EXPECT_EQ(b.report.repair.degenerate_faces, 0u);
+  EXPECT_EQ(b.report.repair.holes_found, b.full.repair.holes_found);
   // Within the factor an automatic size accepts (unflipped: 55 times the full mesh's image's).
-  EXPECT_LE(report.mesh_to_image.mean, kProxyErrorFactor * full.mesh_to_image.mean);
+  EXPECT_LE(b.report.mesh_to_image.mean, kProxyErrorFactor * b.full.mesh_to_image.mean);
 }
 
 /// `gfield build homer.obj` at 256^2, N = 12, with --proxy-above `proxy_above`: its report.
