@@ -50,6 +50,14 @@ struct GlVertexArrayKind {
   }
   static void destroy(GLuint id) { glDeleteVertexArrays(1, &id); }
 };
+struct GlQueryKind {
+  static GLuint create(GLenum target) {
+    GLuint id = 0;
+    glCreateQueries(target, 1, &id);
+    return id;
+  }
+  static void destroy(GLuint id) { glDeleteQueries(1, &id); }
+};
 
 /// One GL object of kind `Kind`; 0 when empty.
 template <class Kind>
@@ -92,5 +100,6 @@ using GlBuffer = GlObject<GlBufferKind>;
 using GlFramebuffer = GlObject<GlFramebufferKind>;
 using GlRenderbuffer = GlObject<GlRenderbufferKind>;
 using GlVertexArray = GlObject<GlVertexArrayKind>;
+using GlQuery = GlObject<GlQueryKind>;
 
 }  // namespace gfield

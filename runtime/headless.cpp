@@ -7,6 +7,7 @@
 #include "gfield/printable.hpp"
 #include "gfield/stopwatch.hpp"
 #include "runtime/asset_memory.hpp"
+#include "runtime/frame_timing.hpp"
 #include "runtime/gl_context.hpp"
 
 namespace gfield {
@@ -21,8 +22,8 @@ int fail(const std::string& message, int code = 2) {
 struct MethodRun {
   Image image;
   FrameStats first;          ///< the first frame (shader warm-up included)
-  FrameStats rest;           ///< the other frames, summed
-  double rest_cpu_ms = 0.0;  ///< CPU time of this process over the other frames (all threads)
+  FrameTimes rest;           ///< with more than one frame: the timed frames after the warm-up
+  double rest_cpu_ms = 0.0;  ///< CPU time of this process over the timed frames (all threads)
 };
 
 /// Selects (loads) the method named `name`.
@@ -35,33 +36,60 @@ bool select_method(ViewSession& session, const std::string& name, std::string& e
   return session.select(index, error);
 }
 
-/// Renders o.frames pictures with the selected method.
+/// Renders the selected method's picture; with o.frames > 1, warm-up frames (frame_timing.hpp)
+/// and o.frames - 1 timed frames after the first.
 MethodRun render_frames(ViewSession& session, const HeadlessOptions& o) {
   Method& method = session.method(session.current());
   const Camera& camera = session.scene().scene().camera;
   MethodRun run;
   run.image = render_image(method, camera, o.width, o.height, o.samples_per_pixel, &run.first);
+  if (o.frames == 1)
+    return run;
   const double cpu_start = process_cpu_ms();
-  for (int f = 1; f < o.frames; ++f)
-    run.image = render_image(method, camera, o.width, o.height, o.samples_per_pixel, &run.rest);
+  run.rest = time_frames(
+      [&](FrameStats* stats) {
+        run.image = render_image(method, camera, o.width, o.height, o.samples_per_pixel, stats);
+      },
+      o.frames - 1);
   run.rest_cpu_ms = process_cpu_ms() - cpu_start;
   return run;
 }
 
-void print_bench(const Method& method, const MethodRun& run, const HeadlessOptions& o) {
-  const int timed = o.frames > 1 ? o.frames - 1 : 1;
-  const FrameStats& s = o.frames > 1 ? run.rest : run.first;
-  const double ms = s.milliseconds / timed;
-  std::printf("%s: %dx%d, %d spp\n", method.info().name.c_str(), o.width, o.height,
-              o.samples_per_pixel);
+/// "median M ms (min A, max B[, spread S%: noisy])".
+std::string summary_text(const TimeSummary& t) {
+  char text[128];
+  std::snprintf(text, sizeof(text), "median %.2f ms (min %.2f, max %.2f%s)", t.median, t.min, t.max,
+                t.noisy() ? ", spread above 10%: noisy" : "");
+  return text;
+}
+
+/// The frame time lines: the first frame, and the timed frames' wall and GPU times apart.
+void print_frame_times(const MethodRun& run, const HeadlessOptions& o) {
   std::printf("first frame: %.2f ms (includes shader warm-up)\n", run.first.milliseconds);
-  std::printf("frame: %.2f ms (%.1f FPS) over %d frame(s)", ms, 1000.0 / std::max(ms, 1e-6), timed);
+  const int timed = o.frames > 1 ? o.frames - 1 : 1;
+  const FrameStats& s = o.frames > 1 ? run.rest.stats : run.first;
+  const TimeSummary wall = o.frames > 1
+                               ? summarize(run.rest.wall_ms)
+                               : TimeSummary{s.milliseconds, s.milliseconds, s.milliseconds};
+  std::printf("frame: %.2f ms (%.1f FPS), the median of %d frame(s)", wall.median,
+              1000.0 / std::max(wall.median, 1e-6), timed);
   for (size_t k = 0; k < s.parts_ms.size(); ++k)
     std::printf("%s %s %.2f ms", k == 0 ? ":" : ",", s.parts_ms[k].first.c_str(),
                 s.parts_ms[k].second / timed);
   if (o.frames > 1)  // on a GL that runs on the CPU (llvmpipe): what another load does not change
     std::printf("; CPU %.2f ms per frame", run.rest_cpu_ms / timed);
   std::printf("\n");
+  if (o.frames > 1)
+    std::printf("wall: %s; GPU: %s; after %d warm-up frame(s)\n", summary_text(wall).c_str(),
+                summary_text(summarize(run.rest.gpu_ms)).c_str(), run.rest.warmup_frames);
+}
+
+void print_bench(const Method& method, const MethodRun& run, const HeadlessOptions& o) {
+  const int timed = o.frames > 1 ? o.frames - 1 : 1;
+  const FrameStats& s = o.frames > 1 ? run.rest.stats : run.first;
+  std::printf("%s: %dx%d, %d spp\n", method.info().name.c_str(), o.width, o.height,
+              o.samples_per_pixel);
+  print_frame_times(run, o);
   // Counts per sample (one frame is samples_per_pixel samples).
   FrameStats per_sample;
   const double samples = double(timed) * double(std::max(1, o.samples_per_pixel));
