@@ -139,9 +139,9 @@ void bench_scene(const SeriesMesh& m, const std::string& file, const char* kind,
   const std::string route = method.status();
   double field_mb = 0.0, bvh_mb = 0.0;
   asset_bytes(gpu, field_mb, bvh_mb);
-  std::printf("| %s | %zu | %s | field | %.1f | %.2f | %.1f | %s |\n", m.name.c_str(), m.faces,
-              kind, field.ms, field.psnr, field_mb, work_line(field.per_sample).c_str());
-  std::printf("| | | | BVH | %.1f | %.2f | %.1f | %s |\n", bvh.ms, bvh.psnr, bvh_mb,
+  std::printf("| %s | %zu | %s | field | %s | %.2f | %.1f | %s |\n", m.name.c_str(), m.faces, kind,
+              ms_text(field).c_str(), field.psnr, field_mb, work_line(field.per_sample).c_str());
+  std::printf("| | | | BVH | %s | %.2f | %.1f | %s |\n", ms_text(bvh).c_str(), bvh.psnr, bvh_mb,
               work_line(bvh.per_sample).c_str());
   std::printf("| | | | field / BVH | %.2f | %+.2f | | |\n", field.ms / bvh.ms,
               field.psnr - bvh.psnr);
@@ -180,5 +180,6 @@ int main(int argc, char** argv) {
     for (const bool mirror : {false, true})
       bench_scene(m, series_scene(m, mirror, folder.path), mirror ? "mirror" : "glass", size, depth,
                   frames);
+  std::printf("\n%s\n", kFrameTimeNote);
   return 0;
 }

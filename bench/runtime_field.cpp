@@ -42,8 +42,8 @@ struct ReferenceTime {
 void print_row(const char* what, const Run& r, const ReferenceTime& reference,
                const FrameStats& rays) {
   const double traced = rays.count("traced pixels");
-  std::printf("| %s | %.1f | %.2f | %.2f | %.2f | %.2f | %s |\n", what, r.ms, r.ms / reference.ms,
-              r.cpu_ms / reference.cpu_ms, r.psnr,
+  std::printf("| %s | %s | %.2f | %.2f | %.2f | %.2f | %s |\n", what, ms_text(r).c_str(),
+              r.ms / reference.ms, r.cpu_ms / reference.cpu_ms, r.psnr,
               traced > 0.0 ? rays.count("secondary rays") / traced : 0.0,
               work_line(r.per_sample).c_str());
 }
@@ -84,7 +84,7 @@ void bench_depth(GeometryFieldMethod& method, ReferenceTracer& tracer, const Sce
   const Run bvh = run(method, scene, size, frames, reference);
   print_row("bvh (exact)", bvh, reference_time, bvh.per_sample);
   method.settings().intersect = MeshIntersection::kField;
-  std::printf("\nfield (refined) / bvh time: %.2f\n", field.ms / bvh.ms);
+  std::printf("\nfield (refined) / bvh time: %.2f\n%s\n", field.ms / bvh.ms, kFrameTimeNote);
   std::fflush(stdout);
 }
 

@@ -9,14 +9,17 @@
 
 #include "gfield/image_metrics.hpp"
 #include "gfield/stopwatch.hpp"
+#include "runtime/frame_timing.hpp"
 #include "runtime/methods/geometry_field.hpp"
 
 namespace gfield {
 
 /// One configuration's timed render: ms per frame, PSNR against the reference, and its work.
 struct Run {
-  double ms = 0.0;
-  double cpu_ms = 0.0;  ///< CPU time per frame, all threads
+  double ms = 0.0;      ///< the timed frames' median wall time (frame_timing.hpp)
+  double gpu_ms = 0.0;  ///< their median GPU time
+  bool noisy = false;   ///< their wall times' range exceeds kMaxSpread of the median
+  double cpu_ms = 0.0;  ///< CPU time per frame (warm-up frames included), all threads
   double psnr = 0.0;
   FrameStats per_sample;  ///< one untimed counting frame
 };
@@ -24,20 +27,34 @@ struct Run {
 inline Run run(GeometryFieldMethod& method, const Scene& scene, int size, int frames,
                const Image& reference) {
   Run r;
-  render_image(method, scene.camera, size, size, 1);  // warm-up (shader compilation, uploads)
-  FrameStats stats;
   Image image;
   const double cpu_start = process_cpu_ms();
-  for (int f = 0; f < frames; ++f)
-    image = render_image(method, scene.camera, size, size, 1, &stats);
-  r.cpu_ms = (process_cpu_ms() - cpu_start) / frames;
-  r.ms = stats.milliseconds / frames;
+  const FrameTimes times = time_frames(
+      [&](FrameStats* stats) { image = render_image(method, scene.camera, size, size, 1, stats); },
+      frames);
+  r.cpu_ms = (process_cpu_ms() - cpu_start) / double(times.warmup_frames + frames);
+  const TimeSummary wall = summarize(times.wall_ms);
+  r.ms = wall.median;
+  r.noisy = wall.noisy();
+  r.gpu_ms = summarize(times.gpu_ms).median;
   r.psnr = compare_images(clamped_to_display(image), reference).psnr;
   method.settings().count_work = true;
   render_image(method, scene.camera, size, size, 1, &r.per_sample);
   method.settings().count_work = false;
   return r;
 }
+
+/// A run's ms per frame for a table: "12.3", or "12.3*" when its frames' range is noisy.
+inline std::string ms_text(const Run& r) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f%s", r.ms, r.noisy ? "*" : "");
+  return text;
+}
+
+/// The tables' note on their ms columns.
+inline constexpr const char* kFrameTimeNote =
+    "ms: the median wall time of the timed frames, after warm-up frames until two consecutive "
+    "ones agree within 10% (runtime/frame_timing.hpp); *: their range exceeds 10% of the median.";
 
 /// GPU bytes of the meshes' geometry images and fields, and of their BVHs and rasterised meshes.
 inline void asset_bytes(const GpuScene& gpu, double& field_mb, double& bvh_mb) {
