@@ -23,7 +23,7 @@ enum class ComponentSelection { kAll, kLargest };
 
 /// Largest input accepted (faces). Above it the pipeline stops with an error instead of
 /// exhausting memory: a build through its proxy peaks at about 0.25 KB per face (the bunny
-/// midpoint-subdivided to 4.4M faces: 1.0 GB), one without (a rejected proxy) at about 2 KB.
+/// midpoint-subdivided to 4.4M faces: 0.95 GB), one without (a rejected proxy) at about 2 KB.
 inline constexpr size_t kMaxFaces = 8'000'000;
 /// Image sizes accepted (texels per side).
 inline constexpr int kMinImageSize = 8;
