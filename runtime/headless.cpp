@@ -82,6 +82,9 @@ void print_frame_times(const MethodRun& run, const HeadlessOptions& o) {
   if (o.frames > 1)
     std::printf("wall: %s; GPU: %s; after %d warm-up frame(s)\n", summary_text(wall).c_str(),
                 summary_text(summarize(run.rest.gpu_ms)).c_str(), run.rest.warmup_frames);
+  for (size_t k = 0; k < s.gpu_parts_ms.size(); ++k)
+    std::printf("%s %s %.2f ms%s", k == 0 ? "GPU per pass:" : ",", s.gpu_parts_ms[k].first.c_str(),
+                s.gpu_parts_ms[k].second / timed, k + 1 == s.gpu_parts_ms.size() ? "\n" : "");
 }
 
 void print_bench(const Method& method, const MethodRun& run, const HeadlessOptions& o) {

@@ -67,6 +67,10 @@ void FrameStats::add_part(const std::string& name, double ms) {
   add_named(parts_ms, name, ms);
 }
 
+void FrameStats::add_gpu_part(const std::string& name, double ms) {
+  add_named(gpu_parts_ms, name, ms);
+}
+
 void FrameStats::add_count(const std::string& name, double count) {
   add_named(counts, name, count);
 }
@@ -92,19 +96,14 @@ Image render_image(Method& method, const Camera& camera, int width, int height, 
   });
 }
 
-double timed_ms(bool timed, const Stopwatch& clock) {
-  if (!timed)
-    return 0.0;
-  glFinish();
-  return clock.milliseconds();
-}
-
-void add_frame_time(FrameStats* stats, const Stopwatch& clock, const std::string& part,
-                    double part_ms) {
+void add_frame_time(FrameStats* stats, PassClock& clock, const std::string& part, double part_ms,
+                    double part_gpu_ms) {
   if (stats == nullptr)
     return;
-  stats->milliseconds += timed_ms(true, clock);
+  stats->milliseconds += clock.read();
+  stats->gpu_milliseconds += clock.gpu_ms(clock.readings() - 1);
   stats->add_part(part, part_ms);
+  stats->add_gpu_part(part, part_gpu_ms);
 }
 
 std::string option_value_text(const MethodOption& o) {

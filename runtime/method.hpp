@@ -21,6 +21,7 @@
 #include "gfield/stopwatch.hpp"
 #include "runtime/framebuffer.hpp"
 #include "runtime/gpu_scene.hpp"
+#include "runtime/pass_clock.hpp"
 
 namespace gfield {
 
@@ -72,13 +73,16 @@ MethodOption choice_option(std::string name, std::string label, std::string help
 
 /// One frame's figures, summed over the frames rendered into the same stats.
 struct FrameStats {
-  double milliseconds = 0.0;  ///< wall time (glFinish), all samples
-  /// Named parts of the frame time (e.g. "G-buffer", "tracing") and named counts (e.g. "traced
-  /// pixels"), in the order the method reports them.
+  double milliseconds = 0.0;      ///< wall time (glFinish), all samples
+  double gpu_milliseconds = 0.0;  ///< GPU time (GL_TIMESTAMP queries: pass_clock.hpp)
+  /// Named parts of the frame time (e.g. "G-buffer", "tracing"), by the wall clock and by the
+  /// GPU's, and named counts (e.g. "traced pixels"), in the order the method reports them.
   std::vector<std::pair<std::string, double>> parts_ms;
+  std::vector<std::pair<std::string, double>> gpu_parts_ms;
   std::vector<std::pair<std::string, double>> counts;
 
   void add_part(const std::string& name, double ms);
+  void add_gpu_part(const std::string& name, double ms);
   void add_count(const std::string& name, double count);
   /// The part or count called `name` (0 when not reported).
   double part_ms(const std::string& name) const;
@@ -131,13 +135,10 @@ class Method {
 Image render_image(Method& method, const Camera& camera, int width, int height, int spp,
                    FrameStats* stats = nullptr);
 
-/// When `timed`: waits for the GPU and returns the milliseconds since `clock` started; else 0
-/// (a frame that is not timed is not stalled).
-double timed_ms(bool timed, const Stopwatch& clock);
-/// With `stats`: waits for the GPU, adds the frame's time since `clock` started and the named
-/// part `part` of `part_ms`.
-void add_frame_time(FrameStats* stats, const Stopwatch& clock, const std::string& part,
-                    double part_ms);
+/// With `stats`: reads `clock` (the frame's end) and adds the frame's wall and GPU time since it
+/// started, and its named part `part` of `part_ms` wall and `part_gpu_ms` GPU milliseconds.
+void add_frame_time(FrameStats* stats, PassClock& clock, const std::string& part, double part_ms,
+                    double part_gpu_ms);
 
 /// The current value of option `o` as a command-line word ("refined", "4", "0.005"); for a flag,
 /// "on" when `--NAME` is in effect, else "off".

@@ -92,7 +92,7 @@ void CubeMapMethod::render_cube_map(int object, int size) {
 
 void CubeMapMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 jitter,
                            FrameStats* stats) {
-  const Stopwatch clock;
+  PassClock clock(stats != nullptr);
   const int objects = int(passes_.scene().scene().objects.size());
   cubes_.resize(size_t(objects));
   glDisable(GL_CULL_FACE);
@@ -101,7 +101,7 @@ void CubeMapMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 
   for (int k = 0; k < objects; ++k)
     if (uses_cube(k))
       render_cube_map(k, std::max(1, settings_.cube_size));
-  const double pass_ms = timed_ms(stats != nullptr, clock);
+  const double pass_ms = clock.read();
   const ImageSpaceView view = passes_.camera_view(camera, target.width(), target.height(), jitter);
   target.bind();
   passes_.draw_background_and_opaque(view, [&](int k) { return !uses_cube(k); });
@@ -117,7 +117,7 @@ void CubeMapMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 
     glBindTextureUnit(gpu::UNIT_CUBE, cubes_[size_t(k)].texture.id());
     passes_.draw_object(surface_program_, k);
   }
-  add_frame_time(stats, clock, "cube maps", pass_ms);
+  add_frame_time(stats, clock, "cube maps", pass_ms, clock.gpu_ms(0));
 }
 
 bool CubeMapMethod::reload_shaders_if_changed(std::string& error) {

@@ -213,16 +213,19 @@ void GeometryFieldMethod::render_tracing(const Camera& camera, Framebuffer& targ
 void GeometryFieldMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 jitter,
                                  FrameStats* stats) {
   follow_settings();
-  const Stopwatch clock;
+  PassClock clock(stats != nullptr);
   render_gbuffer(camera, target.width(), target.height(), jitter);
-  const double gbuffer_ms = timed_ms(stats != nullptr, clock);
+  const double gbuffer_ms = clock.read();
   render_tracing(camera, target, jitter);
   if (stats == nullptr)
     return;
-  const double ms = timed_ms(true, clock);
+  const double ms = clock.read();
   stats->milliseconds += ms;
+  stats->gpu_milliseconds += clock.gpu_ms(1);
   stats->add_part("G-buffer", gbuffer_ms);
   stats->add_part("tracing", ms - gbuffer_ms);
+  stats->add_gpu_part("G-buffer", clock.gpu_ms(0));
+  stats->add_gpu_part("tracing", clock.gpu_ms(1) - clock.gpu_ms(0));
   long long traced = 0, rays = 0;
   for (const glm::vec4& h : target.read_hits()) {
     if (h.x >= 0.0f && scene_->scene().objects[size_t(h.x)].material.type != MaterialType::kDiffuse)

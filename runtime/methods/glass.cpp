@@ -238,7 +238,7 @@ void GlassMethod::ClassImages::ensure(int w, int h, int class_layers) {
 }
 
 void GlassMethod::peel(const glm::mat4& view_projection, int width, int height) {
-  const Stopwatch clock;
+  PassClock clock(timed_);
   glUseProgram(peel_program_.id());
   glUniformMatrix4fv(peel_program_.uniform("u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(view_projection));
@@ -256,7 +256,8 @@ void GlassMethod::peel(const glm::mat4& view_projection, int width, int height) 
       glBindTextureUnit(gpu::UNIT_PEEL_PREVIOUS, layers_[k - 1].texture(0));
     glDrawArrays(GL_TRIANGLES, 0, glass_vertex_count_);
   }
-  peel_ms_ = timed_ms(timed_, clock);
+  peel_ms_ = clock.read();
+  peel_gpu_ms_ = clock.gpu_ms(0);
 }
 
 void GlassMethod::set_class_uniforms(int refraction_class) {
@@ -363,8 +364,8 @@ void GlassMethod::composite(const Camera& camera, Framebuffer& target, glm::vec2
 
 void GlassMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 jitter,
                          FrameStats* stats) {
-  const Stopwatch clock;
   timed_ = stats != nullptr;
+  PassClock clock(timed_);
   const int width = target.width(), height = target.height();
   const SceneObject& glass = scene_->scene_object(glass_object_);
   const std::vector<int> classes =
@@ -375,12 +376,14 @@ void GlassMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 ji
   glDisable(GL_BLEND);
   int layer_of_class[kGlassClasses];
   draw_class_images(camera, classes, frustum.projection * frustum.view, layer_of_class);
-  const double scene_ms = timed_ms(timed_, clock) - peel_ms_;
+  const double scene_ms = clock.read() - peel_ms_;
+  const double scene_gpu_ms = clock.gpu_ms(0) - peel_gpu_ms_;
   composite(camera, target, jitter, frustum, layer_of_class);
   if (stats == nullptr)
     return;
-  add_frame_time(stats, clock, "peeling", peel_ms_);
+  add_frame_time(stats, clock, "peeling", peel_ms_, peel_gpu_ms_);
   stats->add_part("class images", scene_ms);
+  stats->add_gpu_part("class images", scene_gpu_ms);
   stats->add_count("class images", double(classes.size()));
   stats->add_count("opaque vertices", double(vertex_count()));
 }

@@ -96,8 +96,9 @@ class GlassMethod : public Method {
   ShaderProgram composite_program_;
   RenderTarget layers_[gpu::GLASS_LAYERS];  ///< the peeled glass surfaces
   ClassImages class_images_;
-  bool timed_ = false;    ///< the frame being drawn is timed (glFinish between passes)
-  double peel_ms_ = 0.0;  ///< of the last timed frame
+  bool timed_ = false;        ///< the frame being drawn is timed (glFinish between passes)
+  double peel_ms_ = 0.0;      ///< of the last timed frame
+  double peel_gpu_ms_ = 0.0;  ///< its GPU time
 };
 
 }  // namespace gfield

@@ -127,11 +127,11 @@ void ImageSpaceRefractionMethod::set_refraction_uniforms() const {
 
 void ImageSpaceRefractionMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 jitter,
                                         FrameStats* stats) {
-  const Stopwatch clock;
+  PassClock clock(stats != nullptr);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   render_maps(camera, target.width(), target.height());
-  const double pass_ms = timed_ms(stats != nullptr, clock);
+  const double pass_ms = clock.read();
   const ImageSpaceView view = passes_.camera_view(camera, target.width(), target.height(), jitter);
   target.bind();
   const GpuScene& scene = passes_.scene();
@@ -141,7 +141,7 @@ void ImageSpaceRefractionMethod::render(const Camera& camera, Framebuffer& targe
   for (int k = 0; k < int(scene.scene().objects.size()); ++k)
     if (is_dielectric(scene, k))
       passes_.draw_object(refract_program_, k);
-  add_frame_time(stats, clock, "screen maps", pass_ms);
+  add_frame_time(stats, clock, "screen maps", pass_ms, clock.gpu_ms(0));
 }
 
 bool ImageSpaceRefractionMethod::reload_shaders_if_changed(std::string& error) {

@@ -67,6 +67,7 @@ TEST(FrameTimingView, BenchPrintsWallAndGpuTimesApart) {
   EXPECT_NE(r.out.find("wall: median "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("; GPU: median "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("warm-up frame(s)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("GPU per pass: G-buffer "), std::string::npos) << r.out;
 }
 
 }  // namespace
