@@ -175,9 +175,9 @@ bool make_mesh_proxy(const TriangleMesh& input, size_t target_faces, MeshProxy& 
   const size_t count = meshopt_simplify(
       simplified.data(), indices.data(), indices.size(), positions.data(), welded.positions.size(),
       3 * sizeof(float), 3 * target_faces, 1.0f, meshopt_SimplifyLockBorder, &relative_error);
-  out.error =
-      double(relative_error) *
+  const double scale =
       double(meshopt_simplifyScale(positions.data(), welded.positions.size(), 3 * sizeof(float)));
+  out.error = double(relative_error) * scale;
   simplified.resize(count);
   drop_folded_pairs(simplified);
   std::vector<int> compact(welded.positions.size(), -1);
@@ -195,8 +195,6 @@ bool make_mesh_proxy(const TriangleMesh& input, size_t target_faces, MeshProxy& 
   }
   // Collapses on flat parts leave needles (three collinear corners); flips within a tenth of
   // the error bound remove them.
-  const double scale =
-      double(meshopt_simplifyScale(positions.data(), welded.positions.size(), 3 * sizeof(float)));
   out.flat_flips = flip_flat_edges(out.proxy, 0.1 * out.error + 1e-7 * scale).flips;
   out.seconds = watch.seconds();
   return true;

@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "gfield/stopwatch.hpp"
-#include "runtime/gl_object.hpp"
+#include "runtime/pass_clock.hpp"
 
 namespace gfield {
 
@@ -25,20 +24,11 @@ namespace {
 /// One frame: its wall time (glFinish before and after) and its GPU time (timestamps).
 void time_frame(const std::function<void(FrameStats*)>& frame, FrameStats* stats, double& wall_ms,
                 double& gpu_ms) {
-  GlQuery start, end;
-  start.make(GL_TIMESTAMP);
-  end.make(GL_TIMESTAMP);
-  glFinish();
-  const Stopwatch clock;
-  glQueryCounter(start.id(), GL_TIMESTAMP);
+  glFinish();  // the frame's clocks start on an idle GPU
+  PassClock clock(true);
   frame(stats);
-  glQueryCounter(end.id(), GL_TIMESTAMP);
-  glFinish();
-  wall_ms = clock.milliseconds();
-  GLuint64 t0 = 0, t1 = 0;
-  glGetQueryObjectui64v(start.id(), GL_QUERY_RESULT, &t0);
-  glGetQueryObjectui64v(end.id(), GL_QUERY_RESULT, &t1);
-  gpu_ms = t1 > t0 ? double(t1 - t0) / 1e6 : 0.0;
+  wall_ms = clock.read();
+  gpu_ms = clock.gpu_ms(0);
 }
 
 }  // namespace

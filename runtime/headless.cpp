@@ -23,7 +23,7 @@ struct MethodRun {
   Image image;
   FrameStats first;          ///< the first frame (shader warm-up included)
   FrameTimes rest;           ///< with more than one frame: the timed frames after the warm-up
-  double rest_cpu_ms = 0.0;  ///< CPU time of this process over the timed frames (all threads)
+  double rest_cpu_ms = 0.0;  ///< CPU time of this process per frame after the first (all threads)
 };
 
 /// Selects (loads) the method named `name`.
@@ -51,7 +51,7 @@ MethodRun render_frames(ViewSession& session, const HeadlessOptions& o) {
         run.image = render_image(method, camera, o.width, o.height, o.samples_per_pixel, stats);
       },
       o.frames - 1);
-  run.rest_cpu_ms = process_cpu_ms() - cpu_start;
+  run.rest_cpu_ms = (process_cpu_ms() - cpu_start) / double(run.rest.warmup_frames + o.frames - 1);
   return run;
 }
 
@@ -77,7 +77,7 @@ void print_frame_times(const MethodRun& run, const HeadlessOptions& o) {
     std::printf("%s %s %.2f ms", k == 0 ? ":" : ",", s.parts_ms[k].first.c_str(),
                 s.parts_ms[k].second / timed);
   if (o.frames > 1)  // on a GL that runs on the CPU (llvmpipe): what another load does not change
-    std::printf("; CPU %.2f ms per frame", run.rest_cpu_ms / timed);
+    std::printf("; CPU %.2f ms per frame", run.rest_cpu_ms);
   std::printf("\n");
   if (o.frames > 1)
     std::printf("wall: %s; GPU: %s; after %d warm-up frame(s)\n", summary_text(wall).c_str(),

@@ -9,7 +9,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +23,7 @@
 #include "preprocess/asset_files.hpp"
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/republishing.hpp"
 #include "test_support/test_files.hpp"
 
 namespace gfield {
@@ -248,25 +248,14 @@ TEST_F(AssetUnit, KilledRebuildLeavesTheOldAssetOrTheNewOne) {
 TEST_F(AssetUnit, AVerifyWhileTheAssetIsRepublishedReadsOneBuild) {
   build(kSpot, "spot", kSmall);
   // Republish two builds of other options in turn for as long as the verifies run.
-  std::atomic<bool> done{false};
-  std::thread publisher([&] {
-    for (int round = 0; !done; ++round) {
-      const pid_t pid =
-          spawn(split("build " + kSpot + " -o " + name("spot") + (round % 2 ? kSmall : kLarger)));
-      waitpid(pid, nullptr, 0);
-    }
-  });
-  int failed = 0;
   std::string failure;
-  for (int i = 0; i < 60; ++i) {
-    const test::CliRun r = run_cli("verify " + name("spot") + " --rays 100");
-    if (r.exit_code != 0) {
-      ++failed;
-      failure = r.err;
-    }
-  }
-  done = true;
-  publisher.join();
+  const int failed = test::failed_reads_while_republishing(
+      [&](int round) {
+        const pid_t pid =
+            spawn(split("build " + kSpot + " -o " + name("spot") + (round % 2 ? kLarger : kSmall)));
+        waitpid(pid, nullptr, 0);
+      },
+      [&] { return run_cli("verify " + name("spot") + " --rays 100"); }, 60, failure);
   EXPECT_EQ(failed, 0) << failure;
 }
 

@@ -6,15 +6,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <thread>
 
 #include <gtest/gtest.h>
 
 #include "test_support/build_paths.hpp"
 #include "test_support/cli_run.hpp"
+#include "test_support/republishing.hpp"
 #include "test_support/test_files.hpp"
 
 namespace gfield {
@@ -122,22 +121,9 @@ TEST_F(SceneAssets, AViewWhileTheAssetIsRepublishedReadsOneBuild) {
                          (round % 2 ? "64" : "96"));
   };
   ASSERT_EQ(publish(0).exit_code, 0);
-  std::atomic<bool> done{false};
-  std::thread publisher([&] {
-    for (int round = 1; !done; ++round)
-      publish(round);
-  });
-  int failed = 0;
   std::string failure;
-  for (int i = 0; i < 100; ++i) {
-    const test::CliRun r = view("--method field");
-    if (r.exit_code != 0) {
-      ++failed;
-      failure = r.err;
-    }
-  }
-  done = true;
-  publisher.join();
+  const int failed = test::failed_reads_while_republishing(
+      [&](int round) { publish(round); }, [&] { return view("--method field"); }, 100, failure);
   EXPECT_EQ(failed, 0) << failure;
 }
 
