@@ -69,10 +69,13 @@ void add_common_options(CLI::App& app, Arguments& a) {
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   app.add_option("--frames", h.frames,
-                 "Headless: frames to render (timings average all but the first)")
+                 "Headless: N frames: the first, then (N above 1) warm-up frames until two "
+                 "agree within 10% and N-1 timed ones (their median and range)")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
-  app.add_flag("--bench", h.bench, "Headless: print ms per frame, the GL renderer and counts");
+  app.add_flag("--bench", h.bench,
+               "Headless: print ms per frame (wall and GPU apart, and per pass), the GL renderer "
+               "and counts");
   app.add_option("--side-by-side", h.side_by_side,
                  "Headless: draw this second method to the right of the first")
       ->check(CLI::IsMember(method_names()));
