@@ -12,7 +12,7 @@ set(GFIELD_INSTALL_SHADER_DIR ${GFIELD_INSTALL_SHARE_DIR}/shaders)
 set(GFIELD_INSTALL_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/gfield)
 
 install(DIRECTORY shaders/ DESTINATION ${GFIELD_INSTALL_SHADER_DIR}
-  FILES_MATCHING PATTERN "*.glsl" PATTERN "*.vert" PATTERN "*.frag")
+  FILES_MATCHING PATTERN "*.glsl" PATTERN "*.vert" PATTERN "*.frag" PATTERN "*.comp")
 # The example scenes and bundled meshes (with the material libraries and textures of the
 # textured ones and their sources), named one by one: reports, assets and pictures that commands
 # leave beside them (gfield-view builds a glTF scene's assets beside it) are never installed.

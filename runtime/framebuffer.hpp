@@ -36,6 +36,7 @@ class Framebuffer {
   int height() const { return target_.height(); }
   GLuint framebuffer() const { return target_.framebuffer(); }
   GLuint color_texture() const { return target_.texture(0); }
+  GLuint hits_texture() const { return target_.texture(1); }
 
  private:
   RenderTarget target_;

@@ -122,7 +122,7 @@ class Method {
     return "";
   }
   /// What the method does with this scene that the user should know (shown in the panel and by
-  /// --bench), one line or "".
+  /// --bench), a line per fact or "".
   virtual std::string status() const { return ""; }
   /// What the method falls back on for this scene, one line each (e.g. a mesh without a geometry
   /// field, traced through its BVH): gfield-view prints them on stderr once it has loaded it.

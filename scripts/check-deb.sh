@@ -62,7 +62,7 @@ expected=$(
       lib/cmake/gfield/gfieldConfig.cmake lib/cmake/gfield/gfieldConfigVersion.cmake \
       lib/cmake/gfield/gfieldTargets.cmake "lib/cmake/gfield/gfieldTargets-$build_type.cmake"
     (cd core/include && find gfield -type f) | sed 's|^|include/|'
-    (cd shaders && find . -type f \( -name '*.glsl' -o -name '*.vert' -o -name '*.frag' \)) |
+    (cd shaders && find . -type f \( -name '*.glsl' -o -name '*.vert' -o -name '*.frag' -o -name '*.comp' \)) |
       sed 's|^\./|share/gfield/shaders/|'
     cat "$shipped"
   } | sed 's|^|./usr/|' | sort

@@ -9,6 +9,43 @@
 #include "gfield/stopwatch.hpp"
 
 namespace gfield {
+namespace {
+
+std::vector<std::string> trace_stages(TracePass pass) {
+  if (pass == TracePass::kCompute)
+    return {"field_trace.comp"};
+  return {"fullscreen.vert", "field_trace.frag"};
+}
+
+std::string trace_program_key(TracePass pass, const std::string& defines) {
+  return std::string(trace_pass_name(pass)) + "\n" + defines;
+}
+
+/// The compute tracing pass over `target`: its colour and hits bound as images, one group per
+/// tile of the program's group size, 2^bits groups (the tiles in bit-reversed order,
+/// field_trace.comp).
+void dispatch_tracing(const ShaderProgram& program, Framebuffer& target) {
+  glBindImageTexture(gpu::IMAGE_TRACE_COLOR, target.color_texture(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                     GL_RGBA32F);
+  glBindImageTexture(gpu::IMAGE_TRACE_HITS, target.hits_texture(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                     GL_RGBA32F);
+  GLint group[3] = {1, 1, 1};
+  glGetProgramiv(program.id(), GL_COMPUTE_WORK_GROUP_SIZE, group);
+  const int columns = (target.width() + group[0] - 1) / group[0];
+  const int tiles = columns * ((target.height() + group[1] - 1) / group[1]);
+  int bits = 1;
+  while ((1 << bits) < tiles)
+    ++bits;
+  const int x_bits = std::min(bits, 15);  // every GL takes 65535 groups a dimension
+  glUniform1i(program.uniform("u_tile_columns"), columns);
+  glUniform1i(program.uniform("u_tile_bits"), bits);
+  glDispatchCompute(1u << x_bits, 1u << (bits - x_bits), 1);
+  // What reads the frame next: drawing into it, sampling it, or reading it back.
+  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                  GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+}
+
+}  // namespace
 
 MethodInfo GeometryFieldMethod::info() const {
   return {"field", "geometry field (Li et al. 2006)"};
@@ -38,6 +75,11 @@ std::vector<MethodOption> GeometryFieldMethod::options() {
                     "exactly, through a BVH) or auto (each mesh the cheaper way by a cost model: "
                     "docs/runtime.md); a mesh without a field always by its BVH",
                     &s.intersect, {"field", "bvh", "auto"}),
+      choice_option("pass", "tracing pass",
+                    "The tracing pass: compute (a dispatch: every shader core of a data-centre "
+                    "GPU), fragment (a full-screen pass) or auto (the faster of the two, timed on "
+                    "the first frames); the pictures are the same",
+                    &s.pass, {"auto", "compute", "fragment"}),
       flag_option("count-work", "count work",
                   "Count field lookups, texel fetches, Newton steps and BVH nodes (--bench prints "
                   "them per sample)",
@@ -96,12 +138,18 @@ bool GeometryFieldMethod::load(GpuScene& scene, const std::filesystem::path& sha
   scene_ = &scene;
   shader_dir_ = shader_dir;
   trace_programs_.clear();
-  auto program = std::make_unique<ShaderProgram>();
+  pass_trial_ = {};
   if (!scene.require(needs(), error) || !route_meshes(error) ||
-      !gbuffer_program_.build(shader_dir, {"gbuffer.vert", "gbuffer.frag"}, "", error) ||
-      !program->build(shader_dir, {"fullscreen.vert", "field_trace.frag"}, trace_defines(), error))
+      !gbuffer_program_.build(shader_dir, {"gbuffer.vert", "gbuffer.frag"}, "", error))
     return false;
-  trace_programs_[trace_defines()] = std::move(program);
+  for (TracePass pass : {TracePass::kCompute, TracePass::kFragment}) {
+    if (settings_.pass != TracePass::kAuto && pass != settings_.pass)
+      continue;
+    auto program = std::make_unique<ShaderProgram>();
+    if (!program->build(shader_dir, trace_stages(pass), trace_defines(), error))
+      return false;
+    trace_programs_[trace_program_key(pass, trace_defines())] = std::move(program);
+  }
   return true;
 }
 
@@ -119,15 +167,16 @@ std::string GeometryFieldMethod::trace_defines() const {
          (by_bvh ? "1" : "0") + "\n" + (settings_.count_work ? "#define GF_COUNT_WORK 1\n" : "");
 }
 
-const ShaderProgram* GeometryFieldMethod::trace_program() {
+const ShaderProgram* GeometryFieldMethod::trace_program(TracePass pass) {
   const std::string defines = trace_defines();
-  std::unique_ptr<ShaderProgram>& program = trace_programs_[defines];
+  const std::string key = trace_program_key(pass, defines);
+  std::unique_ptr<ShaderProgram>& program = trace_programs_[key];
   if (!program) {
     auto built = std::make_unique<ShaderProgram>();
     std::string error;
-    if (!built->build(shader_dir_, {"fullscreen.vert", "field_trace.frag"}, defines, error)) {
+    if (!built->build(shader_dir_, trace_stages(pass), defines, error)) {
       std::fprintf(stderr, "%s\n", error.c_str());
-      trace_programs_.erase(defines);
+      trace_programs_.erase(key);
       return nullptr;
     }
     program = std::move(built);
@@ -183,11 +232,19 @@ void GeometryFieldMethod::render_gbuffer(const Camera& camera, int width, int he
     scene_->draw_object(gbuffer_program_, k, RasterMesh::kSource);
 }
 
+TracePass GeometryFieldMethod::frame_pass(int width, int height) {
+  if (settings_.pass != TracePass::kAuto)
+    return settings_.pass;
+  restart_pass_trial(pass_trial_,
+                     trace_defines() + std::to_string(width) + "x" + std::to_string(height));
+  return next_trace_pass(pass_trial_);
+}
+
 void GeometryFieldMethod::render_tracing(const Camera& camera, Framebuffer& target,
-                                         glm::vec2 jitter) {
+                                         glm::vec2 jitter, TracePass pass) {
   target.bind();
   glDisable(GL_DEPTH_TEST);
-  const ShaderProgram* built = trace_program();
+  const ShaderProgram* built = trace_program(pass);
   if (built == nullptr)
     return;
   const ShaderProgram& program = *built;
@@ -207,19 +264,27 @@ void GeometryFieldMethod::render_tracing(const Camera& camera, Framebuffer& targ
   glUniform1i(u("u_max_depth"), settings_.max_depth);
   glUniform1f(u("u_min_weight"), settings_.min_weight);
   glUniform1i(u("u_max_rays"), settings_.max_rays);
-  scene_->draw_fullscreen();
+  if (pass == TracePass::kFragment) {
+    scene_->draw_fullscreen();
+    return;
+  }
+  dispatch_tracing(program, target);
 }
 
 void GeometryFieldMethod::render(const Camera& camera, Framebuffer& target, glm::vec2 jitter,
                                  FrameStats* stats) {
   follow_settings();
-  PassClock clock(stats != nullptr);
+  const TracePass pass = frame_pass(target.width(), target.height());
+  const bool trial = settings_.pass == TracePass::kAuto && !pass_trial_done(pass_trial_);
+  PassClock clock(stats != nullptr || trial);
   render_gbuffer(camera, target.width(), target.height(), jitter);
   const double gbuffer_ms = clock.read();
-  render_tracing(camera, target, jitter);
+  render_tracing(camera, target, jitter, pass);
+  const double ms = clock.read();
+  if (trial)
+    record_trace_pass(pass_trial_, pass, clock.gpu_ms(1) - clock.gpu_ms(0));
   if (stats == nullptr)
     return;
-  const double ms = clock.read();
   stats->milliseconds += ms;
   stats->gpu_milliseconds += clock.gpu_ms(1);
   stats->add_part("G-buffer", gbuffer_ms);
@@ -288,6 +353,16 @@ std::vector<std::string> GeometryFieldMethod::notes() const {
   return notes;
 }
 
+std::string GeometryFieldMethod::pass_status() const {
+  if (settings_.pass != TracePass::kAuto)
+    return trace_pass_name(settings_.pass);
+  return describe_pass_trial(pass_trial_);
+}
+
+bool GeometryFieldMethod::pass_settled() const {
+  return settings_.pass != TracePass::kAuto || pass_trial_done(pass_trial_);
+}
+
 std::string GeometryFieldMethod::status() const {
   const Scene& scene = scene_->scene();
   const std::vector<GpuAsset>& assets = scene_->assets().assets();
@@ -303,10 +378,11 @@ std::string GeometryFieldMethod::status() const {
     else
       by_bvh += (by_bvh.empty() ? "" : ", ") + name + (field ? why : " (no field)");
   }
+  const std::string pass = "tracing pass: " + pass_status();
   if (by_field.empty() && by_bvh.empty())
-    return "";
+    return pass;
   return "meshes by field: " + (by_field.empty() ? "none" : by_field) +
-         "; by BVH: " + (by_bvh.empty() ? "none" : by_bvh);
+         "; by BVH: " + (by_bvh.empty() ? "none" : by_bvh) + "\n" + pass;
 }
 
 }  // namespace gfield

@@ -127,6 +127,10 @@ GF_CONST int UNIT_GBUFFER_ALBEDO = 24;  // rgb albedo of the first hit (diffuse 
 // gpu_contract_test.cpp checks both at compile time).
 GF_CONST int UNIT_COUNT = 25;
 
+// Image units (image load/store): the field method's compute tracing pass writes the frame.
+GF_CONST int IMAGE_TRACE_COLOR = 0;  // RGBA32F: linear radiance, alpha 1
+GF_CONST int IMAGE_TRACE_HITS = 1;   // RGBA32F: first hit object, secondary rays traced, 0, 0
+
 // Geometry-field texels on the GPU (runtime/gpu_assets): each uv component as a normalised
 // integer of `bits` bits (8: RG8, 16: RG16; 32: RG32F, the float as is). A uv in [0,1] is the
 // code round(uv * (2^bits - 3)); code 2^bits - 2 stands for "no ray" (-2), 2^bits - 1 for a

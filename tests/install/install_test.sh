@@ -22,7 +22,8 @@ fail() { echo "install_test: $*" >&2; exit 1; }
 step "cmake --install $build --prefix $prefix"
 cmake --install "$build" --prefix "$prefix" > "$work/install.log"
 for f in bin/gfield bin/gfield-view share/gfield/shaders/lib/field_lookup.glsl \
-  share/gfield/shaders/field_trace.frag share/gfield/meshes/spot.obj \
+  share/gfield/shaders/field_trace.frag share/gfield/shaders/field_trace.comp \
+  share/gfield/meshes/spot.obj \
   share/gfield/meshes/SOURCES.md share/gfield/scenes/mirror-torus-instances.json \
   share/gfield/.gfield-root \
   include/gfield/field_lookup.hpp lib/libgfield_core.a lib/cmake/gfield/gfieldConfig.cmake \

@@ -20,6 +20,7 @@
 #include "runtime/shader_program.hpp"
 #include "runtime/work_counters.hpp"
 #include "test_support/build_paths.hpp"
+#include "test_support/example_scene.hpp"
 #include "test_support/gl_suite.hpp"
 
 namespace gfield {
@@ -173,31 +174,6 @@ TEST_F(RenderTest, MatchesReferenceTracerAndRefinedBeatsLinearBeatsNearest) {
   }
 }
 
-/// An example scene of data/scenes with its mesh objects' assets built into the test folder by
-/// `gfield batch` with the defaults of `gfield build` (as scripts/demo.sh builds them); batch
-/// rebuilds an asset whose build id no longer matches its mesh and options, so a test folder
-/// left by an older build is never used.
-std::string example_scene(const std::string& name) {
-  const fs::path source = fs::path(gfield::build_paths::data_dir()) / "scenes" / (name + ".json");
-  nlohmann::json scene = nlohmann::json::parse(std::ifstream(source));
-  const fs::path folder = kDir / "examples";
-  for (auto& object : scene["objects"]) {
-    if (object["shape"] != "mesh")
-      continue;
-    const fs::path mesh =
-        fs::weakly_canonical(source.parent_path() / object["file"].get<std::string>());
-    const fs::path asset = folder / mesh.stem();
-    const std::string command = std::string("\"") + gfield::build_paths::cli() + "\" batch \"" +
-                                mesh.string() + "\" -o \"" + folder.string() +
-                                "\" --verify-rays 0 > /dev/null 2>&1";
-    EXPECT_EQ(std::system(command.c_str()), 0) << command;
-    object["file"] = mesh.string();
-    object["gimage"] = asset.string() + ".gimage.exr";
-    object["gfield"] = asset.string() + ".gfield.exr";
-  }
-  return scene.dump();
-}
-
 TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
   // The issue's setting: 256^2, depth 4, default assets; 4 samples per pixel at the same strata
   // centres in both renderers (at 1 spp the refraction's chaotic pixels dominate: 22.8 dB).
@@ -212,8 +188,8 @@ TEST_F(RenderTest, ExampleScenesMatchReferenceTracer) {
     SCOPED_TRACE(name);
     Scene scene;
     double psnr[3] = {0.0, 0.0, 0.0};
-    if (!psnr_per_mode(name, example_scene(name), kExampleSize, kExampleSamples, kDepth, psnr,
-                       scene))
+    if (!psnr_per_mode(name, test::example_scene(name, kDir / "examples"), kExampleSize,
+                       kExampleSamples, kDepth, psnr, scene))
       continue;
     EXPECT_GE(psnr[2], min_psnr);
     const bool has_fields =

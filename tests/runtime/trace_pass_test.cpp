@@ -1,0 +1,141 @@
+// The field method's two tracing passes: the compute dispatch and the fragment pass draw the
+// same picture, bit for bit, with the same work, on the example scenes (mirrors, a textured
+// mirror, glass; fields and BVHs); and --pass auto's trial times both and keeps the faster.
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "geometry/scene_file.hpp"
+#include "runtime/methods/geometry_field.hpp"
+#include "runtime/methods/trace_pass.hpp"
+#include "runtime/shader_program.hpp"
+#include "runtime/work_counters.hpp"
+#include "test_support/build_paths.hpp"
+#include "test_support/example_scene.hpp"
+#include "test_support/gl_suite.hpp"
+
+namespace gfield {
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path kDir = fs::path(gfield::build_paths::test_tmp()) / "runtime_trace_pass";
+
+TEST(PassTrial, AlternatesFromComputeThenKeepsTheFasterTimedFrame) {
+  PassTrial trial;
+  restart_pass_trial(trial, "program at 64x64");
+  // Warm-ups (first of each pass) are slow and left out; compute's best timed frame is 5 ms.
+  const double frames[] = {900.0, 800.0, 6.0, 7.0, 5.0, 6.5};
+  for (double ms : frames) {
+    EXPECT_FALSE(pass_trial_done(trial));
+    const TracePass pass = next_trace_pass(trial);
+    EXPECT_EQ(pass, trial.ms[0].size() <= trial.ms[1].size() ? TracePass::kCompute
+                                                             : TracePass::kFragment);
+    record_trace_pass(trial, pass, ms);
+  }
+  ASSERT_TRUE(pass_trial_done(trial));
+  EXPECT_EQ(next_trace_pass(trial), TracePass::kCompute);
+  EXPECT_EQ(describe_pass_trial(trial), "compute (auto: 5.0 ms against fragment 6.5 ms)");
+  record_trace_pass(trial, TracePass::kFragment, 1.0);  // a trial once done takes no more
+  EXPECT_EQ(next_trace_pass(trial), TracePass::kCompute);
+}
+
+TEST(PassTrial, PicksTheFragmentPassWhenItIsFasterAndRestartsForANewKey) {
+  PassTrial trial;
+  restart_pass_trial(trial, "a");
+  for (int k = 0; k < 1 + kPassTrialFrames; ++k) {
+    record_trace_pass(trial, TracePass::kCompute, 10.0);
+    record_trace_pass(trial, TracePass::kFragment, 8.0);
+  }
+  EXPECT_EQ(next_trace_pass(trial), TracePass::kFragment);
+  EXPECT_EQ(describe_pass_trial(trial), "fragment (auto: 8.0 ms against compute 10.0 ms)");
+  restart_pass_trial(trial, "a");
+  EXPECT_TRUE(pass_trial_done(trial));
+  restart_pass_trial(trial, "b");
+  EXPECT_FALSE(pass_trial_done(trial));
+  EXPECT_EQ(describe_pass_trial(trial), "compute (auto: measuring)");
+}
+
+class TracePassTest : public test::GlSuite {};
+
+struct PassFrame {
+  Image image;
+  FrameStats stats;
+};
+
+PassFrame render_in(GeometryFieldMethod& method, const Scene& scene, TracePass pass, int size) {
+  method.settings().pass = pass;
+  PassFrame frame;
+  frame.image = render_image(method, scene.camera, size, size, 1, &frame.stats);
+  return frame;
+}
+
+TEST_F(TracePassTest, ComputeAndFragmentPassesDrawTheSamePictureWithTheSameWork) {
+  fs::create_directories(kDir);
+  // Odd sizes leave part-filled work groups at the frame's edges.
+  constexpr int kSize = 83;
+  for (const char* name :
+       {"mirror-torus-instances", "textured-mirror", "davis-wyman-color-chart"}) {
+    SCOPED_TRACE(name);
+    const fs::path file = kDir / (std::string(name) + ".json");
+    std::ofstream(file) << test::example_scene(name, kDir / "examples");
+    Scene scene;
+    std::string error;
+    std::vector<std::string> warnings;
+    GpuScene gpu;
+    GeometryFieldMethod method;
+    ASSERT_TRUE(load_scene_file(file.string(), scene, warnings, error, OutsidePaths::kAllowed) &&
+                gpu.load(scene, error) && method.load(gpu, default_shader_dir(), error))
+        << error;
+    method.settings().max_depth = 4;
+    method.settings().count_work = true;
+    for (MeshIntersection intersect : {MeshIntersection::kField, MeshIntersection::kBvh}) {
+      method.settings().intersect = intersect;
+      const PassFrame compute = render_in(method, scene, TracePass::kCompute, kSize);
+      const PassFrame fragment = render_in(method, scene, TracePass::kFragment, kSize);
+      ASSERT_EQ(compute.image.pixels.size(), size_t(kSize * kSize));
+      ASSERT_EQ(fragment.image.pixels.size(), compute.image.pixels.size());
+      size_t differing = 0;
+      for (size_t i = 0; i < compute.image.pixels.size(); ++i)
+        differing += compute.image.pixels[i] != fragment.image.pixels[i] ? 1 : 0;
+      EXPECT_EQ(differing, 0u) << "of " << compute.image.pixels.size() << " pixels";
+      double lit = 0.0;
+      for (const glm::vec3& p : compute.image.pixels)
+        lit += p.r + p.g + p.b > 0.0f ? 1.0 : 0.0;
+      EXPECT_GT(lit, 0.9 * kSize * kSize) << "the compute pass drew the frame";
+      EXPECT_GT(compute.stats.count("secondary rays"), 0.0);
+      for (const auto& [count, value] : fragment.stats.counts)
+        EXPECT_EQ(compute.stats.count(count), value) << count;
+      const char* work = intersect == MeshIntersection::kField ? "field lookups" : "BVH traversals";
+      EXPECT_GT(compute.stats.count(work), 0.0) << work;
+    }
+  }
+}
+
+TEST_F(TracePassTest, AutoTimesBothPassesOnItsFirstFramesAndSaysWhichItKept) {
+  fs::create_directories(kDir);
+  const fs::path file = kDir / "auto.json";
+  std::ofstream(file) << test::example_scene("mirror-torus-instances", kDir / "examples");
+  Scene scene;
+  std::string error;
+  std::vector<std::string> warnings;
+  GpuScene gpu;
+  GeometryFieldMethod method;
+  ASSERT_TRUE(load_scene_file(file.string(), scene, warnings, error, OutsidePaths::kAllowed) &&
+              gpu.load(scene, error) && method.load(gpu, default_shader_dir(), error))
+      << error;
+  ASSERT_EQ(method.settings().pass, TracePass::kAuto);
+  EXPECT_NE(method.status().find("tracing pass: compute (auto: measuring)"), std::string::npos)
+      << method.status();
+  for (int k = 0; k < 2 * (1 + kPassTrialFrames); ++k)
+    render_image(method, scene.camera, 32, 32, 1);
+  const std::string status = method.status();
+  EXPECT_NE(status.find(" ms against "), std::string::npos) << status;
+  // A new frame size is another trial.
+  render_image(method, scene.camera, 40, 40, 1);
+  EXPECT_NE(method.status().find("(auto: measuring)"), std::string::npos) << method.status();
+}
+
+}  // namespace
+}  // namespace gfield
