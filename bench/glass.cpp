@@ -4,10 +4,13 @@
 // mean over camera positions), and against the resolution (640x480-1600x1200, 100K vertices,
 // Table 3); beside the reference tracer (`gfield render`, 1 sample per pixel) on the same frames.
 //
+// Frame times: wall and GPU, median and range of the timed frames after warm-up frames until two
+// agree (runtime/frame_timing.hpp).
+//
 //   bench_glass [--quick] [--vertices N,N,...] [--frames F] [--azimuths A]
-//   (default: 100K-800K in steps of 100K, 3 timed frames after a warm-up, 4 azimuths, four
-//   resolutions; --quick: 100K-400K, 1 frame, 2 azimuths, two resolutions; an option given
-//   keeps its value)
+//   (default: 100K-800K in steps of 100K, 10 timed frames, 4 azimuths, four resolutions;
+//   --quick: 100K-400K, 2 timed frames, 2 azimuths, two resolutions; an option given keeps its
+//   value)
 
 #include <algorithm>
 #include <chrono>
@@ -23,9 +26,11 @@
 
 #include "gfield/scene.hpp"
 #include "preprocess/reference_tracer.hpp"
+#include "runtime/frame_timing.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/methods/glass.hpp"
 #include "runtime/shader_program.hpp"
+#include "time_text.hpp"
 
 namespace {
 
@@ -77,13 +82,13 @@ std::string scene_text(bool cylinder, const fs::path& mesh) {
 }
 
 struct Timing {
-  double glass_ms = 0.0;      ///< mean frame of the glass method
+  TimeSummary wall, gpu;      ///< the glass method's timed frames, ms
   double reference_ms = 0.0;  ///< one reference-tracer frame (1 spp, full Fresnel)
   int class_images = 0;
   long long vertices = 0;
 };
 
-Timing time_frames(const Scene& scene, int width, int height, int frames) {
+Timing time_glass(const Scene& scene, int width, int height, int frames) {
   Timing t;
   std::string error;
   GpuScene gpu;
@@ -92,13 +97,13 @@ Timing time_frames(const Scene& scene, int width, int height, int frames) {
     std::fprintf(stderr, "bench_glass: %s\n", error.c_str());
     std::exit(2);
   }
-  render_image(glass, scene.camera, width, height, 1);  // warm-up (shader compilation)
-  FrameStats stats;
-  for (int f = 0; f < frames; ++f)
-    render_image(glass, scene.camera, width, height, 1, &stats);
-  t.glass_ms = stats.milliseconds / frames;
-  t.class_images = int(stats.count("class images")) / frames;
-  t.vertices = (long long)(stats.count("opaque vertices")) / frames;
+  const FrameTimes times = time_frames(
+      [&](FrameStats* stats) { render_image(glass, scene.camera, width, height, 1, stats); },
+      frames);
+  t.wall = summarize(times.wall_ms);
+  t.gpu = summarize(times.gpu_ms);
+  t.class_images = int(times.stats.count("class images")) / frames;
+  t.vertices = (long long)(times.stats.count("opaque vertices")) / frames;
   ReferenceTracer tracer;
   if (!tracer.build(scene, error)) {
     std::fprintf(stderr, "bench_glass: %s\n", error.c_str());
@@ -134,6 +139,13 @@ double fps(double ms) {
   return 1000.0 / std::max(ms, 1e-9);
 }
 
+/// A row of Tables 1 and 3: `what`, then the glass method's times against the reference's.
+void print_row(const std::string& what, const Timing& t) {
+  std::printf("| %s | %s | %s | %.2f | %.1f | %.2f | %.2fx |\n", what.c_str(),
+              range_text(t.wall).c_str(), range_text(t.gpu).c_str(), fps(t.wall.median),
+              t.reference_ms, fps(t.reference_ms), t.reference_ms / t.wall.median);
+}
+
 }  // namespace
 
 /// Comma-separated positive integers, e.g. "100000,200000"; empty on a malformed list.
@@ -154,7 +166,7 @@ std::vector<int> parse_counts(const char* text) {
 int main(int argc, char** argv) {
   bool quick = false;
   std::vector<int> counts = {100000, 200000, 300000, 400000, 500000, 600000, 700000, 800000};
-  int frames = 3, azimuths = 4;
+  int frames = 10, azimuths = 4;
   bool set_vertices = false, set_frames = false, set_azimuths = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -189,7 +201,7 @@ int main(int argc, char** argv) {
   }
   if (quick) {
     counts = set_vertices ? counts : std::vector<int>{100000, 200000, 400000};
-    frames = set_frames ? frames : 1;
+    frames = set_frames ? frames : 2;
     azimuths = set_azimuths ? azimuths : 2;
   }
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they are measured
@@ -203,51 +215,57 @@ int main(int argc, char** argv) {
   fs::create_directories(dir);
   std::printf("renderer: %s (%s, %s); reference tracer: Embree on the CPU, 1 spp\n",
               context->renderer().c_str(), context->version().c_str(), context->platform().c_str());
-  std::printf("%d timed frame(s) after a warm-up frame per row\n", frames);
+  std::printf("%d timed frame(s) per row; %s\n", frames, kFrameTimeNote);
 
-  std::printf("\nTable 1: parallel plate (30 deg, W = 1.0), 640x480\n");
-  std::printf("%9s %10s %8s %12s %10s %9s\n", "vertices", "glass ms", "FPS", "reference ms",
-              "ref FPS", "speed-up");
+  std::printf("\nTable 1: parallel plate (30 deg, W = 1.0), 640x480\n\n");
+  std::printf(
+      "| vertices | glass ms (min-max) | GPU ms (min-max) | FPS | reference ms | ref FPS | "
+      "speed-up |\n|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const int n : counts) {
-    const Timing t = time_frames(make_scene(false, dir, n), 640, 480, frames);
-    std::printf("%9lld %10.1f %8.2f %12.1f %10.2f %8.2fx\n", t.vertices, t.glass_ms,
-                fps(t.glass_ms), t.reference_ms, fps(t.reference_ms), t.reference_ms / t.glass_ms);
+    const Timing t = time_glass(make_scene(false, dir, n), 640, 480, frames);
+    print_row(std::to_string(t.vertices), t);
   }
 
-  std::printf("\nTable 2: hollow cylinder, 640x480, FPS over %d camera azimuths\n", azimuths);
-  std::printf("%9s %8s %8s %8s %8s %12s %9s\n", "vertices", "worst", "best", "mean", "images",
-              "ref FPS", "speed-up");
+  std::printf(
+      "\nTable 2: hollow cylinder, 640x480, FPS (of the median frame) over %d camera "
+      "azimuths\n\n",
+      azimuths);
+  std::printf(
+      "| vertices | worst | best | mean | images | ref FPS | speed-up | widest range |\n"
+      "|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const int n : counts) {
     Scene scene = make_scene(true, dir, n);
-    double worst = 1e30, best = 0.0, sum = 0.0, ref_sum = 0.0;
+    double worst = 1e30, best = 0.0, sum = 0.0, ref_sum = 0.0, spread = 0.0;
     int images = 0;
     long long vertices = 0;
     for (int k = 0; k < azimuths; ++k) {
       const double a = 0.35 * k;
       scene.camera.position = glm::vec3(8.0f * std::sin(a), 1.6f, 8.0f * std::cos(a));
-      const Timing t = time_frames(scene, 640, 480, frames);
-      worst = std::min(worst, fps(t.glass_ms));
-      best = std::max(best, fps(t.glass_ms));
-      sum += t.glass_ms;
+      const Timing t = time_glass(scene, 640, 480, frames);
+      worst = std::min(worst, fps(t.wall.median));
+      best = std::max(best, fps(t.wall.median));
+      sum += t.wall.median;
+      spread = std::max(spread, t.wall.spread());
       ref_sum += t.reference_ms;
       images = std::max(images, t.class_images);
       vertices = t.vertices;
     }
-    std::printf("%9lld %8.2f %8.2f %8.2f %8d %12.2f %8.2fx\n", vertices, worst, best,
-                fps(sum / azimuths), images, fps(ref_sum / azimuths), ref_sum / sum);
+    std::printf("| %lld | %.2f | %.2f | %.2f | %d | %.2f | %.2fx | %.0f%%%s |\n", vertices, worst,
+                best, fps(sum / azimuths), images, fps(ref_sum / azimuths), ref_sum / sum,
+                spread * 100.0, spread > kMaxSpread ? "*" : "");
   }
 
-  std::printf("\nTable 3: hollow cylinder, 100K vertices, against the resolution\n");
-  std::printf("%11s %10s %8s %12s %10s %9s\n", "resolution", "glass ms", "FPS", "reference ms",
-              "ref FPS", "speed-up");
+  std::printf("\nTable 3: hollow cylinder, 100K vertices, against the resolution\n\n");
+  std::printf(
+      "| resolution | glass ms (min-max) | GPU ms (min-max) | FPS | reference ms | ref FPS "
+      "| speed-up |\n|---:|---:|---:|---:|---:|---:|---:|\n");
   const std::vector<glm::ivec2> sizes =
       quick ? std::vector<glm::ivec2>{{640, 480}, {1600, 1200}}
             : std::vector<glm::ivec2>{{640, 480}, {800, 600}, {1024, 768}, {1600, 1200}};
   const Scene scene = make_scene(true, dir, 100000);
   for (const glm::ivec2 s : sizes) {
-    const Timing t = time_frames(scene, s.x, s.y, frames);
-    std::printf("%5dx%-5d %10.1f %8.2f %12.1f %10.2f %8.2fx\n", s.x, s.y, t.glass_ms,
-                fps(t.glass_ms), t.reference_ms, fps(t.reference_ms), t.reference_ms / t.glass_ms);
+    const Timing t = time_glass(scene, s.x, s.y, frames);
+    print_row(std::to_string(s.x) + "x" + std::to_string(s.y), t);
   }
   return 0;
 }

@@ -9,8 +9,9 @@
 // A second table: `envmap` (the classic environment-mapped reflection) against the geometry field
 // on the mirror scenes at 256^2, against `gfield render --spp 1`.
 // Mesh assets are built with `gfield build` (its defaults, as scripts/demo.sh) and `gfield
-// thickness` into a temporary folder. Frame times: the mean of F frames (default 3 up to 512^2,
-// 2 above) after a warm-up frame, each ended by glFinish.
+// thickness` into a temporary folder. Frame times: wall and GPU, median and range of F frames
+// (default 10 up to 512^2, 3 above) after warm-up frames until two agree
+// (runtime/frame_timing.hpp).
 //
 // Usage: bench_image_space_refraction [--frames F] [SIZE...]   (default 512 1024)
 
@@ -25,11 +26,14 @@
 #include "gfield/image_metrics.hpp"
 #include "gl_bench_setup.hpp"
 #include "preprocess/reference_tracer.hpp"
+#include "runtime/frame_timing.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/methods/cube_map.hpp"
 #include "runtime/methods/geometry_field.hpp"
 #include "runtime/methods/image_space_refraction.hpp"
 #include "runtime/shader_program.hpp"
+#include "runtime_runs.hpp"
+#include "time_text.hpp"
 
 namespace fs = std::filesystem;
 using namespace gfield;
@@ -52,38 +56,33 @@ Image reference_image(const ReferenceTracer& tracer, int size, DielectricMode mo
   return image;
 }
 
-/// A frame of a GL method drawn by frame(ms): the picture; its milliseconds added to *ms when
-/// ms is not null.
-using FrameFunction = std::function<Image(double* ms)>;
+/// A frame of a GL method: its picture, its parts and counts added to the stats given (if any).
+using FrameFunction = std::function<Image(FrameStats* stats)>;
 
 /// A frame of `method` at size^2, 1 sample per pixel, `configure` applied first.
 FrameFunction method_frame(Method& method, const Camera& camera, int size,
                            std::function<void()> configure = {}) {
-  return [&method, &camera, size, configure](double* ms) {
+  return [&method, &camera, size, configure](FrameStats* stats) {
     if (configure)
       configure();
-    FrameStats stats;
-    Image image = render_image(method, camera, size, size, 1, &stats);
-    if (ms != nullptr)
-      *ms += stats.milliseconds;
-    return image;
+    return render_image(method, camera, size, size, 1, stats);
   };
 }
 
 struct Row {
   std::string method;
-  double ms = 0.0;  ///< mean per frame
-  Image image;      ///< the last frame, clamped
+  TimeSummary wall, gpu;  ///< per timed frame, ms
+  Image image;            ///< the last frame, clamped
 };
 
-/// A warm-up frame (shader compilation, buffer allocation), then the mean of `frames`.
+/// Warm-up frames until two agree (shader compilation, buffer allocation), then `frames` timed.
 Row timed_row(const std::string& method, int frames, const FrameFunction& frame) {
   Row row;
   row.method = method;
-  frame(nullptr);
-  for (int f = 0; f < frames; ++f)
-    row.image = frame(&row.ms);
-  row.ms /= frames;
+  const FrameTimes times =
+      time_frames([&](FrameStats* stats) { row.image = frame(stats); }, frames);
+  row.wall = summarize(times.wall_ms);
+  row.gpu = summarize(times.gpu_ms);
   row.image = clamped_to_display(std::move(row.image));
   return row;
 }
@@ -125,7 +124,7 @@ void refraction_table(const fs::path& dir, const std::vector<int>& sizes, int fr
   ImageSpaceRefractionSettings& dw = davis_wyman.settings();
   const Camera& camera = scene.camera;
   for (int size : sizes) {
-    const int frames = frames_per_row > 0 ? frames_per_row : size <= 512 ? 3 : 2;
+    const int frames = frames_per_row > 0 ? frames_per_row : size <= 512 ? 10 : 3;
     double tir_ms = 0.0, full_ms = 0.0;
     const Image tir_only = reference_image(tracer, size, DielectricMode::kTirOnly, tir_ms);
     const Image full = reference_image(tracer, size, DielectricMode::kFull, full_ms);
@@ -146,21 +145,25 @@ void refraction_table(const fs::path& dir, const std::vector<int>& sizes, int fr
     rows.push_back(timed_row("wyman2005", frames, method_frame(wyman2005, camera, size)));
     rows.push_back(timed_row("cubemap (per fragment, 256^2 faces)", frames,
                              method_frame(cubemap, camera, size)));
-    rows.push_back(
-        timed_row("geometry field (refined, depth 10)", frames, method_frame(field, camera, size)));
+    settle_pass_trial(field, camera, size);
+    rows.push_back(timed_row("geometry field (refined, depth 10), " + field.pass_status(), frames,
+                             method_frame(field, camera, size)));
 
-    std::printf("\ndavis-wyman-color-chart %dx%d, %d frames after a warm-up:\n\n", size, size,
-                frames);
-    std::printf("| method | ms/frame | / reference | PSNR vs tir-only | PSNR vs full |\n");
-    std::printf("|---|---:|---:|---:|---:|\n");
+    std::printf("\ndavis-wyman-color-chart %dx%d, %d timed frames:\n\n", size, size, frames);
+    std::printf(
+        "| method | ms/frame (min-max) | GPU ms (min-max) | / reference | PSNR vs tir-only | PSNR "
+        "vs full |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|\n");
     for (const Row& row : rows)
-      std::printf("| %s | %.1f | %.3f | %.2f dB | %.2f dB |\n", row.method.c_str(), row.ms,
-                  row.ms / tir_ms, compare_images(row.image, tir_only).psnr,
+      std::printf("| %s | %s | %s | %.3f | %.2f dB | %.2f dB |\n", row.method.c_str(),
+                  range_text(row.wall).c_str(), range_text(row.gpu).c_str(),
+                  row.wall.median / tir_ms, compare_images(row.image, tir_only).psnr,
                   compare_images(row.image, full).psnr);
-    std::printf("| reference tracer, tir-only, 1 spp | %.1f | 1 | | %.2f dB |\n", tir_ms,
+    std::printf("| reference tracer, tir-only, 1 spp | %.1f | | 1 | | %.2f dB |\n", tir_ms,
                 compare_images(tir_only, full).psnr);
-    std::printf("| reference tracer, full Fresnel, 1 spp | %.1f | %.3f | %.2f dB | |\n", full_ms,
+    std::printf("| reference tracer, full Fresnel, 1 spp | %.1f | | %.3f | %.2f dB | |\n", full_ms,
                 full_ms / tir_ms, compare_images(full, tir_only).psnr);
+    std::printf("\n%s\n", kFrameTimeNote);
     std::fflush(stdout);
   }
 }
@@ -168,11 +171,10 @@ void refraction_table(const fs::path& dir, const std::vector<int>& sizes, int fr
 /// envmap against the geometry field on the mirror scenes.
 void envmap_table(const fs::path& dir, int size, int frames) {
   std::printf(
-      "\nmirror scenes %dx%d, %d frames after a warm-up, reference `gfield render --spp 1 "
-      "--depth %d`:\n\n",
+      "\nmirror scenes %dx%d, %d timed frames, reference `gfield render --spp 1 --depth %d`:\n\n",
       size, size, frames, kDepth);
-  std::printf("| scene | method | ms/frame | / reference | PSNR |\n");
-  std::printf("|---|---|---:|---:|---:|\n");
+  std::printf("| scene | method | ms/frame (min-max) | GPU ms (min-max) | / reference | PSNR |\n");
+  std::printf("|---|---|---:|---:|---:|---:|\n");
   for (const char* name : {"mirror-torus-instances", "two-mirror-spheres"}) {
     Scene scene;
     ReferenceTracer tracer;
@@ -189,20 +191,25 @@ void envmap_table(const fs::path& dir, int size, int frames) {
     }
     double reference_ms = 0.0;
     const Image reference = reference_image(tracer, size, DielectricMode::kFull, reference_ms);
+    settle_pass_trial(field, scene.camera, size);
     const Row rows[] = {
         timed_row("envmap (256^2 faces)", frames, method_frame(envmap, scene.camera, size)),
-        timed_row("geometry field (refined)", frames, method_frame(field, scene.camera, size))};
+        timed_row("geometry field (refined), " + field.pass_status(), frames,
+                  method_frame(field, scene.camera, size))};
     for (const Row& row : rows)
-      std::printf("| %s | %s | %.1f | %.3f | %.2f dB |\n", name, row.method.c_str(), row.ms,
-                  row.ms / reference_ms, compare_images(row.image, reference).psnr);
-    std::printf("| %s | reference tracer, 1 spp | %.1f | 1 | |\n", name, reference_ms);
+      std::printf("| %s | %s | %s | %s | %.3f | %.2f dB |\n", name, row.method.c_str(),
+                  range_text(row.wall).c_str(), range_text(row.gpu).c_str(),
+                  row.wall.median / reference_ms, compare_images(row.image, reference).psnr);
+    std::printf("| %s | reference tracer, 1 spp | %.1f | | 1 | |\n", name, reference_ms);
     std::fflush(stdout);
   }
+  std::printf("\n%s\n", kFrameTimeNote);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows reach a file as they are measured
   GlBenchArguments arguments;
   if (!parse_gl_bench_arguments(argc, argv, "bench_image_space_refraction", arguments))
     return 2;
@@ -212,6 +219,6 @@ int main(int argc, char** argv) {
   if (!context)
     return kExitNoOpenGL;
   refraction_table(dir, arguments.sizes, arguments.frames);
-  envmap_table(dir, 256, arguments.frames > 0 ? arguments.frames : 3);
+  envmap_table(dir, 256, arguments.frames > 0 ? arguments.frames : 10);
   return 0;
 }

@@ -136,7 +136,8 @@ void bench_scene(const SeriesMesh& m, const std::string& file, const char* kind,
   const Run bvh = run(method, scene, size, frames, reference);
   method.settings().intersect = MeshIntersection::kAuto;
   const Run automatic = run(method, scene, size, frames, reference);
-  const std::string route = method.status();
+  const std::string status = method.status();
+  const std::string route = status.substr(0, status.find('\n'));
   double field_mb = 0.0, bvh_mb = 0.0;
   asset_bytes(gpu, field_mb, bvh_mb);
   std::printf("| %s | %zu | %s | field | %s | %.2f | %.1f | %s |\n", m.name.c_str(), m.faces, kind,

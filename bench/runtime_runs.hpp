@@ -11,32 +11,44 @@
 #include "gfield/stopwatch.hpp"
 #include "runtime/frame_timing.hpp"
 #include "runtime/methods/geometry_field.hpp"
+#include "time_text.hpp"
 
 namespace gfield {
 
 /// One configuration's timed render: ms per frame, PSNR against the reference, and its work.
 struct Run {
-  double ms = 0.0;      ///< the timed frames' median wall time (frame_timing.hpp)
-  double gpu_ms = 0.0;  ///< their median GPU time
-  bool noisy = false;   ///< their wall times' range exceeds kMaxSpread of the median
-  double cpu_ms = 0.0;  ///< CPU time per frame (warm-up frames included), all threads
+  double ms = 0.0;        ///< the timed frames' median wall time (frame_timing.hpp)
+  double gpu_ms = 0.0;    ///< their median GPU time
+  bool noisy = false;     ///< their wall times' range exceeds kMaxSpread of the median
+  TimeSummary wall, gpu;  ///< the timed frames' wall and GPU times
+  double cpu_ms = 0.0;    ///< CPU time per frame (warm-up frames included), all threads
   double psnr = 0.0;
   FrameStats per_sample;  ///< one untimed counting frame
 };
 
+/// With --pass auto: draws frames until its trial has chosen the pass at size^2, so that the
+/// timed frames are all of that pass.
+inline void settle_pass_trial(GeometryFieldMethod& method, const Camera& camera, int size) {
+  render_image(method, camera, size, size, 1);
+  while (!method.pass_settled())
+    render_image(method, camera, size, size, 1);
+}
+
 inline Run run(GeometryFieldMethod& method, const Scene& scene, int size, int frames,
                const Image& reference) {
   Run r;
+  settle_pass_trial(method, scene.camera, size);
   Image image;
   const double cpu_start = process_cpu_ms();
   const FrameTimes times = time_frames(
       [&](FrameStats* stats) { image = render_image(method, scene.camera, size, size, 1, stats); },
       frames);
   r.cpu_ms = (process_cpu_ms() - cpu_start) / double(times.warmup_frames + frames);
-  const TimeSummary wall = summarize(times.wall_ms);
-  r.ms = wall.median;
-  r.noisy = wall.noisy();
-  r.gpu_ms = summarize(times.gpu_ms).median;
+  r.wall = summarize(times.wall_ms);
+  r.gpu = summarize(times.gpu_ms);
+  r.ms = r.wall.median;
+  r.noisy = r.wall.noisy();
+  r.gpu_ms = r.gpu.median;
   r.psnr = compare_images(clamped_to_display(image), reference).psnr;
   method.settings().count_work = true;
   render_image(method, scene.camera, size, size, 1, &r.per_sample);
@@ -50,11 +62,6 @@ inline std::string ms_text(const Run& r) {
   std::snprintf(text, sizeof(text), "%.1f%s", r.ms, r.noisy ? "*" : "");
   return text;
 }
-
-/// The tables' note on their ms columns.
-inline constexpr const char* kFrameTimeNote =
-    "ms: the median wall time of the timed frames, after warm-up frames until two consecutive "
-    "ones agree within 10% (runtime/frame_timing.hpp); *: their range exceeds 10% of the median.";
 
 /// GPU bytes of the meshes' geometry images and fields, and of their BVHs and rasterised meshes.
 inline void asset_bytes(const GpuScene& gpu, double& field_mb, double& bvh_mb) {

@@ -75,8 +75,9 @@ SECTIONS = [
      []),
     ("runtime", "Runtime on this machine's GL: field against BVH",
      "`bench_runtime_field --depths 4 256`: per example scene, ms per frame of the field method "
-     "(refined, nearest, linear) and of exact BVH tracing, each against the reference tracer's "
-     "time for the same picture in the same run, with PSNR, GPU bytes and work per lookup.",
+     "(refined, nearest, linear) and of exact BVH tracing, in the compute and in the fragment "
+     "pass, each against the reference tracer's time for the same picture in the same run, with "
+     "PSNR, GPU bytes and work per lookup.",
      ["build/bench/bench_runtime_field --depths 4 256"], []),
     ("runtime-complexity", "Runtime cost against the mesh's size",
      "`bench_runtime_complexity`: one mesh at 5.9K to 1.1M faces as glass and as a mirror, field "
@@ -88,8 +89,8 @@ SECTIONS = [
      ["build/bench/bench_image_space_refraction"], []),
     ("glass", "Glass by vertex displacement (Mukai et al. 2013, Tables 1-3)",
      "`bench_glass --quick --vertices 100000,200000 --azimuths 1`: frame time against the "
-     "vertices behind the glass and against the resolution, beside the reference tracer (one "
-     "frame a row: about 11 minutes on 2 cores with llvmpipe).",
+     "vertices behind the glass and against the resolution, beside the reference tracer (two "
+     "timed frames a row after the warm-up ones).",
      ["build/bench/bench_glass --quick --vertices 100000,200000 --azimuths 1"], []),
 ]
 
