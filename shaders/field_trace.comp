@@ -19,7 +19,11 @@ void main() {
   uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
   uint tile = bitfieldReverse(group) >> uint(32 - u_tile_bits);
   ivec2 corner = ivec2(int(tile) % u_tile_columns, int(tile) / u_tile_columns);
-  ivec2 pixel = corner * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
+  // Each run of 8 invocations covers a 4x2 block of the 8x8 tile, as a CPU renderer's fragment
+  // shading packs pixels into its SIMD vectors; each run of 32 still covers 8x4 pixels.
+  uint i = gl_LocalInvocationIndex;
+  ivec2 in_tile = ivec2(((i >> 3u) & 1u) * 4u + (i & 3u), (i >> 4u) * 2u + ((i >> 2u) & 1u));
+  ivec2 pixel = corner * ivec2(gl_WorkGroupSize.xy) + in_tile;
   if (any(greaterThanEqual(pixel, imageSize(u_color)))) return;
   vec4 color, hits;
   trace_pixel(pixel, color, hits);
