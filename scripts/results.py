@@ -74,11 +74,11 @@ SECTIONS = [
      ["build/tests/gfield_runtime_tests --gtest_filter=RenderTest.ExampleScenesMatchReferenceTracer"],
      []),
     ("runtime", "Runtime on this machine's GL: field against BVH",
-     "`bench_runtime_field --depths 4 256`: per example scene, ms per frame of the field method "
+     "`bench_runtime_field --frames 5 --depths 4 256`: per example scene, ms per frame of the field method "
      "(refined, nearest, linear) and of exact BVH tracing, in the compute and in the fragment "
      "pass, each against the reference tracer's time for the same picture in the same run, with "
      "PSNR, GPU bytes and work per lookup.",
-     ["build/bench/bench_runtime_field --depths 4 256"], []),
+     ["build/bench/bench_runtime_field --frames 5 --depths 4 256"], []),
     ("runtime-complexity", "Runtime cost against the mesh's size",
      "`bench_runtime_complexity`: one mesh at 5.9K to 1.1M faces as glass and as a mirror, field "
      "against BVH against `--intersect auto`.",
