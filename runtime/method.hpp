@@ -124,6 +124,9 @@ class Method {
   /// What the method does with this scene that the user should know (shown in the panel and by
   /// --bench), a line per fact or "".
   virtual std::string status() const { return ""; }
+  /// True while the method times itself on frames of an unchanged picture (the field method's
+  /// --pass auto trial): a viewer that draws only on change draws it again.
+  virtual bool measuring() const { return false; }
   /// What the method falls back on for this scene, one line each (e.g. a mesh without a geometry
   /// field, traced through its BVH): gfield-view prints them on stderr once it has loaded it.
   virtual std::vector<std::string> notes() const { return {}; }

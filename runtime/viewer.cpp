@@ -138,7 +138,10 @@ bool viewer_frame(ViewerState& s, Window& w) {
   ImGui::NewFrame();
   w.frame.resize(std::max(1, int(float(s.picture_width) * s.scale)), fb_height);
   const std::string key = picture_key(*s.session, s.camera, w.frame.width(), w.frame.height());
-  const bool render = key != w.drawn;
+  bool measuring = false;  // a method timing itself wants the same picture again
+  for (int method : {s.session->current(), s.session->compare()})
+    measuring = measuring || (method >= 0 && s.session->method(method).measuring());
+  const bool render = key != w.drawn || measuring;
   if (render) {
     FrameStats stats;
     s.session->draw(s.camera, w.frame, &stats);

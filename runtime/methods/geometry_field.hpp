@@ -71,6 +71,8 @@ class GeometryFieldMethod : public Method {
   /// field)") and, on a line of its own, in which pass ("tracing pass: compute").
   std::string status() const override;
   std::vector<std::string> notes() const override;
+  /// While --pass auto's trial runs.
+  bool measuring() const override { return !pass_settled(); }
 
   GeometryFieldSettings& settings() { return settings_; }
   /// The tracing pass and why: "compute", or with --pass auto "compute (auto: 41.2 ms against
