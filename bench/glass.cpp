@@ -148,6 +148,66 @@ void print_row(const std::string& what, const Timing& t) {
 
 }  // namespace
 
+/// Table 1: the parallel plate at 640x480 against the vertices behind it.
+void plate_table(const fs::path& dir, const std::vector<int>& counts, int frames) {
+  std::printf("\nTable 1: parallel plate (30 deg, W = 1.0), 640x480\n\n");
+  std::printf(
+      "| vertices | glass ms (min-max) | GPU ms (min-max) | FPS | reference ms | ref FPS | "
+      "speed-up |\n|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const int n : counts) {
+    const Timing t = time_glass(make_scene(false, dir, n), 640, 480, frames);
+    print_row(std::to_string(t.vertices), t);
+  }
+}
+
+/// Table 2: the hollow cylinder at 640x480 against the vertices behind it, over camera azimuths.
+void cylinder_table(const fs::path& dir, const std::vector<int>& counts, int frames, int azimuths) {
+  std::printf(
+      "\nTable 2: hollow cylinder, 640x480, FPS (of the median frame) over %d camera "
+      "azimuths\n\n",
+      azimuths);
+  std::printf(
+      "| vertices | worst | best | mean | images | ref FPS | speed-up | widest range |\n"
+      "|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const int n : counts) {
+    Scene scene = make_scene(true, dir, n);
+    double worst = 1e30, best = 0.0, sum = 0.0, ref_sum = 0.0, spread = 0.0;
+    int images = 0;
+    long long vertices = 0;
+    for (int k = 0; k < azimuths; ++k) {
+      const double a = 0.35 * k;
+      scene.camera.position = glm::vec3(8.0f * std::sin(a), 1.6f, 8.0f * std::cos(a));
+      const Timing t = time_glass(scene, 640, 480, frames);
+      worst = std::min(worst, fps(t.wall.median));
+      best = std::max(best, fps(t.wall.median));
+      sum += t.wall.median;
+      spread = std::max(spread, t.wall.spread());
+      ref_sum += t.reference_ms;
+      images = std::max(images, t.class_images);
+      vertices = t.vertices;
+    }
+    std::printf("| %lld | %.2f | %.2f | %.2f | %d | %.2f | %.2fx | %.0f%%%s |\n", vertices, worst,
+                best, fps(sum / azimuths), images, fps(ref_sum / azimuths), ref_sum / sum,
+                spread * 100.0, spread > kMaxSpread ? "*" : "");
+  }
+}
+
+/// Table 3: the hollow cylinder with 100K vertices behind it against the resolution.
+void resolution_table(const fs::path& dir, bool quick, int frames) {
+  std::printf("\nTable 3: hollow cylinder, 100K vertices, against the resolution\n\n");
+  std::printf(
+      "| resolution | glass ms (min-max) | GPU ms (min-max) | FPS | reference ms | ref FPS "
+      "| speed-up |\n|---:|---:|---:|---:|---:|---:|---:|\n");
+  const std::vector<glm::ivec2> sizes =
+      quick ? std::vector<glm::ivec2>{{640, 480}, {1600, 1200}}
+            : std::vector<glm::ivec2>{{640, 480}, {800, 600}, {1024, 768}, {1600, 1200}};
+  const Scene scene = make_scene(true, dir, 100000);
+  for (const glm::ivec2 s : sizes) {
+    const Timing t = time_glass(scene, s.x, s.y, frames);
+    print_row(std::to_string(s.x) + "x" + std::to_string(s.y), t);
+  }
+}
+
 /// Comma-separated positive integers, e.g. "100000,200000"; empty on a malformed list.
 std::vector<int> parse_counts(const char* text) {
   std::vector<int> counts;
@@ -217,55 +277,8 @@ int main(int argc, char** argv) {
               context->renderer().c_str(), context->version().c_str(), context->platform().c_str());
   std::printf("%d timed frame(s) per row; %s\n", frames, kFrameTimeNote);
 
-  std::printf("\nTable 1: parallel plate (30 deg, W = 1.0), 640x480\n\n");
-  std::printf(
-      "| vertices | glass ms (min-max) | GPU ms (min-max) | FPS | reference ms | ref FPS | "
-      "speed-up |\n|---:|---:|---:|---:|---:|---:|---:|\n");
-  for (const int n : counts) {
-    const Timing t = time_glass(make_scene(false, dir, n), 640, 480, frames);
-    print_row(std::to_string(t.vertices), t);
-  }
-
-  std::printf(
-      "\nTable 2: hollow cylinder, 640x480, FPS (of the median frame) over %d camera "
-      "azimuths\n\n",
-      azimuths);
-  std::printf(
-      "| vertices | worst | best | mean | images | ref FPS | speed-up | widest range |\n"
-      "|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  for (const int n : counts) {
-    Scene scene = make_scene(true, dir, n);
-    double worst = 1e30, best = 0.0, sum = 0.0, ref_sum = 0.0, spread = 0.0;
-    int images = 0;
-    long long vertices = 0;
-    for (int k = 0; k < azimuths; ++k) {
-      const double a = 0.35 * k;
-      scene.camera.position = glm::vec3(8.0f * std::sin(a), 1.6f, 8.0f * std::cos(a));
-      const Timing t = time_glass(scene, 640, 480, frames);
-      worst = std::min(worst, fps(t.wall.median));
-      best = std::max(best, fps(t.wall.median));
-      sum += t.wall.median;
-      spread = std::max(spread, t.wall.spread());
-      ref_sum += t.reference_ms;
-      images = std::max(images, t.class_images);
-      vertices = t.vertices;
-    }
-    std::printf("| %lld | %.2f | %.2f | %.2f | %d | %.2f | %.2fx | %.0f%%%s |\n", vertices, worst,
-                best, fps(sum / azimuths), images, fps(ref_sum / azimuths), ref_sum / sum,
-                spread * 100.0, spread > kMaxSpread ? "*" : "");
-  }
-
-  std::printf("\nTable 3: hollow cylinder, 100K vertices, against the resolution\n\n");
-  std::printf(
-      "| resolution | glass ms (min-max) | GPU ms (min-max) | FPS | reference ms | ref FPS "
-      "| speed-up |\n|---:|---:|---:|---:|---:|---:|---:|\n");
-  const std::vector<glm::ivec2> sizes =
-      quick ? std::vector<glm::ivec2>{{640, 480}, {1600, 1200}}
-            : std::vector<glm::ivec2>{{640, 480}, {800, 600}, {1024, 768}, {1600, 1200}};
-  const Scene scene = make_scene(true, dir, 100000);
-  for (const glm::ivec2 s : sizes) {
-    const Timing t = time_glass(scene, s.x, s.y, frames);
-    print_row(std::to_string(s.x) + "x" + std::to_string(s.y), t);
-  }
+  plate_table(dir, counts, frames);
+  cylinder_table(dir, counts, frames, azimuths);
+  resolution_table(dir, quick, frames);
   return 0;
 }

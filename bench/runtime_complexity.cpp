@@ -141,9 +141,10 @@ void bench_scene(const SeriesMesh& m, const std::string& file, const char* kind,
   double field_mb = 0.0, bvh_mb = 0.0;
   asset_bytes(gpu, field_mb, bvh_mb);
   std::printf("| %s | %zu | %s | field | %s | %.2f | %.1f | %s |\n", m.name.c_str(), m.faces, kind,
-              ms_text(field).c_str(), field.psnr, field_mb, work_line(field.per_sample).c_str());
-  std::printf("| | | | BVH | %s | %.2f | %.1f | %s |\n", ms_text(bvh).c_str(), bvh.psnr, bvh_mb,
-              work_line(bvh.per_sample).c_str());
+              range_text(field.wall).c_str(), field.psnr, field_mb,
+              work_line(field.per_sample).c_str());
+  std::printf("| | | | BVH | %s | %.2f | %.1f | %s |\n", range_text(bvh.wall).c_str(), bvh.psnr,
+              bvh_mb, work_line(bvh.per_sample).c_str());
   std::printf("| | | | field / BVH | %.2f | %+.2f | | |\n", field.ms / bvh.ms,
               field.psnr - bvh.psnr);
   std::printf("| | | | auto / the faster | %.2f | %.2f | | %s |\n",
@@ -175,7 +176,7 @@ int main(int argc, char** argv) {
     return kExitNoOpenGL;
   std::printf("\n%dx%d, depth %d, %d timed frames; PSNR against the reference tracer (1 spp)\n\n",
               size, size, depth, frames);
-  std::printf("| mesh | faces | scene | route | ms/frame | PSNR dB | GPU MB | work |\n");
+  std::printf("| mesh | faces | scene | route | ms/frame (min-max) | PSNR dB | GPU MB | work |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   for (const SeriesMesh& m : series)
     for (const bool mirror : {false, true})

@@ -19,7 +19,6 @@ namespace gfield {
 struct Run {
   double ms = 0.0;        ///< the timed frames' median wall time (frame_timing.hpp)
   double gpu_ms = 0.0;    ///< their median GPU time
-  bool noisy = false;     ///< their wall times' range exceeds kMaxSpread of the median
   TimeSummary wall, gpu;  ///< the timed frames' wall and GPU times
   double cpu_ms = 0.0;    ///< CPU time per frame (warm-up frames included), all threads
   double psnr = 0.0;
@@ -47,20 +46,12 @@ inline Run run(GeometryFieldMethod& method, const Scene& scene, int size, int fr
   r.wall = summarize(times.wall_ms);
   r.gpu = summarize(times.gpu_ms);
   r.ms = r.wall.median;
-  r.noisy = r.wall.noisy();
   r.gpu_ms = r.gpu.median;
   r.psnr = compare_images(clamped_to_display(image), reference).psnr;
   method.settings().count_work = true;
   render_image(method, scene.camera, size, size, 1, &r.per_sample);
   method.settings().count_work = false;
   return r;
-}
-
-/// A run's ms per frame for a table: "12.3", or "12.3*" when its frames' range is noisy.
-inline std::string ms_text(const Run& r) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.1f%s", r.ms, r.noisy ? "*" : "");
-  return text;
 }
 
 /// GPU bytes of the meshes' geometry images and fields, and of their BVHs and rasterised meshes.

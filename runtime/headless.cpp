@@ -36,8 +36,10 @@ bool select_method(ViewSession& session, const std::string& name, std::string& e
   return session.select(index, error);
 }
 
-/// Renders the selected method's picture; with o.frames > 1, warm-up frames (frame_timing.hpp)
-/// and o.frames - 1 timed frames after the first.
+/// Renders the selected method's picture; with o.frames > 1, the frames a method that times
+/// itself asks for (Method::measuring: the field method's --pass auto trial, at most
+/// kMaxWarmupFrames), warm-up frames (frame_timing.hpp) and o.frames - 1 timed frames after the
+/// first.
 MethodRun render_frames(ViewSession& session, const HeadlessOptions& o) {
   Method& method = session.method(session.current());
   const Camera& camera = session.scene().scene().camera;
@@ -46,11 +48,15 @@ MethodRun render_frames(ViewSession& session, const HeadlessOptions& o) {
   if (o.frames == 1)
     return run;
   const double cpu_start = process_cpu_ms();
+  int measuring = 0;
+  for (; measuring < kMaxWarmupFrames && method.measuring(); ++measuring)
+    render_image(method, camera, o.width, o.height, o.samples_per_pixel);
   run.rest = time_frames(
       [&](FrameStats* stats) {
         run.image = render_image(method, camera, o.width, o.height, o.samples_per_pixel, stats);
       },
       o.frames - 1);
+  run.rest.warmup_frames += measuring;
   run.rest_cpu_ms = (process_cpu_ms() - cpu_start) / double(run.rest.warmup_frames + o.frames - 1);
   return run;
 }

@@ -3,8 +3,9 @@
 # builds what is missing (scripts/build.sh: Release, into build/), then writes into one markdown
 # file (default out/gpu-bench.md) the device, the commit and
 #   - bench_runtime_field: Li et al.'s scenes (every mesh example scene and two-mirror-spheres)
-#     at SIZE^2 (default 1024), depths 1-4: the geometry field (nearest / linear / refined at
-#     depth 4) against exact BVH tracing of the meshes, in the compute and in the fragment pass;
+#     at SIZE^2 (default 1024), depths 1-4: the geometry field (refined) against exact BVH
+#     tracing of the meshes, in the compute and in the fragment pass (at depth 4 also the
+#     nearest and linear lookups, in the compute pass);
 #     wall and GPU ms (median and range), x the Embree reference tracer in the same run, PSNR
 #     against it, GPU memory and the work counters;
 #   - bench_image_space_refraction: the Davis-Wyman paper's Table 1 (image-space refraction with
@@ -12,7 +13,7 @@
 #   - bench_glass --quick: the Mukai paper's Tables 1-3 (vertex-displacement refraction).
 # Every row times FRAMES frames (default 10) after warm-up frames until two agree
 # (runtime/frame_timing.hpp) and flags a range over 10% of its median. The parts share one time
-# budget (GPU_BENCH_SECONDS, default 480: the 8 minutes a lent GPU machine gives a run): a part
+# budget (GPU_BENCH_SECONDS, default 480): a part
 # still running when it is spent is stopped, and the rows it printed are kept. Each part's rows
 # are in OUT.md.partial as they are measured; the whole run renames it to OUT.md. On a GPU
 # machine run it as

@@ -8,6 +8,7 @@
 #define GF_COMPUTE 1
 #include "lib/field_trace.glsl"
 
+// 8x8: the order of pixels within a tile below is written for this size.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(rgba32f, binding = IMAGE_TRACE_COLOR) uniform writeonly image2D u_color;  // as o_color

@@ -90,7 +90,8 @@ class GeometryFieldMethod : public Method {
   /// loads the BVHs they need.
   bool route_meshes(std::string& error);
   void render_gbuffer(const Camera& camera, int width, int height, glm::vec2 jitter);
-  void render_tracing(const Camera& camera, Framebuffer& target, glm::vec2 jitter, TracePass pass);
+  /// False when the pass's program does not build (the message on stderr).
+  bool render_tracing(const Camera& camera, Framebuffer& target, glm::vec2 jitter, TracePass pass);
   /// The pass this frame traces in: the setting's, or --pass auto's (restarting its trial for a
   /// new program or frame size).
   TracePass frame_pass(int width, int height);

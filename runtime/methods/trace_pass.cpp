@@ -1,6 +1,7 @@
 #include "runtime/methods/trace_pass.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "gfield/check.hpp"
@@ -63,9 +64,13 @@ std::string describe_pass_trial(const PassTrial& trial) {
     return std::string(trace_pass_name(pass)) + " (auto: measuring)";
   const TracePass other = pass == TracePass::kCompute ? TracePass::kFragment : TracePass::kCompute;
   char text[160];
-  std::snprintf(text, sizeof(text), "%s (auto: %.1f ms against %s %.1f ms)", trace_pass_name(pass),
-                fastest(trial.ms[slot(pass)]), trace_pass_name(other),
-                fastest(trial.ms[slot(other)]));
+  if (std::isinf(fastest(trial.ms[slot(other)])))
+    std::snprintf(text, sizeof(text), "%s (auto: %s did not build)", trace_pass_name(pass),
+                  trace_pass_name(other));
+  else
+    std::snprintf(text, sizeof(text), "%s (auto: %.1f ms against %s %.1f ms)",
+                  trace_pass_name(pass), fastest(trial.ms[slot(pass)]), trace_pass_name(other),
+                  fastest(trial.ms[slot(other)]));
   return text;
 }
 

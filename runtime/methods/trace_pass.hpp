@@ -35,10 +35,11 @@ bool pass_trial_done(const PassTrial& trial);
 /// The pass the next frame traces in: while the trial runs, the one with fewer frames (compute
 /// first); then the one whose fastest timed frame is the faster.
 TracePass next_trace_pass(const PassTrial& trial);
-/// Adds a frame's tracing GPU ms in `pass` (kCompute or kFragment) to the trial.
+/// Adds a frame's tracing GPU ms in `pass` (kCompute or kFragment) to the trial: infinity for a
+/// pass whose program does not build.
 void record_trace_pass(PassTrial& trial, TracePass pass, double gpu_ms);
-/// For the panel and --bench: "compute (auto: 41.2 ms against fragment 55.0 ms)", or "compute
-/// (auto: measuring)" while the trial runs.
+/// For the panel and --bench: "compute (auto: 41.2 ms against fragment 55.0 ms)", "compute
+/// (auto: fragment did not build)", or "compute (auto: measuring)" while the trial runs.
 std::string describe_pass_trial(const PassTrial& trial);
 
 }  // namespace gfield

@@ -24,8 +24,9 @@ uniform float u_min_weight;   // branches below this path weight are not traced
 uniform int u_max_rays;       // secondary rays per pixel at most
 
 // Rays waiting to be traced, last in first out: path rays (reflections, refractions) and the
-// shadow rays of diffuse hits. Every ray is traced by the one call of trace_scene in main(), and
-// every hit shaded by the one call of shade_hit: each is inlined once (see gf_trace_from).
+// shadow rays of diffuse hits. Every ray is traced by the one call of trace_scene in
+// trace_pixel(), and every hit shaded by the one call of shade_hit: each is inlined once (see
+// gf_trace_from).
 #define STACK_SIZE 16
 
 struct PathRay {
