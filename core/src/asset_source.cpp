@@ -8,6 +8,7 @@
 
 #include "gfield/content_hash.hpp"
 #include "gfield/file_read.hpp"
+#include "gfield/published_build.hpp"
 
 namespace gfield {
 namespace {
@@ -121,15 +122,26 @@ bool check_asset_source(const std::string& report_file, const std::string& mesh_
   return false;
 }
 
+bool check_asset_source_of(const std::string& name, const std::string& mesh_file, bool& checked,
+                           std::string& error) {
+  for (int attempt = 0;; ++attempt) {
+    const std::string build = published_build(name);
+    if (check_asset_source(name + std::string(kReportSuffix), mesh_file, checked, error))
+      return true;
+    if (checked || attempt == 2 || build.empty() || published_build(name) == build)
+      return false;
+  }
+}
+
 bool check_scene_assets(const Scene& scene, int& stale, std::string& error) {
   stale = -1;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const MeshAsset& mesh = scene.meshes[m];
     if (!mesh.part.empty() || mesh.geometry_image.empty())
       continue;
-    const std::string report = asset_report_path(mesh.geometry_image);
+    const std::string name = asset_name_of(mesh.geometry_image);
     bool checked = false;
-    if (report.empty() || check_asset_source(report, mesh.file, checked, error))
+    if (name.empty() || check_asset_source_of(name, mesh.file, checked, error))
       continue;
     if (checked)
       stale = int(m);

@@ -93,8 +93,7 @@ void check_built_from(const std::string& field_file, const py::object& mesh) {
   }
   std::string error;
   bool checked = false;
-  if (!check_asset_source(name + ".report.json", path_text(mesh.cast<std::filesystem::path>()),
-                          checked, error)) {
+  if (!check_asset_source_of(name, path_text(mesh.cast<std::filesystem::path>()), checked, error)) {
     throw Error(error);
   }
 }

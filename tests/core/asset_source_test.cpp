@@ -116,6 +116,18 @@ TEST_F(AssetSource, AReportThatIsNotAFileOrHoldsNoMeshIsRefused) {
   EXPECT_NE(error.find("no record of the mesh it was built from"), std::string::npos) << error;
 }
 
+TEST_F(AssetSource, AnAssetIsCheckedByItsNameThroughItsReport) {
+  // Plain files, no published builds: one read (a republish while reading is read again:
+  // SceneAssets.AViewWhileTheAssetIsRepublishedReadsOneBuild).
+  bool checked = false;
+  std::string error;
+  EXPECT_TRUE(check_asset_source_of((kDir / "tri").string(), mesh_, checked, error)) << error;
+  EXPECT_TRUE(checked);
+  write(report_, "{");
+  EXPECT_FALSE(check_asset_source_of((kDir / "tri").string(), mesh_, checked, error));
+  EXPECT_EQ(error, report_ + ": not a JSON object");
+}
+
 TEST_F(AssetSource, SceneMeshesAreCheckedThroughTheirGeometryImagesReport) {
   Scene scene;
   MeshAsset mesh;

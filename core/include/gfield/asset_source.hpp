@@ -48,7 +48,13 @@ std::string asset_report_path(const std::string& geometry_image);
 bool check_asset_source(const std::string& report_file, const std::string& mesh_file, bool& checked,
                         std::string& error);
 
-/// check_asset_source for every mesh of `scene` with a geometry image (glTF meshes excepted:
+/// check_asset_source for the asset DIR/NAME (`name`, its report NAME.report.json), the report
+/// read again (up to 3 tries) when the asset was republished while it was read
+/// (published_build.hpp).
+bool check_asset_source_of(const std::string& name, const std::string& mesh_file, bool& checked,
+                           std::string& error);
+
+/// check_asset_source_of for every mesh of `scene` with a geometry image (glTF meshes excepted:
 /// `gfield assets` keeps theirs in step). `stale`: the index of the
 /// first mesh whose asset was built from another mesh, -1 when none (then `error` says which).
 bool check_scene_assets(const Scene& scene, int& stale, std::string& error);
