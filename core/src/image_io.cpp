@@ -25,9 +25,16 @@
 #include "gfield/file_read.hpp"
 #include "gfield/image.hpp"
 #include "gfield/limits.hpp"
+#include "gfield/printable.hpp"
 
 namespace gfield {
 namespace {
+
+/// stb_image's reason for its last failure, printable on one line: for an unknown PNG chunk it
+/// holds the chunk's four bytes, whatever they are.
+std::string stb_failure() {
+  return printable(stbi_failure_reason());
+}
 
 /// Pictures of at most kMaxPictureSide per side and kMaxPicturePixels in all.
 bool check_pixel_count(const std::string& filename, int width, int height, std::string& error) {
@@ -160,7 +167,7 @@ bool check_stb_header(const std::string& name, const stbi_uc* bytes, int size, i
   int components = 0;
   if (!png_or_jpeg_size(bytes, size, width, height) &&
       !stbi_info_from_memory(bytes, size, &width, &height, &components)) {
-    error = name + ": cannot read image: " + stbi_failure_reason();
+    error = name + ": cannot read image: " + stb_failure();
     return false;
   }
   if (!check_pixel_count(name, width, height, error)) {
@@ -187,7 +194,7 @@ bool decode_stb(const std::string& name, const stbi_uc* bytes, int size, Image& 
     std::unique_ptr<float, void (*)(void*)> data(
         stbi_loadf_from_memory(bytes, size, &width, &height, &components, 3), stbi_image_free);
     if (!data) {
-      error = name + ": cannot read image: " + stbi_failure_reason();
+      error = name + ": cannot read image: " + stb_failure();
       return false;
     }
     Image result(width, height);
@@ -201,7 +208,7 @@ bool decode_stb(const std::string& name, const stbi_uc* bytes, int size, Image& 
     std::unique_ptr<stbi_us, void (*)(void*)> data(
         stbi_load_16_from_memory(bytes, size, &width, &height, &components, 3), stbi_image_free);
     if (!data) {
-      error = name + ": cannot read image: " + stbi_failure_reason();
+      error = name + ": cannot read image: " + stb_failure();
       return false;
     }
     result = Image(width, height);
@@ -213,7 +220,7 @@ bool decode_stb(const std::string& name, const stbi_uc* bytes, int size, Image& 
     std::unique_ptr<stbi_uc, void (*)(void*)> data(
         stbi_load_from_memory(bytes, size, &width, &height, &components, 3), stbi_image_free);
     if (!data) {
-      error = name + ": cannot read image: " + stbi_failure_reason();
+      error = name + ": cannot read image: " + stb_failure();
       return false;
     }
     float table[256];
