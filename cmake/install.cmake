@@ -1,6 +1,7 @@
 # What `cmake --install build --prefix P` puts under P (docs/install.md):
 #   bin/gfield, bin/gfield-view
 #   share/gfield/shaders/   the GLSL files (gfield-view finds them at ../share/gfield/shaders)
+#   share/gfield/web/player/  the web player that gfield-view --export-web copies (beside shaders/)
 #   share/gfield/scenes/    the example scenes; share/gfield/meshes/ the bundled meshes (listed
 #                           below, file by file); share/gfield/.gfield-root makes share/gfield
 #                           the example scenes' root (docs/scenes.md, "Confined paths")
@@ -13,6 +14,8 @@ set(GFIELD_INSTALL_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/gfield)
 
 install(DIRECTORY shaders/ DESTINATION ${GFIELD_INSTALL_SHADER_DIR}
   FILES_MATCHING PATTERN "*.glsl" PATTERN "*.vert" PATTERN "*.frag" PATTERN "*.comp")
+install(FILES web/player/index.html web/player/gfield-player.js
+  DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/web/player)
 # The example scenes and bundled meshes (with the material libraries and textures of the
 # textured ones and their sources), named one by one: reports, assets and pictures that commands
 # leave beside them (gfield-view builds a glTF scene's assets beside it) are never installed.

@@ -148,29 +148,41 @@ void GpuScene::set_uniforms(const ShaderProgram& program) const {
   glUniform1f(u("u_env_intensity"), scene_.environment.intensity);
 }
 
-void GpuScene::set_object_uniforms(const ShaderProgram& program, int object) const {
+GpuScene::ObjectUniforms GpuScene::object_uniforms(int object) const {
   const SceneObject& o = scene_object(object);
-  const auto u = [&](const char* name) { return program.uniform_if_declared(name); };
+  ObjectUniforms u;
   const glm::dmat4 to_world_d = object_to_world(o.transform);
-  const glm::mat4 to_world(to_world_d), to_object(glm::inverse(to_world_d));
-  const glm::mat3 normal_to_world(glm::transpose(glm::inverse(glm::dmat3(to_world_d))));
-  glUniformMatrix4fv(u("u_to_world"), 1, GL_FALSE, glm::value_ptr(to_world));
-  glUniformMatrix4fv(u("u_to_object"), 1, GL_FALSE, glm::value_ptr(to_object));
-  glUniformMatrix3fv(u("u_normal_to_world"), 1, GL_FALSE, glm::value_ptr(normal_to_world));
-  glUniform1i(u("u_object"), object);
-  glUniform1i(u("u_shape"), int(o.shape.type));
-  glUniform4f(u("u_shape_params"), o.shape.radius, o.shape.height, o.shape.thickness, 0.0f);
-  glUniform3fv(u("u_shape_size"), 1, &o.shape.size.x);
+  u.to_world = glm::mat4(to_world_d);
+  u.to_object = glm::mat4(glm::inverse(to_world_d));
+  u.normal_to_world = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(to_world_d))));
+  u.shape = int(o.shape.type);
+  u.shape_params = glm::vec4(o.shape.radius, o.shape.height, o.shape.thickness, 0.0f);
+  u.shape_size = o.shape.size;
   if (o.shape.type == ShapeType::kMesh) {
-    glUniform3f(u("u_proxy_half"), 1.0f, 1.0f, 1.0f);
-    glUniform1i(u("u_gi_size"), assets_.asset(o.shape.mesh).image_size);
-    return;
+    u.mesh = o.shape.mesh;
+    u.gi_size = assets_.asset(o.shape.mesh).image_size;
+    return u;
   }
   // A slightly grown box: the exact shape is found per fragment.
   glm::dvec3 lo, hi;
   shape_bounds(o.shape, lo, hi);
-  const glm::vec3 half = glm::vec3(hi) * 1.001f + 1e-5f * extent_;
-  glUniform3fv(u("u_proxy_half"), 1, &half.x);
+  u.proxy_half = glm::vec3(hi) * 1.001f + 1e-5f * extent_;
+  return u;
+}
+
+void GpuScene::set_object_uniforms(const ShaderProgram& program, int object) const {
+  const ObjectUniforms o = object_uniforms(object);
+  const auto u = [&](const char* name) { return program.uniform_if_declared(name); };
+  glUniformMatrix4fv(u("u_to_world"), 1, GL_FALSE, glm::value_ptr(o.to_world));
+  glUniformMatrix4fv(u("u_to_object"), 1, GL_FALSE, glm::value_ptr(o.to_object));
+  glUniformMatrix3fv(u("u_normal_to_world"), 1, GL_FALSE, glm::value_ptr(o.normal_to_world));
+  glUniform1i(u("u_object"), object);
+  glUniform1i(u("u_shape"), o.shape);
+  glUniform4fv(u("u_shape_params"), 1, &o.shape_params.x);
+  glUniform3fv(u("u_shape_size"), 1, &o.shape_size.x);
+  glUniform3fv(u("u_proxy_half"), 1, &o.proxy_half.x);
+  if (o.mesh >= 0)
+    glUniform1i(u("u_gi_size"), o.gi_size);
 }
 
 void GpuScene::draw_object(const ShaderProgram& program, int object, RasterMesh raster) const {

@@ -58,6 +58,19 @@ class GpuScene {
   /// Sets the scene uniforms of `program` (in use): u_object_count, u_light_count, u_ambient,
   /// u_scene_extent and the environment's u_env_type, u_env_color, u_env_intensity.
   void set_uniforms(const ShaderProgram& program) const;
+  /// The per-object uniforms of object `object` (set_object_uniforms sets them).
+  struct ObjectUniforms {
+    glm::mat4 to_world{1.0f};
+    glm::mat4 to_object{1.0f};
+    glm::mat3 normal_to_world{1.0f};
+    int shape = 0;                 ///< ShapeType
+    glm::vec4 shape_params{0.0f};  ///< radius, height, thickness, 0
+    glm::vec3 shape_size{0.0f};
+    glm::vec3 proxy_half{1.0f};  ///< analytic: half extents of its bounds, grown a little; mesh: 1
+    int mesh = -1;               ///< Shape::mesh of a mesh object, else -1
+    int gi_size = 0;             ///< a mesh's geometry-image size n
+  };
+  ObjectUniforms object_uniforms(int object) const;
   /// Sets the per-object uniforms of `program` (in use) for object `object`: u_to_world,
   /// u_to_object, u_normal_to_world, u_object, u_shape, u_shape_params, u_shape_size,
   /// u_proxy_half (analytic: the half extents of its bounds, grown a little; mesh: 1) and
@@ -69,6 +82,13 @@ class GpuScene {
   void draw_object(const ShaderProgram& program, int object, RasterMesh raster) const;
   /// Draws one full-screen triangle (shaders/fullscreen.vert).
   void draw_fullscreen() const;
+
+  /// The objects and lights buffers (the contract's GpuObject[] and GpuLight[]), the environment
+  /// texture and the proxy cube, for readers of the GPU scene (the web export).
+  GLuint objects_buffer() const { return objects_.id(); }
+  GLuint lights_buffer() const { return lights_.id(); }
+  GLuint environment_texture() const { return environment_.id(); }
+  const GpuMesh& proxy_cube() const { return proxy_; }
 
   /// Object-space bounds [lo, hi] of scene().objects[object]: its shape's bounds, or its mesh
   /// asset's box (mesh coordinates).

@@ -17,6 +17,7 @@
 #include "runtime/shader_program.hpp"
 #include "runtime/view_session.hpp"
 #include "runtime/viewer.hpp"
+#include "runtime/web_export.hpp"
 
 namespace {
 
@@ -41,6 +42,7 @@ int fail(const std::string& message) {
 struct Arguments {
   std::string scene_file, size_text, shader_dir = default_shader_dir().string(), asset_dir;
   std::string camera_text;
+  std::string export_web;
   bool headless = false;
   bool allow_outside_paths = false;
   bool rebuild_stale = false;
@@ -87,6 +89,10 @@ void add_common_options(CLI::App& app, Arguments& a) {
                  "Headless: write the error heat map against --reference here (.png/.exr)");
   app.add_option("--diff-scale", h.difference_scale, "Error shown white in the heat map")
       ->capture_default_str();
+  app.add_option("--export-web", a.export_web,
+                 "Write DIR: the web player (index.html) and the scene as it draws it with "
+                 "geometry fields, for any static web server (docs/web.md); no window")
+      ->type_name("DIR");
   app.add_option("--shaders", a.shader_dir,
                  "Folder of the GLSL shaders (default: $GFIELD_SHADER_DIR, else "
                  "../share/gfield/shaders beside the executable, else the source tree's)")
@@ -167,6 +173,15 @@ int main(int argc, char** argv) {
     error = load_and_check_scene(a, scene);
   if (!error.empty())
     return fail(error);
+  if (!a.export_web.empty()) {
+    WebExportOptions web;
+    web.shader_dir = a.shader_dir;
+    web.player_dir = std::filesystem::path(a.shader_dir) / ".." / "web" / "player";
+    web.scene_name = std::filesystem::path(a.scene_file).stem().string();
+    web.width = a.headless_options.width;
+    web.height = a.headless_options.height;
+    return run_export_web(scene, a.export_web, web);
+  }
   if (a.headless)
     return run_headless(session, scene, a.shader_dir, a.headless_options);
   ViewerOptions viewer;

@@ -64,6 +64,7 @@ expected=$(
     (cd core/include && find gfield -type f) | sed 's|^|include/|'
     (cd shaders && find . -type f \( -name '*.glsl' -o -name '*.vert' -o -name '*.frag' -o -name '*.comp' \)) |
       sed 's|^\./|share/gfield/shaders/|'
+    printf '%s\n' share/gfield/web/player/index.html share/gfield/web/player/gfield-player.js
     cat "$shipped"
   } | sed 's|^|./usr/|' | sort
 )

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages gfield needs, skipping those already installed, then the npm
 # tools of the glTF conformance test (scripts/install-gltf-tools.sh: gltf-validator, obj2gltf,
-# gltf-pipeline from the npm registry, once, into ~/.cache/gfield/gltf-tools/). Idempotent.
+# gltf-pipeline from the npm registry, once, into ~/.cache/gfield/gltf-tools/) and the web
+# package's (scripts/install-web-deps.sh: web/node_modules from web/package-lock.json). Idempotent.
 # Run as root (or with sudo available).
 set -euo pipefail
 
@@ -25,6 +26,9 @@ packages=(
   # where there is no systemd (the test starts its own on 127.0.0.1)
   slurmctld slurmd slurm-client munge jq
   clang libclang-rt-14-dev
+  # the web player's test (web/test/player.test.mjs): a browser with WebGL2 (SwiftShader), and
+  # zlib for the export's scene.bin.gz
+  chromium zlib1g-dev
   # the layout check (scripts/check-format.sh)
   clang-format
   # the dialect test (scripts/check-glsl-dialect.py): shaders/lib compiled as GLSL by Khronos'
@@ -56,3 +60,4 @@ else
   $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 "$(dirname "$0")/install-gltf-tools.sh"
+"$(dirname "$0")/install-web-deps.sh"

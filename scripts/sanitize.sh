@@ -29,7 +29,8 @@ export LSAN_OPTIONS=suppressions=$PWD/tests/lsan-mesa.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd build-asan
 # Every test but the one-node Slurm cluster's (label "cluster"), the glTF conformance test's
-# (label "gltf-tools": the npm tools; see tests/CMakeLists.txt) and five end-to-end tests that
+# (label "gltf-tools": the npm tools; see tests/CMakeLists.txt), the web player's (label "web":
+# chromium draws; gfield-view's part of it, the export, runs the code the render tests run) and five end-to-end tests that
 # run, on larger inputs, code the faster tests run under the sanitizers too (every example
 # scene's render, the glTF example's three asset builds, 512^2 and 1024^2 images, a batch of
 # every rebuild, the viewer's refusals of outside paths; docs/reliability.md says what they
@@ -37,7 +38,7 @@ cd build-asan
 heavy='RenderTest\.ExampleScenesMatchReferenceTracer|ExampleScenes\.GltfExampleBuildsItsAssetsAndRenders'
 heavy+='|GeometryImage\.AutomaticSizeDoublesUntilTheMeanErrorIsReached'
 heavy+='|Batch\.UpToDateByContentNotByFileTimes|ExampleScenes\.ViewerConfinesTheFilesASceneNames'
-if ! ctest --output-on-failure -j 2 --label-exclude 'cluster|gltf-tools' -E "$heavy"; then
+if ! ctest --output-on-failure -j 2 --label-exclude 'cluster|gltf-tools|web' -E "$heavy"; then
   # LeakSanitizer's own stop-the-world tracer crashes ("Tracer caught signal 11",
   # google/sanitizers#1353) when a thread exits during its check at exit: TBB's workers did, and
   # the test programs and `gfield` now join them first (preprocess/worker_threads.hpp). Should it

@@ -127,6 +127,14 @@ GF_CONST int UNIT_GBUFFER_ALBEDO = 24;  // rgb albedo of the first hit (diffuse 
 // gpu_contract_test.cpp checks both at compile time).
 GF_CONST int UNIT_COUNT = 25;
 
+// The web player (docs/web.md): WebGL2 has no storage buffers. The objects and lights are
+// uniform blocks of at most these many (std140: 48 GpuObjects fill 15 of the 16 KB every WebGL2
+// block may hold), the fields' words an R32UI texture and the BVHs RGBA32F textures, in rows of
+// WEB_TEXEL_ROW texels.
+GF_CONST int WEB_MAX_OBJECTS = 48;
+GF_CONST int WEB_MAX_LIGHTS = 16;
+GF_CONST int WEB_TEXEL_ROW = 4096;
+
 // Image units (image load/store): the field method's compute tracing pass writes the frame.
 GF_CONST int IMAGE_TRACE_COLOR = 0;  // RGBA32F: linear radiance, alpha 1
 GF_CONST int IMAGE_TRACE_HITS = 1;   // RGBA32F: first hit object, secondary rays traced, 0, 0

@@ -12,8 +12,17 @@
 layout(binding = UNIT_GI_POSITIONS) uniform sampler2DArray u_gi_positions;  // xyz P, w A
 layout(binding = UNIT_GI_NORMALS) uniform sampler2DArray u_gi_normals;      // xyz unit normal
 layout(binding = UNIT_FIELDS) uniform sampler2DArray u_fields;  // xy uv code, texel (column, entry)
-layout(std430, binding = BUFFER_FIELD_LINES) readonly buffer FieldLines { uint gs_field_words[]; };
 layout(binding = UNIT_GI_ALBEDO) uniform sampler2DArray u_gi_albedo;  // rgb linear albedo
+#ifdef GL_ES
+// Word i of BUFFER_FIELD_LINES, at texel (i % WEB_TEXEL_ROW, i / WEB_TEXEL_ROW).
+uniform highp usampler2D u_field_words;
+uint gs_field_word(int i) {
+  return texelFetch(u_field_words, ivec2(i % WEB_TEXEL_ROW, i / WEB_TEXEL_ROW), 0).r;
+}
+#else
+layout(std430, binding = BUFFER_FIELD_LINES) readonly buffer FieldLines { uint gs_field_words[]; };
+uint gs_field_word(int i) { return gs_field_words[i]; }
+#endif
 
 int gs_layer = 0;
 ivec2 gs_image_origin = ivec2(0);
@@ -53,23 +62,23 @@ vec2 gf_field_nearest_texel(int entry, int column) {
 }
 uint gf_field_word(int i) {
   WORK_ADD(WORK_FIELD_FETCHES, 1);
-  return gs_field_words[gs_field_lines + i];
+  return gs_field_word(gs_field_lines + i);
 }
 // Interior hit i: two 8-bit codes (u low) in half a word, two 16-bit codes in a word, or two
 // floats in two words (runtime/gpu_assets.cpp, gfield/gpu_storage.hpp: field_interior_words).
 vec2 gf_field_interior_texel(int i) {
   WORK_ADD(WORK_FIELD_FETCHES, 1);
   if (gs_field_bits == 8) {
-    uint w = gs_field_words[gs_field_interior + i / 2] >> uint(16 * (i % 2));
+    uint w = gs_field_word(gs_field_interior + i / 2) >> uint(16 * (i % 2));
     return vec2(gf_decode_field_code(float(w & 255u), 8),
                 gf_decode_field_code(float((w >> 8u) & 255u), 8));
   }
   if (gs_field_bits == 16) {
-    uint w = gs_field_words[gs_field_interior + i];
+    uint w = gs_field_word(gs_field_interior + i);
     return vec2(gf_decode_field_code(float(w & 65535u), 16), gf_decode_field_code(float(w >> 16u), 16));
   }
-  return vec2(uintBitsToFloat(gs_field_words[gs_field_interior + 2 * i]),
-              uintBitsToFloat(gs_field_words[gs_field_interior + 2 * i + 1]));
+  return vec2(uintBitsToFloat(gs_field_word(gs_field_interior + 2 * i)),
+              uintBitsToFloat(gs_field_word(gs_field_interior + 2 * i + 1)));
 }
 int gf_image_size() { return gs_image_size; }
 // Texel (i, j) of the selected image (0 <= i, j < n) in its layer.

@@ -6,6 +6,29 @@
 #include "lib/textures.glsl"
 #include "lib/work.glsl"
 
+#ifdef GL_ES
+// The three buffers as RGBA32F textures, element i's vec4 k at texel j = i * (vec4s per element)
+// + k, (j % WEB_TEXEL_ROW, j / WEB_TEXEL_ROW).
+uniform highp sampler2D u_bvh_nodes;      // GpuBvhNode: 2 texels
+uniform highp sampler2D u_bvh_triangles;  // GpuBvhTriangle: 3 texels
+uniform highp sampler2D u_bvh_shading;    // GpuBvhShading: 6 texels
+vec4 gb_texel(highp sampler2D t, int j) {
+  return texelFetch(t, ivec2(j % WEB_TEXEL_ROW, j / WEB_TEXEL_ROW), 0);
+}
+vec4 gb_node_lo4(int i) { return gb_texel(u_bvh_nodes, 2 * i); }
+vec4 gb_node_hi4(int i) { return gb_texel(u_bvh_nodes, 2 * i + 1); }
+vec4 gb_triangle(int s, int k) { return gb_texel(u_bvh_triangles, 3 * s + k); }
+GpuBvhShading gb_shading(int s) {
+  GpuBvhShading h;
+  h.normal_u0 = gb_texel(u_bvh_shading, 6 * s);
+  h.normal_u1 = gb_texel(u_bvh_shading, 6 * s + 1);
+  h.normal_u2 = gb_texel(u_bvh_shading, 6 * s + 2);
+  h.base_v0 = gb_texel(u_bvh_shading, 6 * s + 3);
+  h.base_v1 = gb_texel(u_bvh_shading, 6 * s + 4);
+  h.base_v2 = gb_texel(u_bvh_shading, 6 * s + 5);
+  return h;
+}
+#else
 layout(std430, binding = BUFFER_BVH_NODES) readonly buffer BvhNodes { GpuBvhNode bvh_nodes[]; };
 layout(std430, binding = BUFFER_BVH_TRIANGLES) readonly buffer BvhTriangles {
   GpuBvhTriangle bvh_triangles[];
@@ -13,14 +36,21 @@ layout(std430, binding = BUFFER_BVH_TRIANGLES) readonly buffer BvhTriangles {
 layout(std430, binding = BUFFER_BVH_SHADING) readonly buffer BvhShading {
   GpuBvhShading bvh_shading[];
 };
+vec4 gb_node_lo4(int i) { return bvh_nodes[i].lo; }
+vec4 gb_node_hi4(int i) { return bvh_nodes[i].hi; }
+vec4 gb_triangle(int s, int k) {
+  return k == 0 ? bvh_triangles[s].p0 : k == 1 ? bvh_triangles[s].e1 : bvh_triangles[s].e2;
+}
+GpuBvhShading gb_shading(int s) { return bvh_shading[s]; }
+#endif
 
-vec3 gb_node_lo(int i) { return bvh_nodes[i].lo.xyz; }
-vec3 gb_node_hi(int i) { return bvh_nodes[i].hi.xyz; }
-int gb_node_first(int i) { return floatBitsToInt(bvh_nodes[i].lo.w); }
-int gb_node_count(int i) { return floatBitsToInt(bvh_nodes[i].hi.w); }
-vec3 gb_triangle_p0(int s) { return bvh_triangles[s].p0.xyz; }
-vec3 gb_triangle_e1(int s) { return bvh_triangles[s].e1.xyz; }
-vec3 gb_triangle_e2(int s) { return bvh_triangles[s].e2.xyz; }
+vec3 gb_node_lo(int i) { return gb_node_lo4(i).xyz; }
+vec3 gb_node_hi(int i) { return gb_node_hi4(i).xyz; }
+int gb_node_first(int i) { return floatBitsToInt(gb_node_lo4(i).w); }
+int gb_node_count(int i) { return floatBitsToInt(gb_node_hi4(i).w); }
+vec3 gb_triangle_p0(int s) { return gb_triangle(s, 0).xyz; }
+vec3 gb_triangle_e1(int s) { return gb_triangle(s, 1).xyz; }
+vec3 gb_triangle_e2(int s) { return gb_triangle(s, 2).xyz; }
 
 #include "lib/bvh_trace.glsl"
 
@@ -44,7 +74,7 @@ BvhMeshHit bvh_mesh_hit(int root, vec3 o, vec3 d, float t_min, float t_max) {
   WORK_ADD(WORK_BVH_TRIANGLES, h.triangles);
   m.hit = h.hit;
   if (!h.hit) return m;
-  GpuBvhShading s = bvh_shading[h.slot];
+  GpuBvhShading s = gb_shading(h.slot);
   vec3 w = vec3(1.0f - h.bary.x - h.bary.y, h.bary.x, h.bary.y);
   m.t = h.t;
   m.position = o + h.t * d;
@@ -52,7 +82,7 @@ BvhMeshHit bvh_mesh_hit(int root, vec3 o, vec3 d, float t_min, float t_max) {
   m.uv = w.x * vec2(s.normal_u0.w, s.base_v0.w) + w.y * vec2(s.normal_u1.w, s.base_v1.w) +
          w.z * vec2(s.normal_u2.w, s.base_v2.w);
   vec3 base = w.x * s.base_v0.rgb + w.y * s.base_v1.rgb + w.z * s.base_v2.rgb;
-  float layer = bvh_triangles[h.slot].p0.w;
+  float layer = gb_triangle(h.slot, 0).w;
   m.base_color = layer < -0.5f ? base
                                : base * textureLod(u_mesh_textures, vec3(m.uv, layer), 0.0f).rgb;
   return m;

@@ -15,7 +15,11 @@
 #include "lib/textures.glsl"
 
 // GpuObject, GpuLight and the MATERIAL_* codes are the contract's (shaders/lib/contract.glsl).
+#ifdef GL_ES
+layout(std140) uniform Lights { GpuLight lights[WEB_MAX_LIGHTS]; };  // objects.glsl says why
+#else
 layout(std430, binding = BUFFER_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
+#endif
 
 uniform int u_object_count;
 uniform int u_light_count;
@@ -245,7 +249,9 @@ SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup s
     if (opaque_only && objects[k].kind.y == MATERIAL_DIELECTRIC) continue;
     bool own = k == self.object && objects[k].kind.x == SHAPE_MESH;
     if (own && !u_self_reflection && k != inside) continue;
-    SceneHit h = intersect_object(k, o, d, 0.0f, best.t, own ? self : no_self_lookup());
+    SelfLookup leaving = no_self_lookup();  // WebGL has no ?: of structs
+    if (own) leaving = self;
+    SceneHit h = intersect_object(k, o, d, 0.0f, best.t, leaving);
     if (h.hit && h.t < best.t) best = h;
   }
   if (best.hit && !opaque_only && !best.has_albedo) best.albedo = hit_albedo(best.object, best.uv);

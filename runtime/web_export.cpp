@@ -1,0 +1,317 @@
+#include "runtime/web_export.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <system_error>
+#include <vector>
+
+#include <unistd.h>
+#include <zlib.h>
+#include <nlohmann/json.hpp>
+
+#include "gfield/gpu_contract.hpp"
+#include "gfield/printable.hpp"
+#include "runtime/gl_context.hpp"
+#include "runtime/glsl_es.hpp"
+
+namespace gfield {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// WebGL2's guaranteed limits are lower (2048 texels, 256 layers); these are what the browsers
+// gfield is tested on offer (SwiftShader, desktop GPUs), checked again by the player.
+constexpr int kWebMaxTextureSize = 8192;
+constexpr int kWebMaxLayers = 256;
+
+// The stages the player runs (web/player/gfield-player.js).
+const char* const kWebStages[] = {"fullscreen.vert", "gbuffer.vert", "gbuffer.frag",
+                                  "field_trace.frag", "present.frag"};
+const char* const kPlayerFiles[] = {"index.html", "gfield-player.js"};
+
+// scene.bin: blocks one after another, each at a multiple of 16 bytes (typed-array views).
+struct Blob {
+  std::vector<uint8_t> bytes;
+  json add(const void* data, size_t size) {
+    const size_t offset = (bytes.size() + 15) / 16 * 16;
+    bytes.resize(offset + size);
+    if (size > 0)
+      std::memcpy(bytes.data() + offset, data, size);
+    return json{{"offset", offset}, {"bytes", size}};
+  }
+};
+
+std::vector<uint8_t> read_buffer(GLuint buffer) {
+  GLint64 size = 0;
+  if (buffer != 0)
+    glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &size);
+  std::vector<uint8_t> bytes(static_cast<size_t>(size));
+  if (size > 0)
+    glGetNamedBufferSubData(buffer, 0, size, bytes.data());
+  return bytes;
+}
+
+// A 2D array texture read back whole as `format`/`type` (texel_bytes each); a texture never
+// made becomes one zero texel.
+json add_texture(Blob& blob, GLuint texture, GLenum format, GLenum type, int texel_bytes,
+                 const char* web_format, const std::string& what, std::string& error) {
+  GLint w = 1, h = 1, layers = 1;
+  std::vector<uint8_t> bytes(size_t(texel_bytes), 0);
+  if (texture != 0) {
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &w);
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &h);
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_DEPTH, &layers);
+    bytes.assign(size_t(w) * size_t(h) * size_t(layers) * size_t(texel_bytes), 0);
+    glGetTextureImage(texture, 0, format, type, GLsizei(bytes.size()), bytes.data());
+  }
+  if (w > kWebMaxTextureSize || h > kWebMaxTextureSize || layers > kWebMaxLayers)
+    error = what + " is " + std::to_string(w) + " x " + std::to_string(h) + " x " +
+            std::to_string(layers) + " texels, beyond the web player's " +
+            std::to_string(kWebMaxTextureSize) + " x " + std::to_string(kWebMaxTextureSize) +
+            " x " + std::to_string(kWebMaxLayers);
+  json t = blob.add(bytes.data(), bytes.size());
+  t["width"] = w;
+  t["height"] = h;
+  t["layers"] = layers;
+  t["format"] = web_format;
+  return t;
+}
+
+// The fields' line words (BUFFER_FIELD_LINES) as an R32UI texture of rows of WEB_TEXEL_ROW.
+json add_words(Blob& blob, GLuint buffer, std::string& error) {
+  std::vector<uint8_t> bytes = read_buffer(buffer);
+  const size_t row = size_t(gpu::WEB_TEXEL_ROW) * 4;
+  const size_t rows = std::max<size_t>(1, (bytes.size() + row - 1) / row);
+  bytes.resize(rows * row, 0);
+  if (rows > size_t(kWebMaxTextureSize))
+    error = "the fields' line tables need " + std::to_string(rows) + " rows of " +
+            std::to_string(gpu::WEB_TEXEL_ROW) + " words, beyond the web player's " +
+            std::to_string(kWebMaxTextureSize);
+  json t = blob.add(bytes.data(), bytes.size());
+  t["width"] = gpu::WEB_TEXEL_ROW;
+  t["height"] = rows;
+  t["layers"] = 1;
+  t["format"] = "r32ui";
+  return t;
+}
+
+json add_mesh(Blob& blob, const GpuMesh& mesh) {
+  const std::vector<uint8_t> vertices = read_buffer(mesh.vertices.id());
+  const std::vector<uint8_t> indices = read_buffer(mesh.indices.id());
+  return json{{"vertices", blob.add(vertices.data(), vertices.size())},
+              {"indices", blob.add(indices.data(), indices.size())},
+              {"index_count", mesh.index_count},
+              {"vertex_bytes", sizeof(GpuVertex)}};
+}
+
+template <typename M>
+json numbers(const M& m, int count) {
+  const float* p = &m[0][0];
+  return std::vector<float>(p, p + count);
+}
+json vec3_json(const glm::vec3& v) {
+  return {v.x, v.y, v.z};
+}
+
+json objects_json(const GpuScene& gpu) {
+  json objects = json::array();
+  for (int k = 0; k < int(gpu.scene().objects.size()); ++k) {
+    const GpuScene::ObjectUniforms u = gpu.object_uniforms(k);
+    glm::vec3 lo, hi;
+    gpu.object_world_bounds(k, lo, hi);
+    objects.push_back(
+        {{"name", gpu.scene().objects[size_t(k)].name},
+         {"to_world", numbers(u.to_world, 16)},
+         {"to_object", numbers(u.to_object, 16)},
+         {"shape", u.shape},
+         {"shape_params", {u.shape_params.x, u.shape_params.y, u.shape_params.z, 0.0f}},
+         {"shape_size", vec3_json(u.shape_size)},
+         {"proxy_half", vec3_json(u.proxy_half)},
+         {"mesh", u.mesh},
+         {"world_bounds", {vec3_json(lo), vec3_json(hi)}}});
+  }
+  return objects;
+}
+
+json scene_json(const GpuScene& gpu, const WebExportOptions& options) {
+  const Scene& scene = gpu.scene();
+  return {{"format", "gfield-web"},
+          {"version", kWebSceneVersion},
+          {"name", options.scene_name},
+          {"size", {options.width, options.height}},
+          {"camera",
+           {{"position", vec3_json(scene.camera.position)},
+            {"target", vec3_json(scene.camera.target)},
+            {"up", vec3_json(scene.camera.up)},
+            {"fov", scene.camera.fov_degrees}}},
+          {"uniforms",
+           {{"object_count", scene.objects.size()},
+            {"light_count", scene.lights.size()},
+            {"ambient", vec3_json(scene.ambient)},
+            {"scene_extent", gpu.extent()},
+            {"env_type", int(scene.environment.type)},
+            {"env_color", vec3_json(scene.environment.color)},
+            {"env_intensity", scene.environment.intensity}}},
+          {"objects", objects_json(gpu)}};
+}
+
+// The scene's bytes into `blob` and where each lies into `manifest`.
+bool add_gpu_data(const GpuScene& gpu, Blob& blob, json& manifest, std::string& error) {
+  const GpuAssets& a = gpu.assets();
+  const std::vector<uint8_t> objects = read_buffer(gpu.objects_buffer());
+  const std::vector<uint8_t> lights = read_buffer(gpu.lights_buffer());
+  manifest["blocks"] = {{"objects", blob.add(objects.data(), objects.size())},
+                        {"lights", blob.add(lights.data(), lights.size())}};
+  json& t = manifest["textures"];
+  t["gi_positions"] = add_texture(blob, a.positions(), GL_RGBA, GL_FLOAT, 16, "rgba32f",
+                                  "the geometry images", error);
+  t["gi_normals"] = add_texture(blob, a.normals(), GL_RGBA, GL_FLOAT, 16, "rgba32f",
+                                "the geometry images' normals", error);
+  t["fields"] = add_texture(blob, a.fields(), GL_RG, GL_UNSIGNED_BYTE, 2, "rg8",
+                            "the fields' nearest-hit tables", error);
+  t["field_words"] = add_words(blob, a.field_lines(), error);
+  t["gi_albedo"] = add_texture(blob, a.albedo(), GL_RGBA, GL_HALF_FLOAT, 8, "rgba16f",
+                               "the geometry images' albedo", error);
+  t["mesh_textures"] = add_texture(blob, a.mesh_textures(), GL_RGBA, GL_HALF_FLOAT, 8, "rgba16f",
+                                   "the meshes' textures", error);
+  t["environment"] = add_texture(blob, gpu.environment_texture(), GL_RGBA, GL_FLOAT, 16, "rgba32f",
+                                 "the environment", error);
+  json meshes = json::array();
+  for (const GpuAsset& asset : a.assets())
+    meshes.push_back(add_mesh(blob, asset.source));
+  manifest["meshes"] = meshes;
+  manifest["proxy_cube"] = add_mesh(blob, gpu.proxy_cube());
+  return error.empty();
+}
+
+bool write_gzip(const fs::path& path, const std::vector<uint8_t>& bytes, std::string& error) {
+  gzFile file = gzopen(path.c_str(), "wb6");
+  bool ok = file != nullptr;
+  for (size_t at = 0; ok && at < bytes.size();) {
+    const unsigned chunk = unsigned(std::min<size_t>(bytes.size() - at, size_t(1) << 30));
+    ok = gzwrite(file, bytes.data() + at, chunk) == int(chunk);
+    at += chunk;
+  }
+  if (file != nullptr && gzclose(file) != Z_OK)
+    ok = false;
+  if (!ok)
+    error = path.string() + ": cannot write";
+  return ok;
+}
+
+bool write_text(const fs::path& path, const std::string& text, std::string& error) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out.flush()) {
+    error = path.string() + ": cannot write";
+    return false;
+  }
+  return true;
+}
+
+// Everything of the export into the empty folder `dir`.
+bool write_folder(const GpuScene& gpu, const fs::path& dir, const WebExportOptions& options,
+                  std::string& error) {
+  json manifest = scene_json(gpu, options);
+  Blob blob;
+  if (!add_gpu_data(gpu, blob, manifest, error)) {
+    error = gpu.scene().filename + ": " + error;
+    return false;
+  }
+  manifest["bin"] = {{"file", "scene.bin.gz"}, {"bytes", blob.bytes.size()}};
+  fs::create_directories(dir / "shaders");
+  for (const char* stage : kWebStages) {
+    std::string text;
+    if (!glsl_es_source(options.shader_dir, stage, text, error) ||
+        !write_text(dir / "shaders" / stage, text, error))
+      return false;
+  }
+  std::error_code ec;
+  for (const char* file : kPlayerFiles) {
+    fs::copy_file(options.player_dir / file, dir / file, ec);
+    if (ec) {
+      error = (options.player_dir / file).string() + ": cannot copy the player: " + ec.message();
+      return false;
+    }
+  }
+  return write_gzip(dir / "scene.bin.gz", blob.bytes, error) &&
+         write_text(dir / "scene.json", manifest.dump(1) + "\n", error);
+}
+
+bool is_earlier_export(const fs::path& dir) {
+  std::ifstream in(dir / "scene.json");
+  const json j = json::parse(in, nullptr, false);
+  return j.is_object() && j.value("format", "") == "gfield-web";
+}
+
+}  // namespace
+
+bool export_web(const GpuScene& gpu, const fs::path& out, const WebExportOptions& options,
+                std::string& error) {
+  std::error_code ec;
+  if (gpu.scene().objects.size() > size_t(gpu::WEB_MAX_OBJECTS) ||
+      gpu.scene().lights.size() > size_t(gpu::WEB_MAX_LIGHTS)) {
+    error = gpu.scene().filename + ": the web player draws at most " +
+            std::to_string(gpu::WEB_MAX_OBJECTS) + " objects and " +
+            std::to_string(gpu::WEB_MAX_LIGHTS) + " lights";
+    return false;
+  }
+  const bool replace = fs::exists(out, ec);
+  if (replace &&
+      !(fs::is_directory(out, ec) && (fs::is_empty(out, ec) || is_earlier_export(out)))) {
+    error = out.string() + ": exists and is not an earlier web export; choose another folder";
+    return false;
+  }
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  std::string name = ".";
+  name.append(out.filename().string()).append(".tmp-").append(std::to_string(::getpid()));
+  const fs::path staging = parent / name;
+  const fs::path old = parent / name.replace(name.rfind(".tmp-"), 5, ".old-");
+  fs::remove_all(staging, ec);
+  if (!fs::create_directories(staging, ec)) {
+    error = out.string() + ": cannot create the folder: " + ec.message();
+    return false;
+  }
+  if (!write_folder(gpu, staging, options, error)) {
+    fs::remove_all(staging, ec);
+    return false;
+  }
+  if (replace)
+    fs::rename(out, old, ec);
+  if (!ec)
+    fs::rename(staging, out, ec);
+  if (ec) {
+    error = out.string() + ": cannot put the export in place: " + ec.message();
+    if (replace && !fs::exists(out))
+      fs::rename(old, out, ec);
+    fs::remove_all(staging, ec);
+    return false;
+  }
+  fs::remove_all(old, ec);
+  return true;
+}
+
+int run_export_web(const Scene& scene, const fs::path& out, const WebExportOptions& options) {
+  const auto fail = [](const std::string& message, int code) {
+    std::fprintf(stderr, "gfield-view: %s\n", printable(message).c_str());
+    return code;
+  };
+  std::string error;
+  auto context = GlContext::create_headless(error);
+  if (!context)
+    return fail(error, kExitNoOpenGL);
+  GpuScene gpu;
+  AssetNeeds needs;
+  needs.fields = true;
+  needs.field_bits = 8;
+  needs.source_meshes = true;
+  if (!gpu.load(scene, error) || !gpu.require(needs, error) ||
+      !export_web(gpu, out, options, error))
+    return fail(error, 2);
+  return 0;
+}
+
+}  // namespace gfield

@@ -1,0 +1,425 @@
+// The gfield web player (docs/web.md): draws a scene exported by `gfield-view SCENE --export-web
+// DIR` with geometry fields in WebGL2, as gfield-view's field method does: a G-buffer of first
+// hits (shaders/gbuffer.vert, gbuffer.frag), the tracing pass (field_trace.frag) and the sRGB
+// presentation (present.frag), the shaders being the runtime's own in GLSL ES 3.00
+// (runtime/glsl_es.hpp). The scene's bytes are the runtime's GPU buffers and textures.
+
+/** The layout version this player reads (scene.json "version"; runtime/web_export.hpp). */
+export const WEB_SCENE_VERSION = 1;
+
+/** Lookup modes of the field (the contract's GF_MODE_*). */
+export const LOOKUP_MODES = { nearest: 0, linear: 1, refined: 2 };
+
+// The contract's WEB_MAX_OBJECTS, WEB_MAX_LIGHTS (shaders/lib/contract.glsl): the uniform
+// blocks' declared lengths; std140 sizes of GpuObject and GpuLight in bytes.
+const MAX_OBJECTS = 48;
+const MAX_LIGHTS = 16;
+const OBJECT_BYTES = 320;
+const LIGHT_BYTES = 48;
+
+/** An error the page shows as it is: one line naming the file and what is wrong. */
+export class PlayerError extends Error {}
+
+async function fetchOk(base, file) {
+  let response;
+  try {
+    response = await fetch(new URL(file, base));
+  } catch (e) {
+    throw new PlayerError(`${file}: cannot be fetched (${e.message})`);
+  }
+  if (!response.ok) throw new PlayerError(`${file}: cannot be fetched (HTTP ${response.status})`);
+  return response;
+}
+
+/**
+ * Reads DIR/scene.json and DIR/scene.bin.gz (a URL of the folder, ending in "/"): the manifest,
+ * its bytes (an ArrayBuffer of manifest.bin.bytes) and the stages' GLSL ES texts by file name.
+ */
+export async function loadWebScene(base) {
+  const manifestText = await (await fetchOk(base, 'scene.json')).text();
+  let manifest;
+  try {
+    manifest = JSON.parse(manifestText);
+  } catch (e) {
+    throw new PlayerError(`scene.json: not JSON (${e.message})`);
+  }
+  if (manifest.format !== 'gfield-web')
+    throw new PlayerError('scene.json: not a gfield web scene (format is not "gfield-web")');
+  if (manifest.version !== WEB_SCENE_VERSION)
+    throw new PlayerError(`scene.json: layout version ${manifest.version}; this player reads ` +
+                          `version ${WEB_SCENE_VERSION} (export the scene again)`);
+  const file = manifest.bin.file;
+  const packed = (await fetchOk(base, file)).body.pipeThrough(new DecompressionStream('gzip'));
+  let bytes;
+  try {
+    bytes = await new Response(packed).arrayBuffer();
+  } catch (e) {
+    throw new PlayerError(`${file}: damaged or truncated (${e.message})`);
+  }
+  if (bytes.byteLength !== manifest.bin.bytes)
+    throw new PlayerError(`${file}: holds ${bytes.byteLength} bytes, scene.json says ` +
+                          `${manifest.bin.bytes} (truncated, or from another export)`);
+  const shaders = {};
+  for (const stage of ['fullscreen.vert', 'gbuffer.vert', 'gbuffer.frag', 'field_trace.frag',
+                       'present.frag'])
+    shaders[stage] = await (await fetchOk(base, `shaders/${stage}`)).text();
+  return { manifest, bytes, shaders };
+}
+
+// Column-major 4x4 matrices as glm's (GL clip space, z in [-1, 1]).
+function lookAt(eye, target, up) {
+  const f = normalize(sub(target, eye));
+  const s = normalize(cross(f, up));
+  const u = cross(s, f);
+  return [s[0], u[0], -f[0], 0, s[1], u[1], -f[1], 0, s[2], u[2], -f[2], 0,
+          -dot(s, eye), -dot(u, eye), dot(f, eye), 1];
+}
+function perspective(fovy, aspect, near, far) {
+  const t = 1 / Math.tan(fovy / 2);
+  return [t / aspect, 0, 0, 0, 0, t, 0, 0, 0, 0, -(far + near) / (far - near), -1,
+          0, 0, -(2 * far * near) / (far - near), 0];
+}
+function multiply(a, b) {
+  const m = new Array(16).fill(0);
+  for (let c = 0; c < 4; c++)
+    for (let r = 0; r < 4; r++)
+      for (let k = 0; k < 4; k++) m[c * 4 + r] += a[k * 4 + r] * b[c * 4 + k];
+  return m;
+}
+const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                         a[0] * b[1] - a[1] * b[0]];
+const normalize = (a) => { const l = Math.hypot(a[0], a[1], a[2]); return [a[0] / l, a[1] / l, a[2] / l]; };
+
+// runtime/gpu_scene.cpp's depth_range: near and far planes keeping every object in view.
+function depthRange(eye, objects, edgeCosine) {
+  let nearest = Infinity, farthest = 0, inside = false;
+  for (const o of objects) {
+    const [lo, hi] = o.world_bounds;
+    const below = sub(lo, eye), above = sub(hi, eye);
+    const out = [0, 1, 2].map((i) => Math.max(below[i], -above[i], 0));
+    const toBox = Math.hypot(out[0], out[1], out[2]);
+    const far = [0, 1, 2].map((i) => Math.max(Math.abs(below[i]), Math.abs(above[i])));
+    farthest = Math.max(farthest, Math.hypot(far[0], far[1], far[2]));
+    if (toBox > 0) nearest = Math.min(nearest, toBox);
+    else inside = true;
+  }
+  const farPlane = Math.max(1.01 * farthest, 1e-3);
+  let nearPlane = Math.min(0.5 * edgeCosine * nearest, 0.5 * farPlane);
+  if (inside || nearest === Infinity) nearPlane = Math.min(nearPlane, 1e-4 * farPlane);
+  return [Math.max(nearPlane, 1e-7 * farPlane), farPlane];
+}
+
+// Upload formats of the manifest's texture formats.
+function textureFormat(gl, format) {
+  switch (format) {
+    case 'rgba32f': return [gl.RGBA32F, gl.RGBA, gl.FLOAT, Float32Array, 4];
+    case 'rgba16f': return [gl.RGBA16F, gl.RGBA, gl.HALF_FLOAT, Uint16Array, 4];
+    case 'rg8': return [gl.RG8, gl.RG, gl.UNSIGNED_BYTE, Uint8Array, 2];
+    case 'r32ui': return [gl.R32UI, gl.RED_INTEGER, gl.UNSIGNED_INT, Uint32Array, 1];
+    default: throw new PlayerError(`scene.json: unknown texture format "${format}"`);
+  }
+}
+
+function checkBlock(block, bytes, what) {
+  if (!block || block.offset + block.bytes > bytes.byteLength)
+    throw new PlayerError(`scene.json: ${what} lies outside scene.bin.gz`);
+}
+
+/**
+ * The geometry-field renderer of one exported scene on a WebGL2 context: the runtime's field
+ * method. Settings: depth (reflections/refractions after the camera ray), mode (a LOOKUP_MODES
+ * key), selfReflection, minWeight, maxRays.
+ */
+export class FieldRenderer {
+  constructor(gl, scene) {
+    this.gl = gl;
+    this.manifest = scene.manifest;
+    this.shaders = scene.shaders;
+    this.settings = { depth: 10, mode: 'refined', selfReflection: true, minWeight: 0.005, maxRays: 24 };
+    if (!gl.getExtension('EXT_color_buffer_float'))
+      throw new PlayerError('this browser cannot render to float textures (EXT_color_buffer_float)');
+    gl.getExtension('OES_texture_float_linear');
+    this.#upload(scene.bytes);
+    this.gbufferProgram = this.#program('gbuffer.vert', 'gbuffer.frag', '');
+    this.presentProgram = this.#program('fullscreen.vert', 'present.frag', '');
+    this.tracePrograms = new Map();
+    this.emptyVao = gl.createVertexArray();
+  }
+
+  #upload(bytes) {
+    const gl = this.gl, m = this.manifest;
+    this.textures = {};
+    for (const [name, t] of Object.entries(m.textures)) {
+      checkBlock(t, bytes, `texture ${name}`);
+      const limit = gl.getParameter(gl.MAX_TEXTURE_SIZE);
+      if (t.width > limit || t.height > limit)
+        throw new PlayerError(`scene.json: ${name} is ${t.width} x ${t.height} texels; this ` +
+                              `browser's textures stop at ${limit}`);
+      const [internal, format, type, View, channels] = textureFormat(gl, t.format);
+      const data = new View(bytes, t.offset, t.width * t.height * t.layers * channels);
+      const array = name !== 'field_words';
+      const target = array ? gl.TEXTURE_2D_ARRAY : gl.TEXTURE_2D;
+      const texture = gl.createTexture();
+      gl.bindTexture(target, texture);
+      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+      if (array) gl.texImage3D(target, 0, internal, t.width, t.height, t.layers, 0, format, type, data);
+      else gl.texImage2D(target, 0, internal, t.width, t.height, 0, format, type, data);
+      // The meshes' own textures are filtered (GL_LINEAR, GL_REPEAT); the rest read by texelFetch.
+      const linear = name === 'mesh_textures';
+      gl.texParameteri(target, gl.TEXTURE_MIN_FILTER, linear ? gl.LINEAR : gl.NEAREST);
+      gl.texParameteri(target, gl.TEXTURE_MAG_FILTER, linear ? gl.LINEAR : gl.NEAREST);
+      const wrap = linear ? gl.REPEAT : gl.CLAMP_TO_EDGE;
+      gl.texParameteri(target, gl.TEXTURE_WRAP_S, wrap);
+      gl.texParameteri(target, gl.TEXTURE_WRAP_T, wrap);
+      this.textures[name] = { texture, target };
+    }
+    this.objectsBlock = this.#uniformBlock(bytes, m.blocks.objects, MAX_OBJECTS * OBJECT_BYTES, 'objects');
+    this.lightsBlock = this.#uniformBlock(bytes, m.blocks.lights, MAX_LIGHTS * LIGHT_BYTES, 'lights');
+    this.meshes = m.meshes.map((mesh, i) => this.#mesh(bytes, mesh, `mesh ${i}`));
+    this.proxyCube = this.#mesh(bytes, m.proxy_cube, 'the proxy cube');
+  }
+
+  // A uniform block's buffer, padded to the length its declaration has.
+  #uniformBlock(bytes, block, size, what) {
+    checkBlock(block, bytes, `the ${what} block`);
+    if (block.bytes > size) throw new PlayerError(`scene.json: more ${what} than the player draws`);
+    const data = new Uint8Array(size);
+    data.set(new Uint8Array(bytes, block.offset, block.bytes));
+    const buffer = this.gl.createBuffer();
+    this.gl.bindBuffer(this.gl.UNIFORM_BUFFER, buffer);
+    this.gl.bufferData(this.gl.UNIFORM_BUFFER, data, this.gl.STATIC_DRAW);
+    return buffer;
+  }
+
+  // An indexed mesh of GpuVertex (position, normal, uv, base: 12 floats).
+  #mesh(bytes, mesh, what) {
+    const gl = this.gl;
+    checkBlock(mesh.vertices, bytes, `${what}'s vertices`);
+    checkBlock(mesh.indices, bytes, `${what}'s indices`);
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const vertices = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, vertices);
+    gl.bufferData(gl.ARRAY_BUFFER, new Uint8Array(bytes, mesh.vertices.offset, mesh.vertices.bytes),
+                  gl.STATIC_DRAW);
+    const stride = mesh.vertex_bytes;
+    [[0, 3, 0], [1, 3, 12], [2, 2, 24], [3, 4, 32]].forEach(([location, size, offset]) => {
+      gl.enableVertexAttribArray(location);
+      gl.vertexAttribPointer(location, size, gl.FLOAT, false, stride, offset);
+    });
+    const indices = gl.createBuffer();
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indices);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint8Array(bytes, mesh.indices.offset, mesh.indices.bytes),
+                  gl.STATIC_DRAW);
+    gl.bindVertexArray(null);
+    return { vao, count: mesh.index_count };
+  }
+
+  // A program of two stages, `defines` after each stage's first line.
+  #program(vertex, fragment, defines) {
+    const gl = this.gl;
+    const program = gl.createProgram();
+    for (const [stage, type] of [[vertex, gl.VERTEX_SHADER], [fragment, gl.FRAGMENT_SHADER]]) {
+      const text = this.shaders[stage];
+      const first = text.indexOf('\n') + 1;
+      const shader = gl.createShader(type);
+      gl.shaderSource(shader, text.slice(0, first) + defines + text.slice(first));
+      gl.compileShader(shader);
+      if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS))
+        throw new PlayerError(`shaders/${stage}: does not compile: ` +
+                              `${(gl.getShaderInfoLog(shader) || '').split('\n')[0]}`);
+      gl.attachShader(program, shader);
+    }
+    gl.linkProgram(program);
+    if (!gl.getProgramParameter(program, gl.LINK_STATUS))
+      throw new PlayerError(`shaders/${fragment}: does not link: ${gl.getProgramInfoLog(program)}`);
+    const objects = gl.getUniformBlockIndex(program, 'Objects');
+    if (objects !== gl.INVALID_INDEX) gl.uniformBlockBinding(program, objects, 0);
+    const lights = gl.getUniformBlockIndex(program, 'Lights');
+    if (lights !== gl.INVALID_INDEX) gl.uniformBlockBinding(program, lights, 1);
+    const uniforms = new Map();
+    const count = gl.getProgramParameter(program, gl.ACTIVE_UNIFORMS);
+    for (let i = 0; i < count; i++) {
+      const name = gl.getActiveUniform(program, i).name.replace(/\[0\]$/, '');
+      uniforms.set(name, gl.getUniformLocation(program, name));
+    }
+    return { program, uniforms };
+  }
+
+  #traceProgram() {
+    const mode = LOOKUP_MODES[this.settings.mode];
+    if (mode === undefined) throw new PlayerError(`mode=${this.settings.mode}: not a lookup mode`);
+    if (!this.tracePrograms.has(mode))
+      this.tracePrograms.set(mode, this.#program('fullscreen.vert', 'field_trace.frag',
+          `#define GF_TRACE_MODE ${mode}\n#define GF_FIELD_MESHES 1\n#define GF_BVH_MESHES 0\n`));
+    return this.tracePrograms.get(mode);
+  }
+
+  // Render targets of width x height: the G-buffer (4 RGBA32F + depth) and the frame (colour
+  // and hits, RGBA32F).
+  #targets(width, height) {
+    if (this.size && this.size[0] === width && this.size[1] === height) return;
+    const gl = this.gl;
+    const target = (count, depth) => {
+      const fbo = gl.createFramebuffer();
+      gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+      const textures = [];
+      for (let k = 0; k < count; k++) {
+        const t = gl.createTexture();
+        gl.bindTexture(gl.TEXTURE_2D, t);
+        gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, width, height);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+        gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + k, gl.TEXTURE_2D, t, 0);
+        textures.push(t);
+      }
+      if (depth) {
+        const rb = gl.createRenderbuffer();
+        gl.bindRenderbuffer(gl.RENDERBUFFER, rb);
+        gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT32F, width, height);
+        gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, rb);
+      }
+      gl.drawBuffers(textures.map((_, k) => gl.COLOR_ATTACHMENT0 + k));
+      if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE)
+        throw new PlayerError('this browser cannot render to RGBA32F targets');
+      return { fbo, textures };
+    };
+    this.gbuffer = target(4, true);
+    this.frame = target(2, false);
+    this.size = [width, height];
+  }
+
+  #bindScene(p) {
+    const gl = this.gl;
+    gl.bindBufferBase(gl.UNIFORM_BUFFER, 0, this.objectsBlock);
+    gl.bindBufferBase(gl.UNIFORM_BUFFER, 1, this.lightsBlock);
+    const samplers = {
+      u_gi_positions: this.textures.gi_positions, u_gi_normals: this.textures.gi_normals,
+      u_fields: this.textures.fields, u_field_words: this.textures.field_words,
+      u_gi_albedo: this.textures.gi_albedo, u_mesh_textures: this.textures.mesh_textures,
+      u_env_images: this.textures.environment,
+    };
+    let unit = 0;
+    for (const [name, t] of Object.entries(samplers)) {
+      if (!p.uniforms.has(name)) continue;
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(t.target, t.texture);
+      gl.uniform1i(p.uniforms.get(name), unit++);
+    }
+    return unit;
+  }
+
+  #setSceneUniforms(p) {
+    const gl = this.gl, u = this.manifest.uniforms;
+    const set = (name, f) => { if (p.uniforms.has(name)) f(p.uniforms.get(name)); };
+    set('u_object_count', (l) => gl.uniform1i(l, u.object_count));
+    set('u_light_count', (l) => gl.uniform1i(l, u.light_count));
+    set('u_ambient', (l) => gl.uniform3fv(l, u.ambient));
+    set('u_scene_extent', (l) => gl.uniform1f(l, u.scene_extent));
+    set('u_env_type', (l) => gl.uniform1i(l, u.env_type));
+    set('u_env_color', (l) => gl.uniform3fv(l, u.env_color));
+    set('u_env_intensity', (l) => gl.uniform1f(l, u.env_intensity));
+  }
+
+  #setCameraUniforms(p, camera, width, height) {
+    const gl = this.gl;
+    const forward = normalize(sub(camera.target, camera.position));
+    const right = normalize(cross(forward, camera.up));
+    const up = cross(right, forward);
+    const tanHalf = Math.tan(camera.fov * Math.PI / 360);
+    const set = (name, f) => { if (p.uniforms.has(name)) f(p.uniforms.get(name)); };
+    set('u_camera_position', (l) => gl.uniform3fv(l, camera.position));
+    set('u_camera_forward', (l) => gl.uniform3fv(l, forward));
+    set('u_camera_right', (l) => gl.uniform3fv(l, right));
+    set('u_camera_up', (l) => gl.uniform3fv(l, up));
+    set('u_tan_half', (l) => gl.uniform2f(l, tanHalf * width / height, tanHalf));
+    set('u_image_size', (l) => gl.uniform2f(l, width, height));
+    set('u_jitter', (l) => gl.uniform2f(l, 0, 0));
+  }
+
+  #drawGbuffer(camera, width, height) {
+    const gl = this.gl, p = this.gbufferProgram;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, this.gbuffer.fbo);
+    gl.viewport(0, 0, width, height);
+    gl.clearBufferfv(gl.COLOR, 0, [0, 0, 0, -1]);
+    for (let k = 1; k < 4; k++) gl.clearBufferfv(gl.COLOR, k, [0, 0, 0, 0]);
+    gl.depthMask(true);
+    gl.clearDepth(1);
+    gl.clear(gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.depthFunc(gl.LESS);
+    gl.disable(gl.CULL_FACE);
+    gl.disable(gl.BLEND);
+    gl.useProgram(p.program);
+    this.#bindScene(p);
+    // runtime/gpu_scene.cpp's camera_frustum.
+    const tanHalf = Math.tan(camera.fov * Math.PI / 360);
+    const sides = width / height;
+    const edge = Math.atan(tanHalf * Math.sqrt(1 + sides * sides));
+    const [near, far] = depthRange(camera.position, this.manifest.objects, Math.cos(edge));
+    const viewProjection = multiply(perspective(camera.fov * Math.PI / 180, width / height, near, far),
+                                    lookAt(camera.position, camera.target, camera.up));
+    gl.uniformMatrix4fv(p.uniforms.get('u_view_projection'), false, viewProjection);
+    gl.uniform3fv(p.uniforms.get('u_camera_position'), camera.position);
+    this.manifest.objects.forEach((o, k) => {
+      const set = (name, f) => { if (p.uniforms.has(name)) f(p.uniforms.get(name)); };
+      set('u_to_world', (l) => gl.uniformMatrix4fv(l, false, o.to_world));
+      set('u_to_object', (l) => gl.uniformMatrix4fv(l, false, o.to_object));
+      set('u_object', (l) => gl.uniform1i(l, k));
+      set('u_shape', (l) => gl.uniform1i(l, o.shape));
+      set('u_shape_params', (l) => gl.uniform4fv(l, o.shape_params));
+      set('u_shape_size', (l) => gl.uniform3fv(l, o.shape_size));
+      set('u_proxy_half', (l) => gl.uniform3fv(l, o.proxy_half));
+      const mesh = o.mesh >= 0 ? this.meshes[o.mesh] : this.proxyCube;
+      gl.bindVertexArray(mesh.vao);
+      gl.drawElements(gl.TRIANGLES, mesh.count, gl.UNSIGNED_INT, 0);
+    });
+    gl.bindVertexArray(null);
+  }
+
+  #drawTracing(camera, width, height) {
+    const gl = this.gl, p = this.#traceProgram(), s = this.settings;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, this.frame.fbo);
+    gl.viewport(0, 0, width, height);
+    gl.disable(gl.DEPTH_TEST);
+    gl.useProgram(p.program);
+    let unit = this.#bindScene(p);
+    ['u_g_position', 'u_g_normal', 'u_g_geometric', 'u_g_albedo'].forEach((name, k) => {
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(gl.TEXTURE_2D, this.gbuffer.textures[k]);
+      gl.uniform1i(p.uniforms.get(name), unit++);
+    });
+    this.#setSceneUniforms(p);
+    this.#setCameraUniforms(p, camera, width, height);
+    const set = (name, f) => { if (p.uniforms.has(name)) f(p.uniforms.get(name)); };
+    set('u_self_reflection', (l) => gl.uniform1i(l, s.selfReflection ? 1 : 0));
+    set('u_intersect_bvh', (l) => gl.uniform1i(l, 0));
+    set('u_max_depth', (l) => gl.uniform1i(l, s.depth));
+    set('u_min_weight', (l) => gl.uniform1f(l, s.minWeight));
+    set('u_max_rays', (l) => gl.uniform1i(l, s.maxRays));
+    gl.bindVertexArray(this.emptyVao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+
+  /**
+   * Draws `camera` ({position, target, up, fov in degrees}) into the default framebuffer's
+   * bottom-left width x height pixels.
+   */
+  render(camera, width, height) {
+    const gl = this.gl;
+    this.#targets(width, height);
+    this.#drawGbuffer(camera, width, height);
+    this.#drawTracing(camera, width, height);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.viewport(0, 0, width, height);
+    const p = this.presentProgram;
+    gl.useProgram(p.program);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, this.frame.textures[0]);
+    gl.uniform1i(p.uniforms.get('u_frame'), 0);
+    gl.bindVertexArray(this.emptyVao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+}

@@ -1,0 +1,148 @@
+// The web player in Debian's chromium (headless, SwiftShader) against gfield-view's headless
+// pictures of the same scenes, camera and size; its messages for broken exports; and
+// --export-web's refusals. Run by CTest (Web.Player) with GFIELD_VIEW, GFIELD and GFIELD_TMP set
+// (tests/CMakeLists.txt); `npm test` in web/ after `npm ci`.
+
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync, spawnSync } from 'node:child_process';
+import { cpSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { launch, openPlayer, serve } from '../tools/browser.mjs';
+
+const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const VIEW = process.env.GFIELD_VIEW ?? join(ROOT, 'build/runtime/gfield-view');
+const CLI = process.env.GFIELD ?? join(ROOT, 'build/preprocess/gfield');
+const TMP = join(process.env.GFIELD_TMP ?? join(ROOT, 'build/tests/tmp'), 'web');
+const ASSETS = join(TMP, 'assets');
+const SIZE = 160;
+const DEPTH = 4;
+
+// PSNR floors at depth 4, 160 x 160: the pictures differ where SwiftShader and llvmpipe round
+// apart (silhouettes, then every bounce after them); docs/web.md gives the measured figures.
+const SCENES = [
+  { name: 'mirror-torus-instances', meshes: ['spot', 'torus'], floor: 30.5 },
+  { name: 'textured-mirror', meshes: ['spot-painted', 'torus'], floor: 30.5 },
+  { name: 'davis-wyman-color-chart', meshes: ['spot'], floor: 30.5 },
+];
+
+let browser;
+
+function exportScene(name, out) {
+  execFileSync(VIEW, [join(ROOT, 'data/scenes', `${name}.json`), '--assets', ASSETS,
+                      '--size', `${SIZE}x${SIZE}`, '--export-web', out], { stdio: 'pipe' });
+}
+
+function psnr(a, b) {
+  const run = spawnSync('compare', ['-metric', 'PSNR', a, b, 'null:'], { encoding: 'utf8' });
+  const value = Number.parseFloat(run.stderr);
+  assert.ok(Number.isFinite(value) || run.stderr.startsWith('inf'), `compare: ${run.stderr}`);
+  return Number.isFinite(value) ? value : Infinity;
+}
+
+before(async () => {
+  mkdirSync(ASSETS, { recursive: true });
+  for (const mesh of new Set(SCENES.flatMap((s) => s.meshes)))
+    if (!existsSync(join(ASSETS, `${mesh}.gfield.exr`)))
+      execFileSync(CLI, ['build', join(ROOT, 'data/meshes', `${mesh}.obj`), '-o', join(ASSETS, mesh)],
+                   { stdio: 'pipe' });
+  browser = await launch();
+});
+
+after(async () => { await browser?.close(); });
+
+for (const scene of SCENES) {
+  test(`${scene.name}: the browser's field picture is the viewer's`, async () => {
+    const out = join(TMP, scene.name);
+    exportScene(scene.name, out);
+    const reference = join(TMP, `${scene.name}-viewer.png`);
+    execFileSync(VIEW, [join(ROOT, 'data/scenes', `${scene.name}.json`), '--assets', ASSETS,
+                        '--headless', '--size', `${SIZE}x${SIZE}`, '--depth', `${DEPTH}`,
+                        '-o', reference], { stdio: 'pipe' });
+    const server = await serve(out);
+    try {
+      const page = await openPlayer(browser, `${server.url}index.html?ui=0&depth=${DEPTH}`, SIZE, SIZE);
+      assert.equal(page.title, 'ready', page.text);
+      const shot = join(TMP, `${scene.name}-browser.png`);
+      writeFileSync(shot, page.png);
+      const db = psnr(shot, reference);
+      console.log(`${scene.name}: ${db.toFixed(2)} dB against gfield-view, first frame after ` +
+                  `${page.seconds.toFixed(2)} s`);
+      assert.ok(db >= scene.floor, `${db} dB < ${scene.floor} dB`);
+    } finally {
+      await server.close();
+    }
+  });
+}
+
+// A broken copy of the mirror-torus export: `damage(folder)` breaks it; the page must say
+// `expected` (a regular expression) in its text and its title.
+const BROKEN = [
+  ['a truncated scene.bin.gz', (dir) => {
+    const bin = readFileSync(join(dir, 'scene.bin.gz'));
+    writeFileSync(join(dir, 'scene.bin.gz'), bin.subarray(0, bin.length >> 1));
+  }, /scene\.bin\.gz: (damaged or truncated|holds \d+ bytes)/],
+  ['another layout version', (dir) => {
+    const manifest = JSON.parse(readFileSync(join(dir, 'scene.json'), 'utf8'));
+    manifest.version = 99;
+    writeFileSync(join(dir, 'scene.json'), JSON.stringify(manifest));
+  }, /scene\.json: layout version 99; this player reads version 1/],
+  ['no scene.json', (dir) => rmSync(join(dir, 'scene.json')), /scene\.json: cannot be fetched \(HTTP 404\)/],
+  ['a damaged shader', (dir) => writeFileSync(join(dir, 'shaders/field_trace.frag'), '#version 300 es\nvoid main( {}\n'),
+   /shaders\/field_trace\.frag: does not compile/],
+];
+
+test('a broken export is named in the page, not drawn blank', async () => {
+  const good = join(TMP, 'mirror-torus-instances');
+  if (!existsSync(join(good, 'scene.json'))) exportScene('mirror-torus-instances', good);
+  for (const [what, damage, expected] of BROKEN) {
+    const dir = join(TMP, 'broken');
+    rmSync(dir, { recursive: true, force: true });
+    cpSync(good, dir, { recursive: true });
+    damage(dir);
+    const server = await serve(dir);
+    try {
+      const page = await openPlayer(browser, `${server.url}index.html?ui=0`, SIZE, SIZE);
+      assert.match(page.title, /^error: /, what);
+      assert.match(page.title, expected, what);
+      assert.match(page.text, expected, what);
+    } finally {
+      await server.close();
+    }
+  }
+});
+
+test('a bad query is named in the page', async () => {
+  const dir = join(TMP, 'mirror-torus-instances');
+  if (!existsSync(join(dir, 'scene.json'))) exportScene('mirror-torus-instances', dir);
+  const server = await serve(dir);
+  try {
+    for (const [query, expected] of [['size=12', /size=12: expected WxH/],
+                                     ['mode=exact', /mode=exact: expected nearest, linear or refined/],
+                                     ['depth=-1', /depth=-1: expected 0\.\.64/]]) {
+      const page = await openPlayer(browser, `${server.url}index.html?ui=0&${query}`, SIZE, SIZE);
+      assert.match(page.title, expected, query);
+    }
+  } finally {
+    await server.close();
+  }
+});
+
+test('--export-web refuses a folder that is not an export, and a scene without its assets', () => {
+  const taken = join(TMP, 'taken');
+  rmSync(taken, { recursive: true, force: true });
+  mkdirSync(taken);
+  writeFileSync(join(taken, 'notes.txt'), 'mine');
+  const scene = join(ROOT, 'data/scenes/mirror-torus-instances.json');
+  let run = spawnSync(VIEW, [scene, '--assets', ASSETS, '--export-web', taken], { encoding: 'utf8' });
+  assert.equal(run.status, 2);
+  assert.match(run.stderr, /^gfield-view: .*taken: exists and is not an earlier web export; choose another folder\n$/);
+  assert.equal(readFileSync(join(taken, 'notes.txt'), 'utf8'), 'mine');
+  const fresh = join(TMP, 'no-assets');
+  rmSync(fresh, { recursive: true, force: true });
+  run = spawnSync(VIEW, [scene, '--assets', join(TMP, 'empty'), '--export-web', fresh], { encoding: 'utf8' });
+  assert.equal(run.status, 2);
+  assert.equal(run.stderr.split('\n').length, 2, run.stderr);
+  assert.ok(!existsSync(fresh), 'no folder after a failed export');
+});
