@@ -23,6 +23,10 @@ class GpuBvhs {
   void build(std::vector<GpuAsset>& assets);
   /// Binds the three buffers to their contract slots (empty buffers before build()).
   void bind() const;
+  /// The three buffers (BUFFER_BVH_NODES, BUFFER_BVH_TRIANGLES, BUFFER_BVH_SHADING).
+  GLuint nodes() const { return nodes_.id(); }
+  GLuint triangles() const { return triangles_.id(); }
+  GLuint shading() const { return shading_.id(); }
   /// GPU bytes of the three buffers.
   size_t bytes() const { return bytes_; }
   /// Wall time of the last build (building and packing; the uploads included).

@@ -80,21 +80,24 @@ json add_texture(Blob& blob, GLuint texture, GLenum format, GLenum type, int tex
   return t;
 }
 
-// The fields' line words (BUFFER_FIELD_LINES) as an R32UI texture of rows of WEB_TEXEL_ROW.
-json add_words(Blob& blob, GLuint buffer, std::string& error) {
+// A storage buffer as a 2D texture of rows of WEB_TEXEL_ROW texels of `texel_bytes`, the last
+// row padded with zeros: the fields' line words (BUFFER_FIELD_LINES, r32ui) and the BVHs'
+// buffers (rgba32f).
+json add_rows(Blob& blob, GLuint buffer, int texel_bytes, const char* web_format,
+              const std::string& what, std::string& error) {
   std::vector<uint8_t> bytes = read_buffer(buffer);
-  const size_t row = size_t(gpu::WEB_TEXEL_ROW) * 4;
+  const size_t row = size_t(gpu::WEB_TEXEL_ROW) * size_t(texel_bytes);
   const size_t rows = std::max<size_t>(1, (bytes.size() + row - 1) / row);
   bytes.resize(rows * row, 0);
   if (rows > size_t(kWebMaxTextureSize))
-    error = "the fields' line tables need " + std::to_string(rows) + " rows of " +
-            std::to_string(gpu::WEB_TEXEL_ROW) + " words, beyond the web player's " +
+    error = what + " need " + std::to_string(rows) + " rows of " +
+            std::to_string(gpu::WEB_TEXEL_ROW) + " texels, beyond the web player's " +
             std::to_string(kWebMaxTextureSize);
   json t = blob.add(bytes.data(), bytes.size());
   t["width"] = gpu::WEB_TEXEL_ROW;
   t["height"] = rows;
   t["layers"] = 1;
-  t["format"] = "r32ui";
+  t["format"] = web_format;
   return t;
 }
 
@@ -172,7 +175,11 @@ bool add_gpu_data(const GpuScene& gpu, Blob& blob, json& manifest, std::string& 
                                 "the geometry images' normals", error);
   t["fields"] = add_texture(blob, a.fields(), GL_RG, GL_UNSIGNED_BYTE, 2, "rg8",
                             "the fields' nearest-hit tables", error);
-  t["field_words"] = add_words(blob, a.field_lines(), error);
+  t["field_words"] = add_rows(blob, a.field_lines(), 4, "r32ui", "the fields' line tables", error);
+  t["bvh_nodes"] = add_rows(blob, a.bvhs().nodes(), 16, "rgba32f", "the BVHs' nodes", error);
+  t["bvh_triangles"] =
+      add_rows(blob, a.bvhs().triangles(), 16, "rgba32f", "the BVHs' triangles", error);
+  t["bvh_shading"] = add_rows(blob, a.bvhs().shading(), 16, "rgba32f", "the BVHs' shading", error);
   t["gi_albedo"] = add_texture(blob, a.albedo(), GL_RGBA, GL_HALF_FLOAT, 8, "rgba16f",
                                "the geometry images' albedo", error);
   t["mesh_textures"] = add_texture(blob, a.mesh_textures(), GL_RGBA, GL_HALF_FLOAT, 8, "rgba16f",
@@ -308,6 +315,7 @@ int run_export_web(const Scene& scene, const fs::path& out, const WebExportOptio
   needs.fields = true;
   needs.field_bits = 8;
   needs.source_meshes = true;
+  needs.bvhs = true;  // the page's BVH mode
   if (!gpu.load(scene, error) || !gpu.require(needs, error) ||
       !export_web(gpu, out, options, error))
     return fail(error, 2);

@@ -8,7 +8,8 @@
 //   - scene.bin.gz: one gzip stream of the GPU scene's own bytes, read back from the runtime's
 //     buffers and textures (so the browser draws exactly what gfield-view draws): the objects'
 //     and lights' std140 blocks, the geometry images, fields (8 bits), their line words, albedo,
-//     the meshes' own textures, the environment, the rasterised meshes and the proxy cube;
+//     the meshes' own textures, the environment, the BVHs (the page's BVH mode), the rasterised
+//     meshes and the proxy cube;
 //   - shaders/: the stages the player runs, in GLSL ES 3.00 (runtime/glsl_es.hpp).
 // The folder appears whole or not at all (written beside DIR, then renamed; an earlier export
 // in DIR is replaced).
@@ -32,16 +33,16 @@ struct WebExportOptions {
 };
 
 /// Writes the web folder `out` for `gpu`, a loaded GPU scene whose assets hold images, 8-bit
-/// fields and source meshes for every mesh (a current GL context). False with a one-line
+/// fields, source meshes and BVHs for every mesh (a current GL context). False with a one-line
 /// "FILE: problem" when the scene exceeds what WebGL2 holds (objects, lights, texture sizes),
 /// a file cannot be read or written, or `out` exists and is not an earlier export; then
 /// nothing is left behind.
 bool export_web(const GpuScene& gpu, const std::filesystem::path& out,
                 const WebExportOptions& options, std::string& error);
 
-/// gfield-view SCENE --export-web DIR: a headless context, the scene's images, 8-bit fields and
-/// source meshes loaded, export_web. Returns the exit code: 0; 2 with a one-line message on
-/// stderr for bad input; kExitNoOpenGL.
+/// gfield-view SCENE --export-web DIR: a headless context, the scene's images, 8-bit fields,
+/// source meshes and BVHs loaded, export_web. Returns the exit code: 0; 2 with a one-line message
+/// on stderr for bad input; kExitNoOpenGL.
 int run_export_web(const Scene& scene, const std::filesystem::path& out,
                    const WebExportOptions& options);
 

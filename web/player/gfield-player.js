@@ -7,6 +7,9 @@
 /** The layout version this player reads (scene.json "version"; runtime/web_export.hpp). */
 export const WEB_SCENE_VERSION = 1;
 
+/** How rays meet meshes: a geometry-field lookup, or gfield's BVH of the mesh (exact). */
+export const METHODS = ['field', 'bvh'];
+
 /** Lookup modes of the field (the contract's GF_MODE_*). */
 export const LOOKUP_MODES = { nearest: 0, linear: 1, refined: 2 };
 
@@ -16,6 +19,8 @@ const MAX_OBJECTS = 48;
 const MAX_LIGHTS = 16;
 const OBJECT_BYTES = 320;
 const LIGHT_BYTES = 48;
+// Textures of rows of WEB_TEXEL_ROW texels (2D; the others are 2D arrays).
+const ROW_TEXTURES = ['field_words', 'bvh_nodes', 'bvh_triangles', 'bvh_shading'];
 
 /** An error the page shows as it is: one line naming the file and what is wrong. */
 export class PlayerError extends Error {}
@@ -137,7 +142,8 @@ export class FieldRenderer {
     this.gl = gl;
     this.manifest = scene.manifest;
     this.shaders = scene.shaders;
-    this.settings = { depth: 10, mode: 'refined', selfReflection: true, minWeight: 0.005, maxRays: 24 };
+    this.settings = { method: 'field', depth: 10, mode: 'refined', selfReflection: true,
+                      minWeight: 0.005, maxRays: 24 };
     if (!gl.getExtension('EXT_color_buffer_float'))
       throw new PlayerError('this browser cannot render to float textures (EXT_color_buffer_float)');
     gl.getExtension('OES_texture_float_linear');
@@ -159,7 +165,7 @@ export class FieldRenderer {
                               `browser's textures stop at ${limit}`);
       const [internal, format, type, View, channels] = textureFormat(gl, t.format);
       const data = new View(bytes, t.offset, t.width * t.height * t.layers * channels);
-      const array = name !== 'field_words';
+      const array = !ROW_TEXTURES.includes(name);
       const target = array ? gl.TEXTURE_2D_ARRAY : gl.TEXTURE_2D;
       const texture = gl.createTexture();
       gl.bindTexture(target, texture);
@@ -251,10 +257,16 @@ export class FieldRenderer {
   #traceProgram() {
     const mode = LOOKUP_MODES[this.settings.mode];
     if (mode === undefined) throw new PlayerError(`mode=${this.settings.mode}: not a lookup mode`);
-    if (!this.tracePrograms.has(mode))
-      this.tracePrograms.set(mode, this.#program('fullscreen.vert', 'field_trace.frag',
-          `#define GF_TRACE_MODE ${mode}\n#define GF_FIELD_MESHES 1\n#define GF_BVH_MESHES 0\n`));
-    return this.tracePrograms.get(mode);
+    if (!METHODS.includes(this.settings.method))
+      throw new PlayerError(`method=${this.settings.method}: expected field or bvh`);
+    // As gfield-view's field method builds its programs (--intersect field or bvh).
+    const bvh = this.settings.method === 'bvh';
+    const key = `${this.settings.method} ${mode}`;
+    if (!this.tracePrograms.has(key))
+      this.tracePrograms.set(key, this.#program('fullscreen.vert', 'field_trace.frag',
+          `#define GF_TRACE_MODE ${mode}\n#define GF_FIELD_MESHES ${bvh ? 0 : 1}\n` +
+          `#define GF_BVH_MESHES ${bvh ? 1 : 0}\n`));
+    return this.tracePrograms.get(key);
   }
 
   // Render targets of width x height: the G-buffer (4 RGBA32F + depth) and the frame (colour
@@ -299,7 +311,8 @@ export class FieldRenderer {
       u_gi_positions: this.textures.gi_positions, u_gi_normals: this.textures.gi_normals,
       u_fields: this.textures.fields, u_field_words: this.textures.field_words,
       u_gi_albedo: this.textures.gi_albedo, u_mesh_textures: this.textures.mesh_textures,
-      u_env_images: this.textures.environment,
+      u_env_images: this.textures.environment, u_bvh_nodes: this.textures.bvh_nodes,
+      u_bvh_triangles: this.textures.bvh_triangles, u_bvh_shading: this.textures.bvh_shading,
     };
     let unit = 0;
     for (const [name, t] of Object.entries(samplers)) {
@@ -395,7 +408,7 @@ export class FieldRenderer {
     this.#setCameraUniforms(p, camera, width, height);
     const set = (name, f) => { if (p.uniforms.has(name)) f(p.uniforms.get(name)); };
     set('u_self_reflection', (l) => gl.uniform1i(l, s.selfReflection ? 1 : 0));
-    set('u_intersect_bvh', (l) => gl.uniform1i(l, 0));
+    set('u_intersect_bvh', (l) => gl.uniform1i(l, s.method === 'bvh' ? 1 : 0));
     set('u_max_depth', (l) => gl.uniform1i(l, s.depth));
     set('u_min_weight', (l) => gl.uniform1f(l, s.minWeight));
     set('u_max_rays', (l) => gl.uniform1i(l, s.maxRays));

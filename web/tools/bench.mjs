@@ -1,0 +1,62 @@
+// The web benchmark (not a test): ms per frame of the player's two methods, the geometry field
+// and gfield's BVH (exact, the same shaders but for the mesh intersection), on exported scenes in
+// Debian's chromium (SwiftShader here), same page, same run. Prints a Markdown table.
+//
+//   node tools/bench.mjs [--size WxH] [--depth N] [--frames N] EXPORT_DIR...
+//
+// Each row: the median of N frames drawn one after another after a first one (shader
+// compilation), min-max in brackets, and field / BVH.
+
+import { launch, serve } from './browser.mjs';
+
+const args = process.argv.slice(2);
+const option = (name, fallback) => {
+  const at = args.indexOf(name);
+  return at < 0 ? fallback : args.splice(at, 2)[1];
+};
+const size = option('--size', '256x256');
+const depth = option('--depth', '4');
+const frames = Number(option('--frames', '5'));
+const [width, height] = size.split('x').map(Number);
+if (args.length === 0 || !(width > 0 && height > 0) || !(frames > 0)) {
+  console.error('usage: node tools/bench.mjs [--size WxH] [--depth N] [--frames N] EXPORT_DIR...');
+  process.exit(2);
+}
+
+const browser = await launch();
+const median = (v) => [...v].sort((a, b) => a - b)[v.length >> 1];
+
+// ms per frame of `method` on the export served at `url`: { median, min, max, renderer }.
+async function time(url, method) {
+  const page = await browser.newPage();
+  await page.setViewport({ width, height });
+  await page.goto(`${url}index.html?ui=0&size=${size}&depth=${depth}&method=${method}`);
+  await page.waitForFunction(() => document.title === 'ready' || document.title.startsWith('error'),
+                             { timeout: 300000 });
+  const title = await page.title();
+  if (title !== 'ready') throw new Error(`${url}: ${title}`);
+  const ms = await page.evaluate((n) => Array.from({ length: n }, () => window.gfield.frame()), frames);
+  const renderer = await page.evaluate(() => window.gfield.rendererName);
+  await page.close();
+  return { median: median(ms), min: Math.min(...ms), max: Math.max(...ms), renderer };
+}
+
+const rows = [];
+let renderer = '';
+for (const dir of args) {
+  const server = await serve(dir);
+  try {
+    const field = await time(server.url, 'field');
+    const bvh = await time(server.url, 'bvh');
+    renderer = field.renderer;
+    const cell = (t) => `${t.median.toFixed(1)} (${t.min.toFixed(1)}-${t.max.toFixed(1)})`;
+    rows.push(`| ${dir.replace(/\/$/, '').split('/').pop()} | ${cell(field)} | ${cell(bvh)} | ` +
+              `${(field.median / bvh.median).toFixed(2)} |`);
+  } finally {
+    await server.close();
+  }
+}
+await browser.close();
+console.log(`ms per frame, ${size}, depth ${depth}, refined lookup, median of ${frames} (min-max); ${renderer}\n`);
+console.log('| export | field | BVH | field / BVH |\n|---|---|---|---|');
+console.log(rows.join('\n'));
