@@ -436,3 +436,28 @@ export class FieldRenderer {
     gl.drawArrays(gl.TRIANGLES, 0, 3);
   }
 }
+
+/**
+ * The camera `render` takes, from a three.js PerspectiveCamera (its world matrix and vertical
+ * fov): gfield-player.js itself needs no three.js.
+ */
+export function cameraFromThree(camera) {
+  camera.updateMatrixWorld();
+  const m = camera.matrixWorld.elements;  // column-major: x, y, z axes, then the position
+  const position = [m[12], m[13], m[14]];
+  return { position, target: [m[12] - m[8], m[13] - m[9], m[14] - m[10]], up: [m[4], m[5], m[6]],
+           fov: camera.fov };
+}
+
+/**
+ * Draws `field` (a FieldRenderer made on `renderer.getContext()`) as three.js's `camera` sees it
+ * into the whole drawing buffer of `renderer` (a THREE.WebGLRenderer), resetting three.js's idea
+ * of the GL state before and after. Draw three.js objects over it with renderer.autoClear =
+ * false.
+ */
+export function drawWithThree(field, renderer, camera) {
+  const size = renderer.getDrawingBufferSize(new camera.position.constructor());
+  renderer.resetState();
+  field.render(cameraFromThree(camera), size.x, size.y);
+  renderer.resetState();
+}

@@ -170,6 +170,28 @@ test('the panel and the orbit camera redraw the frame', async () => {
   }
 });
 
+test('the three.js example draws the player\'s frame on three.js\'s context, its box over it', async () => {
+  const dir = join(TMP, 'mirror-torus-small');
+  if (!existsSync(join(dir, 'scene.json')))
+    exportScene('mirror-torus-instances', dir, ['--size', `${SIZE}x${SIZE}`]);
+  const server = await serve(join(ROOT, 'web'), { scene: dir });
+  try {
+    const shots = {};
+    for (const [name, url] of [['player', `scene/index.html?ui=0&depth=4`],
+                               ['three', 'examples/three.html?scene=/scene/&overlay=0'],
+                               ['overlay', 'examples/three.html?scene=/scene/']]) {
+      const page = await openPlayer(browser, server.url + url, SIZE, SIZE);
+      assert.equal(page.title, 'ready', `${name}: ${page.text}`);
+      shots[name] = join(TMP, `three-${name}.png`);
+      writeFileSync(shots[name], page.png);
+    }
+    assert.ok(psnr(shots.three, shots.player) >= 50, 'the same frame as the player\'s');
+    assert.ok(psnr(shots.overlay, shots.three) < 50, 'three.js drew its box over it');
+  } finally {
+    await server.close();
+  }
+});
+
 test('--export-web refuses a folder that is not an export, and a scene without its assets', () => {
   const taken = join(TMP, 'taken');
   rmSync(taken, { recursive: true, force: true });

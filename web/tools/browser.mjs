@@ -10,12 +10,18 @@ import puppeteer from 'puppeteer-core';
 const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.json': 'application/json',
                 '.gz': 'application/gzip' };
 
-/** Serves folder `root` on 127.0.0.1; resolves to { url, close() }. */
-export function serve(root) {
+/**
+ * Serves folder `root` on 127.0.0.1, and folder mounts[PREFIX] under /PREFIX/; resolves to
+ * { url, close() }.
+ */
+export function serve(root, mounts = {}) {
   const server = createServer(async (request, response) => {
-    const path = normalize(decodeURIComponent(new URL(request.url, 'http://x').pathname));
+    let path = normalize(decodeURIComponent(new URL(request.url, 'http://x').pathname));
+    let base = root;
+    for (const [prefix, folder] of Object.entries(mounts))
+      if (path.startsWith(`/${prefix}/`)) [base, path] = [folder, path.slice(prefix.length + 1)];
     try {
-      const body = await readFile(join(root, path.endsWith('/') ? `${path}index.html` : path));
+      const body = await readFile(join(base, path.endsWith('/') ? `${path}index.html` : path));
       response.writeHead(200, { 'content-type': TYPES[extname(path)] ?? 'text/plain' });
       response.end(body);
     } catch {
