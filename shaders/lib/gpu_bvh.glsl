@@ -17,7 +17,9 @@ vec4 gb_texel(highp sampler2D t, int j) {
 }
 vec4 gb_node_lo4(int i) { return gb_texel(u_bvh_nodes, 2 * i); }
 vec4 gb_node_hi4(int i) { return gb_texel(u_bvh_nodes, 2 * i + 1); }
-vec4 gb_triangle(int s, int k) { return gb_texel(u_bvh_triangles, 3 * s + k); }
+vec4 gb_triangle_p0w(int s) { return gb_texel(u_bvh_triangles, 3 * s); }
+vec3 gb_triangle_e1(int s) { return gb_texel(u_bvh_triangles, 3 * s + 1).xyz; }
+vec3 gb_triangle_e2(int s) { return gb_texel(u_bvh_triangles, 3 * s + 2).xyz; }
 GpuBvhShading gb_shading(int s) {
   GpuBvhShading h;
   h.normal_u0 = gb_texel(u_bvh_shading, 6 * s);
@@ -38,9 +40,9 @@ layout(std430, binding = BUFFER_BVH_SHADING) readonly buffer BvhShading {
 };
 vec4 gb_node_lo4(int i) { return bvh_nodes[i].lo; }
 vec4 gb_node_hi4(int i) { return bvh_nodes[i].hi; }
-vec4 gb_triangle(int s, int k) {
-  return k == 0 ? bvh_triangles[s].p0 : k == 1 ? bvh_triangles[s].e1 : bvh_triangles[s].e2;
-}
+vec4 gb_triangle_p0w(int s) { return bvh_triangles[s].p0; }
+vec3 gb_triangle_e1(int s) { return bvh_triangles[s].e1.xyz; }
+vec3 gb_triangle_e2(int s) { return bvh_triangles[s].e2.xyz; }
 GpuBvhShading gb_shading(int s) { return bvh_shading[s]; }
 #endif
 
@@ -48,9 +50,7 @@ vec3 gb_node_lo(int i) { return gb_node_lo4(i).xyz; }
 vec3 gb_node_hi(int i) { return gb_node_hi4(i).xyz; }
 int gb_node_first(int i) { return floatBitsToInt(gb_node_lo4(i).w); }
 int gb_node_count(int i) { return floatBitsToInt(gb_node_hi4(i).w); }
-vec3 gb_triangle_p0(int s) { return gb_triangle(s, 0).xyz; }
-vec3 gb_triangle_e1(int s) { return gb_triangle(s, 1).xyz; }
-vec3 gb_triangle_e2(int s) { return gb_triangle(s, 2).xyz; }
+vec3 gb_triangle_p0(int s) { return gb_triangle_p0w(s).xyz; }
 
 #include "lib/bvh_trace.glsl"
 
@@ -82,7 +82,7 @@ BvhMeshHit bvh_mesh_hit(int root, vec3 o, vec3 d, float t_min, float t_max) {
   m.uv = w.x * vec2(s.normal_u0.w, s.base_v0.w) + w.y * vec2(s.normal_u1.w, s.base_v1.w) +
          w.z * vec2(s.normal_u2.w, s.base_v2.w);
   vec3 base = w.x * s.base_v0.rgb + w.y * s.base_v1.rgb + w.z * s.base_v2.rgb;
-  float layer = gb_triangle(h.slot, 0).w;
+  float layer = gb_triangle_p0w(h.slot).w;
   m.base_color = layer < -0.5f ? base
                                : base * textureLod(u_mesh_textures, vec3(m.uv, layer), 0.0f).rgb;
   return m;
