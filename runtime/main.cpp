@@ -180,7 +180,10 @@ int main(int argc, char** argv) {
     web.scene_name = std::filesystem::path(a.scene_file).stem().string();
     web.width = a.headless_options.width;
     web.height = a.headless_options.height;
-    return run_export_web(scene, a.export_web, web);
+    const int code = run_export_web(scene, a.export_web, web, error);
+    if (code != 0)
+      fail(error);
+    return code;
   }
   if (a.headless)
     return run_headless(session, scene, a.shader_dir, a.headless_options);

@@ -1,7 +1,6 @@
 #include "runtime/web_export.hpp"
 
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <system_error>
@@ -12,7 +11,6 @@
 #include <nlohmann/json.hpp>
 
 #include "gfield/gpu_contract.hpp"
-#include "gfield/printable.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/glsl_es.hpp"
 
@@ -54,6 +52,17 @@ std::vector<uint8_t> read_buffer(GLuint buffer) {
   return bytes;
 }
 
+// A texture's bytes into `blob`, and its entry in scene.json's "textures".
+json texture_json(Blob& blob, const std::vector<uint8_t>& bytes, int width, int height, int layers,
+                  const char* web_format) {
+  json t = blob.add(bytes.data(), bytes.size());
+  t["width"] = width;
+  t["height"] = height;
+  t["layers"] = layers;
+  t["format"] = web_format;
+  return t;
+}
+
 // A 2D array texture read back whole as `format`/`type` (texel_bytes each); a texture never
 // made becomes one zero texel.
 json add_texture(Blob& blob, GLuint texture, GLenum format, GLenum type, int texel_bytes,
@@ -72,12 +81,7 @@ json add_texture(Blob& blob, GLuint texture, GLenum format, GLenum type, int tex
             std::to_string(layers) + " texels, beyond the web player's " +
             std::to_string(kWebMaxTextureSize) + " x " + std::to_string(kWebMaxTextureSize) +
             " x " + std::to_string(kWebMaxLayers);
-  json t = blob.add(bytes.data(), bytes.size());
-  t["width"] = w;
-  t["height"] = h;
-  t["layers"] = layers;
-  t["format"] = web_format;
-  return t;
+  return texture_json(blob, bytes, w, h, layers, web_format);
 }
 
 // A storage buffer as a 2D texture of rows of WEB_TEXEL_ROW texels of `texel_bytes`, the last
@@ -93,12 +97,7 @@ json add_rows(Blob& blob, GLuint buffer, int texel_bytes, const char* web_format
     error = what + " need " + std::to_string(rows) + " rows of " +
             std::to_string(gpu::WEB_TEXEL_ROW) + " texels, beyond the web player's " +
             std::to_string(kWebMaxTextureSize);
-  json t = blob.add(bytes.data(), bytes.size());
-  t["width"] = gpu::WEB_TEXEL_ROW;
-  t["height"] = rows;
-  t["layers"] = 1;
-  t["format"] = web_format;
-  return t;
+  return texture_json(blob, bytes, gpu::WEB_TEXEL_ROW, int(rows), 1, web_format);
 }
 
 json add_mesh(Blob& blob, const GpuMesh& mesh) {
@@ -301,25 +300,20 @@ bool export_web(const GpuScene& gpu, const fs::path& out, const WebExportOptions
   return true;
 }
 
-int run_export_web(const Scene& scene, const fs::path& out, const WebExportOptions& options) {
-  const auto fail = [](const std::string& message, int code) {
-    std::fprintf(stderr, "gfield-view: %s\n", printable(message).c_str());
-    return code;
-  };
-  std::string error;
+int run_export_web(const Scene& scene, const fs::path& out, const WebExportOptions& options,
+                   std::string& error) {
   auto context = GlContext::create_headless(error);
   if (!context)
-    return fail(error, kExitNoOpenGL);
+    return kExitNoOpenGL;
   GpuScene gpu;
   AssetNeeds needs;
   needs.fields = true;
   needs.field_bits = 8;
   needs.source_meshes = true;
   needs.bvhs = true;  // the page's BVH mode
-  if (!gpu.load(scene, error) || !gpu.require(needs, error) ||
-      !export_web(gpu, out, options, error))
-    return fail(error, 2);
-  return 0;
+  const bool ok =
+      gpu.load(scene, error) && gpu.require(needs, error) && export_web(gpu, out, options, error);
+  return ok ? 0 : 2;
 }
 
 }  // namespace gfield

@@ -41,9 +41,9 @@ bool export_web(const GpuScene& gpu, const std::filesystem::path& out,
                 const WebExportOptions& options, std::string& error);
 
 /// gfield-view SCENE --export-web DIR: a headless context, the scene's images, 8-bit fields,
-/// source meshes and BVHs loaded, export_web. Returns the exit code: 0; 2 with a one-line message
-/// on stderr for bad input; kExitNoOpenGL.
+/// source meshes and BVHs loaded, export_web. Returns the exit code: 0; 2 for bad input or
+/// kExitNoOpenGL, with a one-line `error`.
 int run_export_web(const Scene& scene, const std::filesystem::path& out,
-                   const WebExportOptions& options);
+                   const WebExportOptions& options, std::string& error);
 
 }  // namespace gfield

@@ -35,6 +35,15 @@ function exportScene(name, out, size = []) {
                       '--export-web', out], { stdio: 'pipe' });
 }
 
+// mirror-torus-instances exported at SIZE x SIZE, once per run: the folder.
+const SMALL = join(TMP, 'mirror-torus-small');
+let smallExported = false;
+function smallExport() {
+  if (!smallExported) exportScene('mirror-torus-instances', SMALL, ['--size', `${SIZE}x${SIZE}`]);
+  smallExported = true;
+  return SMALL;
+}
+
 function psnr(a, b) {
   const run = spawnSync('compare', ['-metric', 'PSNR', a, b, 'null:'], { encoding: 'utf8' });
   const value = Number.parseFloat(run.stderr);
@@ -99,8 +108,7 @@ const BROKEN = [
 ];
 
 test('a broken export is named in the page, not drawn blank', async () => {
-  const good = join(TMP, 'mirror-torus-small');
-  exportScene('mirror-torus-instances', good, ['--size', `${SIZE}x${SIZE}`]);
+  const good = smallExport();
   for (const [what, damage, expected] of BROKEN) {
     const dir = join(TMP, 'broken');
     rmSync(dir, { recursive: true, force: true });
@@ -119,9 +127,7 @@ test('a broken export is named in the page, not drawn blank', async () => {
 });
 
 test('a bad query is named in the page', async () => {
-  const dir = join(TMP, 'mirror-torus-small');
-  if (!existsSync(join(dir, 'scene.json')))
-    exportScene('mirror-torus-instances', dir, ['--size', `${SIZE}x${SIZE}`]);
+  const dir = smallExport();
   const server = await serve(dir);
   try {
     for (const [query, expected] of [['size=12', /size=12: expected WxH/],
@@ -137,9 +143,7 @@ test('a bad query is named in the page', async () => {
 });
 
 test('the panel and the orbit camera redraw the frame', async () => {
-  const dir = join(TMP, 'mirror-torus-small');
-  if (!existsSync(join(dir, 'scene.json')))
-    exportScene('mirror-torus-instances', dir, ['--size', `${SIZE}x${SIZE}`]);
+  const dir = smallExport();
   const server = await serve(dir);
   const page = await browser.newPage();
   try {
@@ -171,9 +175,7 @@ test('the panel and the orbit camera redraw the frame', async () => {
 });
 
 test('the three.js example draws the player\'s frame on three.js\'s context, its box over it', async () => {
-  const dir = join(TMP, 'mirror-torus-small');
-  if (!existsSync(join(dir, 'scene.json')))
-    exportScene('mirror-torus-instances', dir, ['--size', `${SIZE}x${SIZE}`]);
+  const dir = smallExport();
   const server = await serve(join(ROOT, 'web'), { scene: dir });
   try {
     const shots = {};
