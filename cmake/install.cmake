@@ -2,6 +2,7 @@
 #   bin/gfield, bin/gfield-view
 #   share/gfield/shaders/   the GLSL files (gfield-view finds them at ../share/gfield/shaders)
 #   share/gfield/web/player/  the web player that gfield-view --export-web copies (beside shaders/)
+#   share/gfield/web/node_modules/  three.js's core and three-mesh-bvh for an export's vendor/
 #   share/gfield/scenes/    the example scenes; share/gfield/meshes/ the bundled meshes (listed
 #                           below, file by file); share/gfield/.gfield-root makes share/gfield
 #                           the example scenes' root (docs/scenes.md, "Confined paths")
@@ -14,8 +15,19 @@ set(GFIELD_INSTALL_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/gfield)
 
 install(DIRECTORY shaders/ DESTINATION ${GFIELD_INSTALL_SHADER_DIR}
   FILES_MATCHING PATTERN "*.glsl" PATTERN "*.vert" PATTERN "*.frag" PATTERN "*.comp")
-install(FILES web/player/index.html web/player/gfield-player.js
+install(FILES web/player/index.html web/player/gfield-player.js web/player/gfield-three-mesh-bvh.js
   DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/web/player)
+# The npm files an export's vendor/ holds (runtime/web_export.cpp, kVendorFiles: the page's
+# three-mesh-bvh method), where scripts/install-web-deps.sh put them before configuring; without
+# them exports offer the field and gfield's BVH alone.
+foreach(file three/build/three.core.js three/LICENSE three-mesh-bvh/build/index.module.js
+             three-mesh-bvh/LICENSE three-mesh-bvh/package.json)
+  if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/web/node_modules/${file})
+    get_filename_component(folder ${file} DIRECTORY)
+    install(FILES web/node_modules/${file}
+      DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/web/node_modules/${folder})
+  endif()
+endforeach()
 # The example scenes and bundled meshes (with the material libraries and textures of the
 # textured ones and their sources), named one by one: reports, assets and pictures that commands
 # leave beside them (gfield-view builds a glTF scene's assets beside it) are never installed.

@@ -177,6 +177,7 @@ int main(int argc, char** argv) {
     WebExportOptions web;
     web.shader_dir = a.shader_dir;
     web.player_dir = std::filesystem::path(a.shader_dir) / ".." / "web" / "player";
+    web.node_modules = std::filesystem::path(a.shader_dir) / ".." / "web" / "node_modules";
     web.scene_name = std::filesystem::path(a.scene_file).stem().string();
     web.width = a.headless_options.width;
     web.height = a.headless_options.height;

@@ -28,7 +28,21 @@ constexpr int kWebMaxLayers = 256;
 // The stages the player runs (web/player/gfield-player.js).
 const char* const kWebStages[] = {"fullscreen.vert", "gbuffer.vert", "gbuffer.frag",
                                   "field_trace.frag", "present.frag"};
-const char* const kPlayerFiles[] = {"index.html", "gfield-player.js"};
+const char* const kPlayerFiles[] = {"index.html", "gfield-player.js", "gfield-three-mesh-bvh.js"};
+
+// The player's three-mesh-bvh method (web/player/gfield-three-mesh-bvh.js) imports these npm
+// files, which the page's import map finds under vendor/: a file of node_modules and its name
+// there. three.core.js holds every class three-mesh-bvh imports from "three".
+struct VendorFile {
+  const char* from;
+  const char* to;
+};
+const VendorFile kVendorFiles[] = {
+    {"three/build/three.core.js", "three.core.js"},
+    {"three/LICENSE", "three.LICENSE"},
+    {"three-mesh-bvh/build/index.module.js", "three-mesh-bvh.js"},
+    {"three-mesh-bvh/LICENSE", "three-mesh-bvh.LICENSE"},
+};
 
 // scene.bin: blocks one after another, each at a multiple of 16 bytes (typed-array views).
 struct Blob {
@@ -100,13 +114,14 @@ json add_rows(Blob& blob, GLuint buffer, int texel_bytes, const char* web_format
   return texture_json(blob, bytes, gpu::WEB_TEXEL_ROW, int(rows), 1, web_format);
 }
 
-json add_mesh(Blob& blob, const GpuMesh& mesh) {
+json add_mesh(Blob& blob, const GpuMesh& mesh, int bvh_root) {
   const std::vector<uint8_t> vertices = read_buffer(mesh.vertices.id());
   const std::vector<uint8_t> indices = read_buffer(mesh.indices.id());
   return json{{"vertices", blob.add(vertices.data(), vertices.size())},
               {"indices", blob.add(indices.data(), indices.size())},
               {"index_count", mesh.index_count},
-              {"vertex_bytes", sizeof(GpuVertex)}};
+              {"vertex_bytes", sizeof(GpuVertex)},
+              {"bvh_root", bvh_root}};
 }
 
 template <typename M>
@@ -187,9 +202,9 @@ bool add_gpu_data(const GpuScene& gpu, Blob& blob, json& manifest, std::string& 
                                  "the environment", error);
   json meshes = json::array();
   for (const GpuAsset& asset : a.assets())
-    meshes.push_back(add_mesh(blob, asset.source));
+    meshes.push_back(add_mesh(blob, asset.source, asset.bvh_root));
   manifest["meshes"] = meshes;
-  manifest["proxy_cube"] = add_mesh(blob, gpu.proxy_cube());
+  manifest["proxy_cube"] = add_mesh(blob, gpu.proxy_cube(), -1);
   return error.empty();
 }
 
@@ -218,6 +233,38 @@ bool write_text(const fs::path& path, const std::string& text, std::string& erro
   return true;
 }
 
+// three-mesh-bvh's version in `node_modules` when every vendor file is there, else "".
+std::string vendor_version(const fs::path& node_modules) {
+  std::error_code ec;
+  for (const VendorFile& file : kVendorFiles)
+    if (!fs::is_regular_file(node_modules / file.from, ec))
+      return "";
+  std::ifstream in(node_modules / "three-mesh-bvh" / "package.json");
+  const json package = json::parse(in, nullptr, false);
+  return package.is_object() ? package.value("version", "") : "";
+}
+
+// The vendor files into dir/vendor, and scene.json's "peers" (three-mesh-bvh's version); none
+// when `node_modules` lacks them (the page then offers no three-mesh-bvh method).
+bool add_vendor(const fs::path& node_modules, const fs::path& dir, json& manifest,
+                std::string& error) {
+  manifest["peers"] = json::object();
+  const std::string version = vendor_version(node_modules);
+  if (version.empty())
+    return true;
+  std::error_code ec;
+  fs::create_directories(dir / "vendor", ec);
+  for (const VendorFile& file : kVendorFiles) {
+    fs::copy_file(node_modules / file.from, dir / "vendor" / file.to, ec);
+    if (ec) {
+      error = (node_modules / file.from).string() + ": cannot copy: " + ec.message();
+      return false;
+    }
+  }
+  manifest["peers"]["three-mesh-bvh"] = version;
+  return true;
+}
+
 // Everything of the export into the empty folder `dir`.
 bool write_folder(const GpuScene& gpu, const fs::path& dir, const WebExportOptions& options,
                   std::string& error) {
@@ -243,7 +290,8 @@ bool write_folder(const GpuScene& gpu, const fs::path& dir, const WebExportOptio
       return false;
     }
   }
-  return write_gzip(dir / "scene.bin.gz", blob.bytes, error) &&
+  return add_vendor(options.node_modules, dir, manifest, error) &&
+         write_gzip(dir / "scene.bin.gz", blob.bytes, error) &&
          write_text(dir / "scene.json", manifest.dump(1) + "\n", error);
 }
 

@@ -10,7 +10,9 @@
 //     and lights' std140 blocks, the geometry images, fields (8 bits), their line words, albedo,
 //     the meshes' own textures, the environment, the BVHs (the page's BVH mode), the rasterised
 //     meshes and the proxy cube;
-//   - shaders/: the stages the player runs, in GLSL ES 3.00 (runtime/glsl_es.hpp).
+//   - shaders/: the stages the player runs, in GLSL ES 3.00 (runtime/glsl_es.hpp);
+//   - vendor/: three.js's core and three-mesh-bvh, the page's three-mesh-bvh method, when
+//     web/node_modules holds them (scripts/install-web-deps.sh; scene.json "peers" says).
 // The folder appears whole or not at all (written beside DIR, then renamed; an earlier export
 // in DIR is replaced).
 
@@ -26,10 +28,11 @@ inline constexpr int kWebSceneVersion = 1;
 
 /// What the export writes besides the scene's own data.
 struct WebExportOptions {
-  std::filesystem::path shader_dir;  ///< the runtime's shaders/
-  std::filesystem::path player_dir;  ///< web/player: index.html, gfield-player.js
-  std::string scene_name;            ///< shown by the page ("mirror-torus-instances")
-  int width = 0, height = 0;         ///< the picture the page draws by default
+  std::filesystem::path shader_dir;    ///< the runtime's shaders/
+  std::filesystem::path player_dir;    ///< web/player: index.html and its modules
+  std::filesystem::path node_modules;  ///< web/node_modules: three, three-mesh-bvh (optional)
+  std::string scene_name;              ///< shown by the page ("mirror-torus-instances")
+  int width = 0, height = 0;           ///< the picture the page draws by default
 };
 
 /// Writes the web folder `out` for `gpu`, a loaded GPU scene whose assets hold images, 8-bit

@@ -64,7 +64,13 @@ expected=$(
     (cd core/include && find gfield -type f) | sed 's|^|include/|'
     (cd shaders && find . -type f \( -name '*.glsl' -o -name '*.vert' -o -name '*.frag' -o -name '*.comp' \)) |
       sed 's|^\./|share/gfield/shaders/|'
-    printf '%s\n' share/gfield/web/player/index.html share/gfield/web/player/gfield-player.js
+    printf '%s\n' share/gfield/web/player/index.html share/gfield/web/player/gfield-player.js \
+      share/gfield/web/player/gfield-three-mesh-bvh.js
+    # the vendor files of the three-mesh-bvh method, where the web package's modules are installed
+    if [ -f web/node_modules/three-mesh-bvh/package.json ]; then
+      printf 'share/gfield/web/node_modules/%s\n' three/build/three.core.js three/LICENSE \
+        three-mesh-bvh/build/index.module.js three-mesh-bvh/LICENSE three-mesh-bvh/package.json
+    fi
     cat "$shipped"
   } | sed 's|^|./usr/|' | sort
 )

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Installs the web package's npm modules (web/package-lock.json: puppeteer-core, which drives
-# Debian's chromium in the web player's test) into web/node_modules with `npm ci`, when they are
-# missing or older than the lock file. Idempotent; retries the registry three times.
+# Installs the web package's npm modules (web/package-lock.json: three and three-mesh-bvh, which
+# gfield-view --export-web copies into an export for the page's three-mesh-bvh method, and
+# puppeteer-core, which drives Debian's chromium in the web player's test) into web/node_modules
+# with `npm ci`, when they are missing or older than the lock file. Idempotent; retries the
+# registry three times.
 set -euo pipefail
 cd "$(dirname "$0")/../web"
 marker=node_modules/.gfield-installed

@@ -66,7 +66,17 @@ struct BvhMeshHit {
   vec3 base_color;
 };
 
+#if defined(GL_ES) && defined(GF_EXTERNAL_BVH)
+// A BVH of the web page's own in place of gfield's (the player's three-mesh-bvh method,
+// web/player/gfield-three-mesh-bvh.js, which appends this function's definition to the stage):
+// the hit of the mesh whose gfield BVH has root `root`, as bvh_mesh_hit gives it.
+BvhMeshHit external_bvh_hit(int root, vec3 o, vec3 d, float t_min, float t_max);
+#endif
+
 BvhMeshHit bvh_mesh_hit(int root, vec3 o, vec3 d, float t_min, float t_max) {
+#if defined(GL_ES) && defined(GF_EXTERNAL_BVH)
+  return external_bvh_hit(root, o, d, t_min, t_max);
+#else
   BvhMeshHit m;
   GbHit h = gb_trace(root, o, d, t_min, t_max);
   WORK_ADD(WORK_BVH_TRAVERSALS, 1);
@@ -86,4 +96,5 @@ BvhMeshHit bvh_mesh_hit(int root, vec3 o, vec3 d, float t_min, float t_max) {
   m.base_color = layer < -0.5f ? base
                                : base * textureLod(u_mesh_textures, vec3(m.uv, layer), 0.0f).rgb;
   return m;
+#endif
 }

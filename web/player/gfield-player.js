@@ -7,8 +7,11 @@
 /** The layout version this player reads (scene.json "version"; runtime/web_export.hpp). */
 export const WEB_SCENE_VERSION = 1;
 
-/** How rays meet meshes: a geometry-field lookup, or gfield's BVH of the mesh (exact). */
-export const METHODS = ['field', 'bvh'];
+/**
+ * How rays meet meshes: a geometry-field lookup, gfield's BVH of the mesh (exact), or
+ * three-mesh-bvh's (exact; set FieldRenderer.externalBvh first: gfield-three-mesh-bvh.js).
+ */
+export const METHODS = ['field', 'bvh', 'three-mesh-bvh'];
 
 /** Lookup modes of the field (the contract's GF_MODE_*). */
 export const LOOKUP_MODES = { nearest: 0, linear: 1, refined: 2 };
@@ -152,6 +155,8 @@ export class FieldRenderer {
     this.presentProgram = this.#program('fullscreen.vert', 'present.frag', '');
     this.tracePrograms = new Map();
     this.emptyVao = gl.createVertexArray();
+    // The three-mesh-bvh method's BVHs: { glsl, bind(gl, program, unit) } (ThreeMeshBvh).
+    this.externalBvh = null;
   }
 
   #upload(bytes) {
@@ -223,15 +228,17 @@ export class FieldRenderer {
     return { vao, count: mesh.index_count };
   }
 
-  // A program of two stages, `defines` after each stage's first line.
-  #program(vertex, fragment, defines) {
+  // A program of two stages, `defines` after each stage's first line, `appended` after the
+  // fragment stage.
+  #program(vertex, fragment, defines, appended = '') {
     const gl = this.gl;
     const program = gl.createProgram();
     for (const [stage, type] of [[vertex, gl.VERTEX_SHADER], [fragment, gl.FRAGMENT_SHADER]]) {
       const text = this.shaders[stage];
       const first = text.indexOf('\n') + 1;
       const shader = gl.createShader(type);
-      gl.shaderSource(shader, text.slice(0, first) + defines + text.slice(first));
+      const tail = type === gl.FRAGMENT_SHADER ? appended : '';
+      gl.shaderSource(shader, text.slice(0, first) + defines + text.slice(first) + tail);
       gl.compileShader(shader);
       if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS))
         throw new PlayerError(`shaders/${stage}: does not compile: ` +
@@ -257,15 +264,20 @@ export class FieldRenderer {
   #traceProgram() {
     const mode = LOOKUP_MODES[this.settings.mode];
     if (mode === undefined) throw new PlayerError(`mode=${this.settings.mode}: not a lookup mode`);
-    if (!METHODS.includes(this.settings.method))
-      throw new PlayerError(`method=${this.settings.method}: expected field or bvh`);
+    const method = this.settings.method;
+    if (!METHODS.includes(method))
+      throw new PlayerError(`method=${method}: expected ${METHODS.join(', ')}`);
+    const external = method === 'three-mesh-bvh';
+    if (external && !this.externalBvh)
+      throw new PlayerError('method=three-mesh-bvh: its BVHs are not built (externalBvh)');
     // As gfield-view's field method builds its programs (--intersect field or bvh).
-    const bvh = this.settings.method === 'bvh';
-    const key = `${this.settings.method} ${mode}`;
+    const bvh = method !== 'field';
+    const key = `${method} ${mode}`;
     if (!this.tracePrograms.has(key))
       this.tracePrograms.set(key, this.#program('fullscreen.vert', 'field_trace.frag',
           `#define GF_TRACE_MODE ${mode}\n#define GF_FIELD_MESHES ${bvh ? 0 : 1}\n` +
-          `#define GF_BVH_MESHES ${bvh ? 1 : 0}\n`));
+          `#define GF_BVH_MESHES ${bvh ? 1 : 0}\n${external ? '#define GF_EXTERNAL_BVH 1\n' : ''}`,
+          external ? this.externalBvh.glsl : ''));
     return this.tracePrograms.get(key);
   }
 
@@ -404,11 +416,12 @@ export class FieldRenderer {
       gl.bindTexture(gl.TEXTURE_2D, this.gbuffer.textures[k]);
       gl.uniform1i(p.uniforms.get(name), unit++);
     });
+    if (s.method === 'three-mesh-bvh') unit = this.externalBvh.bind(gl, p, unit);
     this.#setSceneUniforms(p);
     this.#setCameraUniforms(p, camera, width, height);
     const set = (name, f) => { if (p.uniforms.has(name)) f(p.uniforms.get(name)); };
     set('u_self_reflection', (l) => gl.uniform1i(l, s.selfReflection ? 1 : 0));
-    set('u_intersect_bvh', (l) => gl.uniform1i(l, s.method === 'bvh' ? 1 : 0));
+    set('u_intersect_bvh', (l) => gl.uniform1i(l, s.method !== 'field' ? 1 : 0));
     set('u_max_depth', (l) => gl.uniform1i(l, s.depth));
     set('u_min_weight', (l) => gl.uniform1f(l, s.minWeight));
     set('u_max_rays', (l) => gl.uniform1i(l, s.maxRays));

@@ -19,8 +19,8 @@ const ASSETS = join(TMP, 'assets');
 const SIZE = 160;  // the broken exports' and bad queries' page
 const DEPTH = 4;
 
-// Each scene at its own size (512 x 512), depth 4, in both methods: PSNR floors against
-// gfield-view's picture. They differ where SwiftShader and llvmpipe rasterise silhouette pixels
+// Each scene at its own size (512 x 512), depth 4, in the three methods: PSNR floors against
+// gfield-view's picture (three-mesh-bvh's against --intersect bvh's). They differ where SwiftShader and llvmpipe rasterise silhouette pixels
 // apart, and then at every bounce seen through them; docs/web.md gives the measured figures.
 const SCENES = [
   { name: 'mirror-torus-instances', meshes: ['spot', 'torus'], floor: { field: 35, bvh: 35 } },
@@ -63,17 +63,19 @@ before(async () => {
 after(async () => { await browser?.close(); });
 
 for (const scene of SCENES) {
-  test(`${scene.name}: the browser's pictures are the viewer's, field and BVH`, async () => {
+  test(`${scene.name}: the browser's pictures are the viewer's, field, BVH and three-mesh-bvh`, async () => {
     const out = join(TMP, scene.name);
     exportScene(scene.name, out);
     const [width, height] = JSON.parse(readFileSync(join(out, 'scene.json'), 'utf8')).size;
     const server = await serve(out);
     try {
-      for (const method of ['field', 'bvh']) {
-        const reference = join(TMP, `${scene.name}-${method}-viewer.png`);
-        execFileSync(VIEW, [join(ROOT, 'data/scenes', `${scene.name}.json`), '--assets', ASSETS,
-                            '--headless', '--depth', `${DEPTH}`, '--intersect', method,
-                            '-o', reference], { stdio: 'pipe' });
+      for (const method of ['field', 'bvh', 'three-mesh-bvh']) {
+        const intersect = method === 'field' ? 'field' : 'bvh';
+        const reference = join(TMP, `${scene.name}-${intersect}-viewer.png`);
+        if (method !== 'three-mesh-bvh')
+          execFileSync(VIEW, [join(ROOT, 'data/scenes', `${scene.name}.json`), '--assets', ASSETS,
+                              '--headless', '--depth', `${DEPTH}`, '--intersect', intersect,
+                              '-o', reference], { stdio: 'pipe' });
         const page = await openPlayer(browser, `${server.url}index.html?ui=0&depth=${DEPTH}&method=${method}`,
                                       width, height);
         assert.equal(page.title, 'ready', page.text);
@@ -82,16 +84,21 @@ for (const scene of SCENES) {
         const db = psnr(shot, reference);
         console.log(`${scene.name}, ${method}, ${width} x ${height}: ${db.toFixed(2)} dB against ` +
                     `gfield-view, first frame after ${page.seconds.toFixed(2)} s`);
-        assert.ok(db >= scene.floor[method], `${method}: ${db} dB < ${scene.floor[method]} dB`);
+        assert.ok(db >= scene.floor[intersect], `${method}: ${db} dB < ${scene.floor[intersect]} dB`);
       }
+      // Both BVHs are exact over the same triangles: the same picture but for float rounding.
+      const same = psnr(join(TMP, `${scene.name}-three-mesh-bvh-browser.png`),
+                        join(TMP, `${scene.name}-bvh-browser.png`));
+      console.log(`${scene.name}: three-mesh-bvh against gfield's BVH in the browser: ${same} dB`);
+      assert.ok(same >= 50, `three-mesh-bvh and gfield's BVH differ: ${same} dB`);
     } finally {
       await server.close();
     }
   });
 }
 
-// A broken copy of the mirror-torus export: `damage(folder)` breaks it; the page must say
-// `expected` (a regular expression) in its text and its title.
+// A broken copy of the mirror-torus export: `damage(folder)` breaks it; the page, opened with
+// `query` (if given), must say `expected` (a regular expression) in its text and its title.
 const BROKEN = [
   ['a truncated scene.bin.gz', (dir) => {
     const bin = readFileSync(join(dir, 'scene.bin.gz'));
@@ -105,18 +112,26 @@ const BROKEN = [
   ['no scene.json', (dir) => rmSync(join(dir, 'scene.json')), /scene\.json: cannot be fetched \(HTTP 404\)/],
   ['a damaged shader', (dir) => writeFileSync(join(dir, 'shaders/field_trace.frag'), '#version 300 es\nvoid main( {}\n'),
    /shaders\/field_trace\.frag: does not compile/],
+  ['no three-mesh-bvh in the export', (dir) => {
+    const manifest = JSON.parse(readFileSync(join(dir, 'scene.json'), 'utf8'));
+    manifest.peers = {};
+    writeFileSync(join(dir, 'scene.json'), JSON.stringify(manifest));
+    rmSync(join(dir, 'vendor'), { recursive: true });
+  }, /method=three-mesh-bvh: this export has no vendor\/three-mesh-bvh\.js/, 'method=three-mesh-bvh'],
+  ['a vendor file gone', (dir) => rmSync(join(dir, 'vendor/three-mesh-bvh.js')),
+   /vendor\/three-mesh-bvh\.js: cannot be loaded/, 'method=three-mesh-bvh'],
 ];
 
 test('a broken export is named in the page, not drawn blank', async () => {
   const good = smallExport();
-  for (const [what, damage, expected] of BROKEN) {
+  for (const [what, damage, expected, query = ''] of BROKEN) {
     const dir = join(TMP, 'broken');
     rmSync(dir, { recursive: true, force: true });
     cpSync(good, dir, { recursive: true });
     damage(dir);
     const server = await serve(dir);
     try {
-      const page = await openPlayer(browser, `${server.url}index.html?ui=0`, SIZE, SIZE);
+      const page = await openPlayer(browser, `${server.url}index.html?ui=0&${query}`, SIZE, SIZE);
       assert.match(page.title, /^error: /, what);
       assert.match(page.title, expected, what);
       assert.match(page.text, expected, what);
@@ -132,7 +147,7 @@ test('a bad query is named in the page', async () => {
   try {
     for (const [query, expected] of [['size=12', /size=12: expected WxH/],
                                      ['mode=exact', /mode=exact: expected nearest, linear or refined/],
-                                     ['method=rtx', /method=rtx: expected field or bvh/],
+                                     ['method=rtx', /method=rtx: expected field, bvh, three-mesh-bvh/],
                                      ['depth=-1', /depth=-1: expected 0\.\.64/]]) {
       const page = await openPlayer(browser, `${server.url}index.html?ui=0&${query}`, SIZE, SIZE);
       assert.match(page.title, expected, query);
@@ -163,6 +178,19 @@ test('the panel and the orbit camera redraw the frame', async () => {
     await page.select('#method', 'bvh');
     await settle();
     assert.equal(await page.evaluate(() => window.gfield.renderer.settings.method), 'bvh');
+    const bvh = Buffer.from(await frame());
+    await page.select('#method', 'three-mesh-bvh');
+    await page.waitForFunction(() => window.gfield.renderer.settings.method === 'three-mesh-bvh',
+                               { timeout: 60000 });
+    await settle();
+    const shots = [['bvh', bvh], ['three-mesh-bvh', Buffer.from(await frame())]].map(([name, png]) => {
+      writeFileSync(join(TMP, `panel-${name}.png`), png);
+      return join(TMP, `panel-${name}.png`);
+    });
+    assert.ok(psnr(...shots) >= 50, 'three-mesh-bvh draws gfield\'s BVH picture');
+    assert.match(await page.$eval('#method', (s) => s.selectedOptions[0].text), /^three-mesh-bvh \d/);
+    await page.select('#method', 'field');
+    await settle();
     await page.select('#mode', 'nearest');
     await settle();
     const nearest = Buffer.from(await frame());

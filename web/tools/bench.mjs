@@ -1,11 +1,13 @@
-// The web benchmark (not a test): ms per frame of the player's two methods, the geometry field
-// and gfield's BVH (exact, the same shaders but for the mesh intersection), on exported scenes in
-// Debian's chromium (SwiftShader here), same page, same run. Prints a Markdown table.
+// The web benchmark (not a test): ms per frame of the player's three methods on exported scenes
+// in Debian's chromium (SwiftShader here), same run: the geometry field, gfield's BVH and
+// three-mesh-bvh's (both exact; the same shaders but for how a ray meets a mesh). Prints a
+// Markdown table.
 //
 //   node tools/bench.mjs [--size WxH] [--depth N] [--frames N] EXPORT_DIR...
 //
-// Each row: the median of N frames drawn one after another after a first one (shader
-// compilation), min-max in brackets, and field / BVH.
+// Each cell: the median of N frames drawn one after another after a first one (shader
+// compilation), min-max in brackets; then field / three-mesh-bvh, and three-mesh-bvh's BVH
+// build in the page (ms) and its texture bytes.
 
 import { launch, serve } from './browser.mjs';
 
@@ -26,7 +28,8 @@ if (args.length === 0 || !(width > 0 && height > 0) || !(frames > 0)) {
 const browser = await launch();
 const median = (v) => [...v].sort((a, b) => a - b)[v.length >> 1];
 
-// ms per frame of `method` on the export served at `url`: { median, min, max, renderer }.
+// ms per frame of `method` on the export served at `url`: { median, min, max, renderer, peer }
+// (peer: three-mesh-bvh's version, build ms and bytes, for that method).
 async function time(url, method) {
   const page = await browser.newPage();
   await page.setViewport({ width, height });
@@ -37,26 +40,33 @@ async function time(url, method) {
   if (title !== 'ready') throw new Error(`${url}: ${title}`);
   const ms = await page.evaluate((n) => Array.from({ length: n }, () => window.gfield.frame()), frames);
   const renderer = await page.evaluate(() => window.gfield.rendererName);
+  const peer = await page.evaluate(() => window.gfield.threeMeshBvh());
   await page.close();
-  return { median: median(ms), min: Math.min(...ms), max: Math.max(...ms), renderer };
+  return { median: median(ms), min: Math.min(...ms), max: Math.max(...ms), renderer, peer };
 }
 
 const rows = [];
 let renderer = '';
+let version = '';
 for (const dir of args) {
   const server = await serve(dir);
   try {
     const field = await time(server.url, 'field');
     const bvh = await time(server.url, 'bvh');
+    const peer = await time(server.url, 'three-mesh-bvh');
     renderer = field.renderer;
+    version = peer.peer.version;
     const cell = (t) => `${t.median.toFixed(1)} (${t.min.toFixed(1)}-${t.max.toFixed(1)})`;
     rows.push(`| ${dir.replace(/\/$/, '').split('/').pop()} | ${cell(field)} | ${cell(bvh)} | ` +
-              `${(field.median / bvh.median).toFixed(2)} |`);
+              `${cell(peer)} | ${(field.median / peer.median).toFixed(2)} | ` +
+              `${peer.peer.buildMs.toFixed(0)} ms, ${(peer.peer.bytes / 2 ** 20).toFixed(1)} MiB |`);
   } finally {
     await server.close();
   }
 }
 await browser.close();
-console.log(`ms per frame, ${size}, depth ${depth}, refined lookup, median of ${frames} (min-max); ${renderer}\n`);
-console.log('| export | field | BVH | field / BVH |\n|---|---|---|---|');
+console.log(`ms per frame, ${size}, depth ${depth}, refined lookup, median of ${frames} (min-max); ` +
+            `three-mesh-bvh ${version}; ${renderer}\n`);
+console.log('| export | field | gfield BVH | three-mesh-bvh | field / three-mesh-bvh | ' +
+            'three-mesh-bvh build, textures |\n|---|---|---|---|---|---|');
 console.log(rows.join('\n'));
