@@ -75,6 +75,7 @@ BvhMeshHit external_bvh_hit(int root, vec3 o, vec3 d, float t_min, float t_max);
 
 BvhMeshHit bvh_mesh_hit(int root, vec3 o, vec3 d, float t_min, float t_max) {
 #if defined(GL_ES) && defined(GF_EXTERNAL_BVH)
+  WORK_ADD(WORK_BVH_TRAVERSALS, 1);  // its nodes and triangles: counted by the definition
   return external_bvh_hit(root, o, d, t_min, t_max);
 #else
   BvhMeshHit m;

@@ -16,6 +16,10 @@ export const METHODS = ['field', 'bvh', 'three-mesh-bvh'];
 /** Lookup modes of the field (the contract's GF_MODE_*). */
 export const LOOKUP_MODES = { nearest: 0, linear: 1, refined: 2 };
 
+/** The contract's work counters (WORK_*, shaders/lib/work.glsl) in their order. */
+export const WORK_COUNTERS = ['lookups', 'field_fetches', 'image_fetches', 'newton_steps',
+                              'bvh_traversals', 'bvh_nodes', 'bvh_triangles', 'rays'];
+
 // The contract's WEB_MAX_OBJECTS, WEB_MAX_LIGHTS (shaders/lib/contract.glsl): the uniform
 // blocks' declared lengths; std140 sizes of GpuObject and GpuLight in bytes.
 const MAX_OBJECTS = 48;
@@ -261,7 +265,8 @@ export class FieldRenderer {
     return { program, uniforms };
   }
 
-  #traceProgram() {
+  // The tracing program of the settings; `count`: its counting build (GF_COUNT_WORK).
+  #traceProgram(count = false) {
     const mode = LOOKUP_MODES[this.settings.mode];
     if (mode === undefined) throw new PlayerError(`mode=${this.settings.mode}: not a lookup mode`);
     const method = this.settings.method;
@@ -272,28 +277,29 @@ export class FieldRenderer {
       throw new PlayerError('method=three-mesh-bvh: its BVHs are not built (externalBvh)');
     // As gfield-view's field method builds its programs (--intersect field or bvh).
     const bvh = method !== 'field';
-    const key = `${method} ${mode}`;
+    const key = `${method} ${mode}${count ? ' counting' : ''}`;
     if (!this.tracePrograms.has(key))
       this.tracePrograms.set(key, this.#program('fullscreen.vert', 'field_trace.frag',
           `#define GF_TRACE_MODE ${mode}\n#define GF_FIELD_MESHES ${bvh ? 0 : 1}\n` +
-          `#define GF_BVH_MESHES ${bvh ? 1 : 0}\n${external ? '#define GF_EXTERNAL_BVH 1\n' : ''}`,
+          `#define GF_BVH_MESHES ${bvh ? 1 : 0}\n${external ? '#define GF_EXTERNAL_BVH 1\n' : ''}` +
+          `${count ? '#define GF_COUNT_WORK 1\n' : ''}`,
           external ? this.externalBvh.glsl : ''));
     return this.tracePrograms.get(key);
   }
 
-  // Render targets of width x height: the G-buffer (4 RGBA32F + depth) and the frame (colour
-  // and hits, RGBA32F).
+  // Render targets of width x height: the G-buffer (4 RGBA32F + depth), the frame (colour and
+  // hits, RGBA32F) and the counting frame (the frame's two, then the work counts: 2 RGBA32UI).
   #targets(width, height) {
     if (this.size && this.size[0] === width && this.size[1] === height) return;
     const gl = this.gl;
-    const target = (count, depth) => {
+    const target = (formats, depth) => {
       const fbo = gl.createFramebuffer();
       gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
       const textures = [];
-      for (let k = 0; k < count; k++) {
+      for (let k = 0; k < formats.length; k++) {
         const t = gl.createTexture();
         gl.bindTexture(gl.TEXTURE_2D, t);
-        gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, width, height);
+        gl.texStorage2D(gl.TEXTURE_2D, 1, formats[k], width, height);
         gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
         gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
         gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + k, gl.TEXTURE_2D, t, 0);
@@ -307,11 +313,13 @@ export class FieldRenderer {
       }
       gl.drawBuffers(textures.map((_, k) => gl.COLOR_ATTACHMENT0 + k));
       if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE)
-        throw new PlayerError('this browser cannot render to RGBA32F targets');
+        throw new PlayerError('this browser cannot render to RGBA32F and RGBA32UI targets');
       return { fbo, textures };
     };
-    this.gbuffer = target(4, true);
-    this.frame = target(2, false);
+    const float = gl.RGBA32F;
+    this.gbuffer = target([float, float, float, float], true);
+    this.frame = target([float, float], false);
+    this.counting = target([float, float, gl.RGBA32UI, gl.RGBA32UI], false);
     this.size = [width, height];
   }
 
@@ -404,9 +412,9 @@ export class FieldRenderer {
     gl.bindVertexArray(null);
   }
 
-  #drawTracing(camera, width, height) {
-    const gl = this.gl, p = this.#traceProgram(), s = this.settings;
-    gl.bindFramebuffer(gl.FRAMEBUFFER, this.frame.fbo);
+  #drawTracing(camera, width, height, count = false) {
+    const gl = this.gl, p = this.#traceProgram(count), s = this.settings;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, (count ? this.counting : this.frame).fbo);
     gl.viewport(0, 0, width, height);
     gl.disable(gl.DEPTH_TEST);
     gl.useProgram(p.program);
@@ -430,6 +438,27 @@ export class FieldRenderer {
   }
 
   /**
+   * Draws `camera` at width x height with the tracing pass's counting build (shown nowhere) and
+   * returns workSummary of its counts: what `gfield-view --count-work` counts for that frame.
+   */
+  countWork(camera, width, height) {
+    const gl = this.gl;
+    this.#targets(width, height);
+    this.#drawGbuffer(camera, width, height);
+    this.#drawTracing(camera, width, height, true);
+    const totals = Object.fromEntries(WORK_COUNTERS.map((name) => [name, 0]));
+    const texels = new Uint32Array(4 * width * height);
+    for (const k of [0, 1]) {
+      gl.readBuffer(gl.COLOR_ATTACHMENT2 + k);
+      gl.readPixels(0, 0, width, height, gl.RGBA_INTEGER, gl.UNSIGNED_INT, texels);
+      for (let i = 0; i < texels.length; i++) totals[WORK_COUNTERS[4 * k + (i & 3)]] += texels[i];
+    }
+    gl.readBuffer(gl.COLOR_ATTACHMENT0);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    return workSummary(totals);
+  }
+
+  /**
    * Draws `camera` ({position, target, up, fov in degrees}) into the default framebuffer's
    * bottom-left width x height pixels.
    */
@@ -448,6 +477,22 @@ export class FieldRenderer {
     gl.bindVertexArray(this.emptyVao);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
   }
+}
+
+/**
+ * Work counter totals (an object keyed by WORK_COUNTERS) with the averages gfield-view
+ * --count-work prints: per field lookup and per BVH traversal.
+ */
+export function workSummary(totals) {
+  const per = (a, b) => (totals[b] > 0 ? totals[a] / totals[b] : 0);
+  return {
+    totals,
+    per_lookup: { field_fetches: per('field_fetches', 'lookups'),
+                  image_fetches: per('image_fetches', 'lookups'),
+                  newton_steps: per('newton_steps', 'lookups') },
+    per_traversal: { nodes: per('bvh_nodes', 'bvh_traversals'),
+                     triangles: per('bvh_triangles', 'bvh_traversals') },
+  };
 }
 
 /**

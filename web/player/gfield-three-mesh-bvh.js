@@ -33,6 +33,21 @@ function upload(gl, width, height, [internal, format, type], data) {
   return texture;
 }
 
+// three-mesh-bvh's traversal with the runtime's work counters (shaders/lib/work.glsl: WORK_ADD
+// counts in the counting build, else is empty): a node per bounds test, as gfield's BVH counts
+// them, and a triangle per triangle test.
+function countedRayFunctions() {
+  let text = BVHShaderGLSL.bvh_ray_functions;
+  for (const [line, counter] of [
+    ['uint currNodeIndex = stack[ pointer ];', 'WORK_BVH_NODES'],
+    ['uvec3 indices = uTexelFetch1D( indexAttr, i ).xyz;', 'WORK_BVH_TRIANGLES']]) {
+    if (!text.includes(line))
+      throw new Error(`three-mesh-bvh's GLSL has no "${line}" for the work counters`);
+    text = text.replace(line, `${line} WORK_ADD(${counter}, 1);`);
+  }
+  return text;
+}
+
 /**
  * three-mesh-bvh's BVHs of the scene's meshes on `gl` (scene: loadWebScene's result). `glsl`
  * defines external_bvh_hit for the tracing stage; `bind` sets its samplers; `buildMs` is the
@@ -101,7 +116,7 @@ export class ThreeMeshBvh {
 // three-mesh-bvh's GLSL (BVHShaderGLSL), which also declares an isampler2D function
 precision highp isampler2D;
 ${BVHShaderGLSL.common_functions}
-${BVHShaderGLSL.bvh_ray_functions}
+${countedRayFunctions()}
 ${uniforms.join('')}
 // The hit on face's corners (vertex indices) at barycentrics bary, shaded as bvh_mesh_hit
 // shades its hits: interpolated normal, uv and base colour (times the mesh's texture).

@@ -195,7 +195,62 @@ test('the panel and the orbit camera redraw the frame', async () => {
     await settle();
     const nearest = Buffer.from(await frame());
     assert.ok(!nearest.equals(turned), 'the panel redraws');
+    await page.click('#count');
+    assert.match(await page.$eval('#work', (e) => e.textContent),
+                 /^\d+ lookups: [\d.]+ field \+ [\d.]+ image fetches, [\d.]+ Newton steps each\n\d+ secondary rays$/);
     assert.equal(await page.title(), 'ready');
+  } finally {
+    await page.close();
+    await server.close();
+  }
+});
+
+// gfield-view --count-work's totals of the small export's frame ("per sample: NAME N, ...").
+function viewerWork(intersect) {
+  const out = execFileSync(VIEW, [join(ROOT, 'data/scenes/mirror-torus-instances.json'), '--assets',
+                                  ASSETS, '--headless', '--bench', '--count-work', '--frames', '1',
+                                  '--pass', 'fragment', '--size', `${SIZE}x${SIZE}`, '--depth',
+                                  `${DEPTH}`, '--intersect', intersect], { encoding: 'utf8' });
+  const line = out.split('\n').find((l) => l.startsWith('per sample: '));
+  assert.ok(line, out);
+  const names = { 'field lookups': 'lookups', 'field texel fetches': 'field_fetches',
+                  'image texel fetches': 'image_fetches', 'Newton steps': 'newton_steps',
+                  'BVH traversals': 'bvh_traversals', 'BVH nodes': 'bvh_nodes',
+                  'BVH triangles': 'bvh_triangles', 'counted rays': 'rays' };
+  const totals = {};
+  for (const [, name, n] of line.matchAll(/([A-Za-z ]+) (\d+)/g))
+    if (names[name.trim()]) totals[names[name.trim()]] = Number(n);
+  return totals;
+}
+
+test('the page counts the work gfield-view counts, and three-mesh-bvh\'s walks', async () => {
+  const dir = smallExport();
+  const server = await serve(dir);
+  const page = await browser.newPage();
+  try {
+    await page.setViewport({ width: SIZE, height: SIZE });
+    const counts = {};
+    for (const method of ['field', 'bvh', 'three-mesh-bvh']) {
+      await page.goto(`${server.url}index.html?ui=0&depth=${DEPTH}&method=${method}`);
+      await page.waitForFunction(() => document.title === 'ready', { timeout: 120000 });
+      counts[method] = (await page.evaluate(() => window.gfield.countWork())).totals;
+    }
+    for (const method of ['field', 'bvh']) {
+      const viewer = viewerWork(method);
+      console.log(`${method}: page ${JSON.stringify(counts[method])}, gfield-view ${JSON.stringify(viewer)}`);
+      for (const [name, n] of Object.entries(viewer)) {
+        // The two rasterisers cover silhouette pixels apart (docs/web.md): within 2%.
+        const page = counts[method][name];
+        assert.ok(n === 0 ? page === 0 : Math.abs(page - n) <= 0.02 * n, `${method} ${name}: ${page} vs ${n}`);
+      }
+      assert.ok(viewer[method === 'field' ? 'lookups' : 'bvh_traversals'] > 1000, method);
+    }
+    // three-mesh-bvh walks where gfield's BVH does: the same rays, its own nodes and triangles.
+    const [ours, peer] = [counts.bvh, counts['three-mesh-bvh']];
+    console.log(`three-mesh-bvh: ${JSON.stringify(peer)}`);
+    assert.ok(Math.abs(peer.bvh_traversals - ours.bvh_traversals) <= 0.005 * ours.bvh_traversals);
+    assert.ok(peer.bvh_nodes >= peer.bvh_traversals && peer.bvh_triangles > 0, 'its walks counted');
+    assert.equal(peer.lookups, 0);
   } finally {
     await page.close();
     await server.close();

@@ -7,7 +7,8 @@
 //
 // Each cell: the median of N frames drawn one after another after a first one (shader
 // compilation), min-max in brackets; then field / three-mesh-bvh, and three-mesh-bvh's BVH
-// build in the page (ms) and its texture bytes.
+// build in the page (ms) and its texture bytes. A second table: each method's work in one
+// counting frame (FieldRenderer.countWork).
 
 import { launch, serve } from './browser.mjs';
 
@@ -41,11 +42,13 @@ async function time(url, method) {
   const ms = await page.evaluate((n) => Array.from({ length: n }, () => window.gfield.frame()), frames);
   const renderer = await page.evaluate(() => window.gfield.rendererName);
   const peer = await page.evaluate(() => window.gfield.threeMeshBvh());
+  const work = await page.evaluate(() => window.gfield.countWork());
   await page.close();
-  return { median: median(ms), min: Math.min(...ms), max: Math.max(...ms), renderer, peer };
+  return { median: median(ms), min: Math.min(...ms), max: Math.max(...ms), renderer, peer, work };
 }
 
 const rows = [];
+const workRows = [];
 let renderer = '';
 let version = '';
 for (const dir of args) {
@@ -60,6 +63,12 @@ for (const dir of args) {
     rows.push(`| ${dir.replace(/\/$/, '').split('/').pop()} | ${cell(field)} | ${cell(bvh)} | ` +
               `${cell(peer)} | ${(field.median / peer.median).toFixed(2)} | ` +
               `${peer.peer.buildMs.toFixed(0)} ms, ${(peer.peer.bytes / 2 ** 20).toFixed(1)} MiB |`);
+    const walk = (w) => `${w.per_traversal.nodes.toFixed(1)} nodes, ` +
+                        `${w.per_traversal.triangles.toFixed(1)} triangles`;
+    const f = field.work.per_lookup;
+    workRows.push(`| ${dir.replace(/\/$/, '').split('/').pop()} | ${field.work.totals.lookups} | ` +
+                  `${f.field_fetches.toFixed(1)} + ${f.image_fetches.toFixed(1)}, ` +
+                  `${f.newton_steps.toFixed(1)} Newton | ${walk(bvh.work)} | ${walk(peer.work)} |`);
   } finally {
     await server.close();
   }
@@ -70,3 +79,8 @@ console.log(`ms per frame, ${size}, depth ${depth}, refined lookup, median of ${
 console.log('| export | field | gfield BVH | three-mesh-bvh | field / three-mesh-bvh | ' +
             'three-mesh-bvh build, textures |\n|---|---|---|---|---|---|');
 console.log(rows.join('\n'));
+console.log('\nwork of one frame: field fetches (field + image texels) and Newton steps per lookup; ' +
+            'nodes and triangles tested per BVH walk\n');
+console.log('| export | field lookups | field per lookup | gfield BVH per walk | ' +
+            'three-mesh-bvh per walk |\n|---|---|---|---|---|');
+console.log(workRows.join('\n'));
