@@ -29,6 +29,23 @@ const LIGHT_BYTES = 48;
 // Textures of rows of WEB_TEXEL_ROW texels (2D; the others are 2D arrays).
 const ROW_TEXTURES = ['field_words', 'bvh_nodes', 'bvh_triangles', 'bvh_shading'];
 
+// The depth of the G-buffer's first hits as a host app's camera projects them (render's
+// options.viewProjection), so that the app's own objects are drawn in depth with gfield's; no
+// colour is written, and pixels without a hit keep the cleared depth.
+const DEPTH_FRAG = `#version 300 es
+precision highp float;
+uniform highp sampler2D u_g_position;  // world position, w: first hit object (-1: none)
+uniform mat4 u_host_view_projection;
+out vec4 o_color;
+void main() {
+  vec4 p = texelFetch(u_g_position, ivec2(gl_FragCoord.xy), 0);
+  if (p.w < 0.0) discard;
+  vec4 clip = u_host_view_projection * vec4(p.xyz, 1.0);
+  gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+  o_color = vec4(0.0);
+}
+`;
+
 /** An error the page shows as it is: one line naming the file and what is wrong. */
 export class PlayerError extends Error {}
 
@@ -157,6 +174,8 @@ export class FieldRenderer {
     this.#upload(scene.bytes);
     this.gbufferProgram = this.#program('gbuffer.vert', 'gbuffer.frag', '');
     this.presentProgram = this.#program('fullscreen.vert', 'present.frag', '');
+    this.shaders = { ...this.shaders, 'depth.frag': DEPTH_FRAG };
+    this.depthProgram = this.#program('fullscreen.vert', 'depth.frag', '');
     this.tracePrograms = new Map();
     this.emptyVao = gl.createVertexArray();
     // The three-mesh-bvh method's BVHs: { glsl, bind(gl, program, unit) } (ThreeMeshBvh).
@@ -460,9 +479,12 @@ export class FieldRenderer {
 
   /**
    * Draws `camera` ({position, target, up, fov in degrees}) into the default framebuffer's
-   * bottom-left width x height pixels.
+   * bottom-left width x height pixels. With options.viewProjection (a host app's camera: 16
+   * floats, column-major, GL clip space) it also writes the first hits' depth as that camera
+   * sees them into the default framebuffer's depth buffer (cleared to 1 first), so that the
+   * app's objects drawn after it meet gfield's in depth.
    */
-  render(camera, width, height) {
+  render(camera, width, height, options = {}) {
     const gl = this.gl;
     this.#targets(width, height);
     this.#drawGbuffer(camera, width, height);
@@ -476,6 +498,25 @@ export class FieldRenderer {
     gl.uniform1i(p.uniforms.get('u_frame'), 0);
     gl.bindVertexArray(this.emptyVao);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
+    if (options.viewProjection) this.#drawDepth(options.viewProjection);
+  }
+
+  #drawDepth(viewProjection) {
+    const gl = this.gl, p = this.depthProgram;
+    gl.depthMask(true);
+    gl.clearDepth(1);
+    gl.clear(gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.depthFunc(gl.ALWAYS);
+    gl.colorMask(false, false, false, false);
+    gl.useProgram(p.program);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, this.gbuffer.textures[0]);
+    gl.uniform1i(p.uniforms.get('u_g_position'), 0);
+    gl.uniformMatrix4fv(p.uniforms.get('u_host_view_projection'), false, viewProjection);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    gl.colorMask(true, true, true, true);
+    gl.depthFunc(gl.LESS);
   }
 }
 
@@ -509,13 +550,16 @@ export function cameraFromThree(camera) {
 
 /**
  * Draws `field` (a FieldRenderer made on `renderer.getContext()`) as three.js's `camera` sees it
- * into the whole drawing buffer of `renderer` (a THREE.WebGLRenderer), resetting three.js's idea
- * of the GL state before and after. Draw three.js objects over it with renderer.autoClear =
- * false.
+ * into the whole drawing buffer of `renderer` (a THREE.WebGLRenderer), with the depth of its
+ * first hits in three.js's depth buffer, resetting three.js's idea of the GL state before and
+ * after. Then draw three.js objects with renderer.autoClear = false: they meet gfield's objects
+ * in depth (in front of or behind them) and cover the background.
  */
 export function drawWithThree(field, renderer, camera) {
   const size = renderer.getDrawingBufferSize(new camera.position.constructor());
+  const view = cameraFromThree(camera);  // updates camera.matrixWorldInverse too
+  const viewProjection = camera.projectionMatrix.clone().multiply(camera.matrixWorldInverse);
   renderer.resetState();
-  field.render(cameraFromThree(camera), size.x, size.y);
+  field.render(view, size.x, size.y, { viewProjection: viewProjection.elements });
   renderer.resetState();
 }

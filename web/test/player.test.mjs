@@ -257,14 +257,15 @@ test('the page counts the work gfield-view counts, and three-mesh-bvh\'s walks',
   }
 });
 
-test('the three.js example draws the player\'s frame on three.js\'s context, its box over it', async () => {
+test('the three.js example draws the player\'s frame on three.js\'s context, its objects in depth with it', async () => {
   const dir = smallExport();
   const server = await serve(join(ROOT, 'web'), { scene: dir });
   try {
     const shots = {};
     for (const [name, url] of [['player', `scene/index.html?ui=0&depth=4`],
                                ['three', 'examples/three.html?scene=/scene/&overlay=0'],
-                               ['overlay', 'examples/three.html?scene=/scene/']]) {
+                               ['overlay', 'examples/three.html?scene=/scene/'],
+                               ['wall', 'examples/three.html?scene=/scene/&overlay=wall']]) {
       const page = await openPlayer(browser, server.url + url, SIZE, SIZE);
       assert.equal(page.title, 'ready', `${name}: ${page.text}`);
       shots[name] = join(TMP, `three-${name}.png`);
@@ -272,6 +273,19 @@ test('the three.js example draws the player\'s frame on three.js\'s context, its
     }
     assert.ok(psnr(shots.three, shots.player) >= 50, 'the same frame as the player\'s');
     assert.ok(psnr(shots.overlay, shots.three) < 50, 'three.js drew its box over it');
+    // The wall behind every gfield object shows only where none covers it (the shared depth):
+    // every pixel is the player's or the wall's red, and both kinds are many.
+    const rgb = (png) => execFileSync('convert', [png, '-depth', '8', 'rgb:-']);
+    const [player, wall] = [rgb(shots.player), rgb(shots.wall)];
+    let red = 0, same = 0;
+    for (let i = 0; i < wall.length; i += 3) {
+      if (wall[i] === 255 && wall[i + 1] === 0 && wall[i + 2] === 0) red++;
+      else if (wall.subarray(i, i + 3).equals(player.subarray(i, i + 3))) same++;
+    }
+    const pixels = wall.length / 3;
+    console.log(`three.js's wall behind the scene: ${red} red pixels, ${same} the player's, of ${pixels}`);
+    assert.equal(red + same, pixels, 'every pixel the wall\'s or the player\'s');
+    assert.ok(red > 0.1 * pixels && same > 0.1 * pixels, `${red} red, ${same} the player's`);
   } finally {
     await server.close();
   }
