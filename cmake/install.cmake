@@ -19,15 +19,19 @@ install(FILES web/player/index.html web/player/gfield-player.js web/player/gfiel
   DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/web/player)
 # The npm files an export's vendor/ holds (runtime/web_export.cpp, kVendorFiles: the page's
 # three-mesh-bvh method), where scripts/install-web-deps.sh put them before configuring; without
-# them exports offer the field and gfield's BVH alone.
+# them exports offer the field and gfield's BVH alone. gfield-web-vendor.txt in the build folder
+# lists those installed, under the prefix, for scripts/check-deb.sh.
+set(vendor_installed "")
 foreach(file three/build/three.core.js three/LICENSE three-mesh-bvh/build/index.module.js
              three-mesh-bvh/LICENSE three-mesh-bvh/package.json)
   if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/web/node_modules/${file})
     get_filename_component(folder ${file} DIRECTORY)
     install(FILES web/node_modules/${file}
       DESTINATION ${GFIELD_INSTALL_SHARE_DIR}/web/node_modules/${folder})
+    string(APPEND vendor_installed "${GFIELD_INSTALL_SHARE_DIR}/web/node_modules/${file}\n")
   endif()
 endforeach()
+file(WRITE ${CMAKE_BINARY_DIR}/gfield-web-vendor.txt "${vendor_installed}")
 # The example scenes and bundled meshes (with the material libraries and textures of the
 # textured ones and their sources), named one by one: reports, assets and pictures that commands
 # leave beside them (gfield-view builds a glTF scene's assets beside it) are never installed.

@@ -233,15 +233,23 @@ bool write_text(const fs::path& path, const std::string& text, std::string& erro
   return true;
 }
 
-// three-mesh-bvh's version in `node_modules` when every vendor file is there, else "".
-std::string vendor_version(const fs::path& node_modules) {
+// Whether `node_modules` holds every vendor file; then `version` is three-mesh-bvh's (false with
+// `error` when its package.json names none).
+bool vendor_version(const fs::path& node_modules, std::string& version, std::string& error) {
   std::error_code ec;
   for (const VendorFile& file : kVendorFiles)
     if (!fs::is_regular_file(node_modules / file.from, ec))
-      return "";
-  std::ifstream in(node_modules / "three-mesh-bvh" / "package.json");
-  const json package = json::parse(in, nullptr, false);
-  return package.is_object() ? package.value("version", "") : "";
+      return true;
+  const fs::path package = node_modules / "three-mesh-bvh" / "package.json";
+  std::ifstream in(package);
+  const json j = json::parse(in, nullptr, false);
+  version = j.is_object() && j.contains("version") && j["version"].is_string()
+                ? j["version"].get<std::string>()
+                : "";
+  if (version.empty())
+    error =
+        package.string() + ": no version (a damaged npm install: run scripts/install-web-deps.sh)";
+  return !version.empty();
 }
 
 // The vendor files into dir/vendor, and scene.json's "peers" (three-mesh-bvh's version); none
@@ -249,15 +257,21 @@ std::string vendor_version(const fs::path& node_modules) {
 bool add_vendor(const fs::path& node_modules, const fs::path& dir, json& manifest,
                 std::string& error) {
   manifest["peers"] = json::object();
-  const std::string version = vendor_version(node_modules);
+  std::string version;
+  if (!vendor_version(node_modules, version, error))
+    return false;
   if (version.empty())
     return true;
   std::error_code ec;
-  fs::create_directories(dir / "vendor", ec);
+  if (!fs::create_directories(dir / "vendor", ec)) {
+    error = (dir / "vendor").string() + ": cannot create: " + ec.message();
+    return false;
+  }
   for (const VendorFile& file : kVendorFiles) {
     fs::copy_file(node_modules / file.from, dir / "vendor" / file.to, ec);
     if (ec) {
-      error = (node_modules / file.from).string() + ": cannot copy: " + ec.message();
+      error = (node_modules / file.from).string() + ": cannot copy to " +
+              (dir / "vendor" / file.to).string() + ": " + ec.message();
       return false;
     }
   }

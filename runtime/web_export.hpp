@@ -1,6 +1,6 @@
 #pragma once
 // gfield-view --export-web DIR: a folder any static web server can serve, holding the web
-// player (web/player: index.html and its module) and a scene as the player draws it with the
+// player (web/player: index.html and its modules) and a scene as the player draws it with the
 // geometry-field method (docs/web.md; layout in docs/formats.md, "Web scene"):
 //   - scene.json: format "gfield-web", version, the camera and picture size, the scene
 //     uniforms, per object what rasterising it needs (matrices, shape, its mesh), and where each
@@ -8,7 +8,7 @@
 //   - scene.bin.gz: one gzip stream of the GPU scene's own bytes, read back from the runtime's
 //     buffers and textures (so the browser draws exactly what gfield-view draws): the objects'
 //     and lights' std140 blocks, the geometry images, fields (8 bits), their line words, albedo,
-//     the meshes' own textures, the environment, the BVHs (the page's BVH mode), the rasterised
+//     the meshes' own textures, the environment, the BVHs (the page's bvh method), the rasterised
 //     meshes and the proxy cube;
 //   - shaders/: the stages the player runs, in GLSL ES 3.00 (runtime/glsl_es.hpp);
 //   - vendor/: three.js's core and three-mesh-bvh, the page's three-mesh-bvh method, when

@@ -56,6 +56,7 @@ done
 build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:STRING=//p' "$build/CMakeCache.txt" | tr '[:upper:]' '[:lower:]')
 shipped="$build/gfield-shipped-data.txt"
 [ -s "$shipped" ] || fail "$shipped: missing (configure the build folder again)"
+[ -f "$build/gfield-web-vendor.txt" ] || fail "$build/gfield-web-vendor.txt: missing (configure the build folder again)"
 expected=$(
   {
     printf '%s\n' bin/gfield bin/gfield-view lib/libgfield_core.a include/gfield/contract.glsl \
@@ -66,11 +67,8 @@ expected=$(
       sed 's|^\./|share/gfield/shaders/|'
     printf '%s\n' share/gfield/web/player/index.html share/gfield/web/player/gfield-player.js \
       share/gfield/web/player/gfield-three-mesh-bvh.js
-    # the vendor files of the three-mesh-bvh method, where the web package's modules are installed
-    if [ -f web/node_modules/three-mesh-bvh/package.json ]; then
-      printf 'share/gfield/web/node_modules/%s\n' three/build/three.core.js three/LICENSE \
-        three-mesh-bvh/build/index.module.js three-mesh-bvh/LICENSE three-mesh-bvh/package.json
-    fi
+    # the vendor files of the three-mesh-bvh method that the build's configure found
+    cat "$build/gfield-web-vendor.txt"
     cat "$shipped"
   } | sed 's|^|./usr/|' | sort
 )

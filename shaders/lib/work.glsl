@@ -10,6 +10,7 @@
 // WebGL2 has neither storage buffers nor atomics: each fragment writes its counts to two RGBA32UI
 // attachments of the counting draw, which the page reads back and adds up
 // (web/player/gfield-player.js, countWork).
+// WORK_COUNT is 8: two uvec4 (web/player/gfield-player.js, WORK_COUNTERS, reads them in order).
 layout(location = 2) out uvec4 o_work_low;   // WORK_LOOKUPS .. WORK_NEWTON_STEPS
 layout(location = 3) out uvec4 o_work_high;  // WORK_BVH_TRAVERSALS .. WORK_RAYS
 #else

@@ -29,6 +29,42 @@ const LIGHT_BYTES = 48;
 // Textures of rows of WEB_TEXEL_ROW texels (2D; the others are 2D arrays).
 const ROW_TEXTURES = ['field_words', 'bvh_nodes', 'bvh_triangles', 'bvh_shading'];
 
+// A framebuffer of width x height: the textures `shared` (owned elsewhere), then new ones of
+// `formats`, as colour attachments in that order, and a depth buffer with `depth`. Returns
+// { fbo, textures (all attachments), owned (the new textures), depth (renderbuffer or null) }.
+function makeTarget(gl, width, height, formats, shared, depth) {
+  const fbo = gl.createFramebuffer();
+  gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+  const owned = formats.map((format) => {
+    const t = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, t);
+    gl.texStorage2D(gl.TEXTURE_2D, 1, format, width, height);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    return t;
+  });
+  const textures = [...shared, ...owned];
+  textures.forEach((t, k) =>
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + k, gl.TEXTURE_2D, t, 0));
+  let rb = null;
+  if (depth) {
+    rb = gl.createRenderbuffer();
+    gl.bindRenderbuffer(gl.RENDERBUFFER, rb);
+    gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT32F, width, height);
+    gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, rb);
+  }
+  gl.drawBuffers(textures.map((_, k) => gl.COLOR_ATTACHMENT0 + k));
+  if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE)
+    throw new PlayerError('this browser cannot render to RGBA32F and RGBA32UI targets');
+  return { fbo, textures, owned, depth: rb };
+}
+
+function deleteTarget(gl, target) {
+  gl.deleteFramebuffer(target.fbo);
+  target.owned.forEach((t) => gl.deleteTexture(t));
+  if (target.depth) gl.deleteRenderbuffer(target.depth);
+}
+
 // The depth of the G-buffer's first hits as a host app's camera projects them (render's
 // options.viewProjection), so that the app's own objects are drawn in depth with gfield's; no
 // colour is written, and pixels without a hit keep the cleared depth.
@@ -174,8 +210,8 @@ export class FieldRenderer {
     this.#upload(scene.bytes);
     this.gbufferProgram = this.#program('gbuffer.vert', 'gbuffer.frag', '');
     this.presentProgram = this.#program('fullscreen.vert', 'present.frag', '');
-    this.shaders = { ...this.shaders, 'depth.frag': DEPTH_FRAG };
-    this.depthProgram = this.#program('fullscreen.vert', 'depth.frag', '');
+    this.depthProgram = this.#program('fullscreen.vert',
+                                      { name: 'gfield-player.js (its depth pass)', text: DEPTH_FRAG }, '');
     this.tracePrograms = new Map();
     this.emptyVao = gl.createVertexArray();
     // The three-mesh-bvh method's BVHs: { glsl, bind(gl, program, unit) } (ThreeMeshBvh).
@@ -251,20 +287,21 @@ export class FieldRenderer {
     return { vao, count: mesh.index_count };
   }
 
-  // A program of two stages, `defines` after each stage's first line, `appended` after the
-  // fragment stage.
+  // A program of two stages (an exported stage's file name, or { name, text }), `defines` after
+  // each stage's first line, `appended` after the fragment stage.
   #program(vertex, fragment, defines, appended = '') {
     const gl = this.gl;
     const program = gl.createProgram();
     for (const [stage, type] of [[vertex, gl.VERTEX_SHADER], [fragment, gl.FRAGMENT_SHADER]]) {
-      const text = this.shaders[stage];
+      const { name, text } = typeof stage === 'string'
+          ? { name: `shaders/${stage}`, text: this.shaders[stage] } : stage;
       const first = text.indexOf('\n') + 1;
       const shader = gl.createShader(type);
       const tail = type === gl.FRAGMENT_SHADER ? appended : '';
       gl.shaderSource(shader, text.slice(0, first) + defines + text.slice(first) + tail);
       gl.compileShader(shader);
       if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS))
-        throw new PlayerError(`shaders/${stage}: does not compile: ` +
+        throw new PlayerError(`${name}: does not compile: ` +
                               `${(gl.getShaderInfoLog(shader) || '').split('\n')[0]}`);
       gl.attachShader(program, shader);
     }
@@ -306,39 +343,16 @@ export class FieldRenderer {
     return this.tracePrograms.get(key);
   }
 
-  // Render targets of width x height: the G-buffer (4 RGBA32F + depth), the frame (colour and
-  // hits, RGBA32F) and the counting frame (the frame's two, then the work counts: 2 RGBA32UI).
+  // Render targets of width x height: the G-buffer (4 RGBA32F + depth) and the frame (colour and
+  // hits, RGBA32F); those of another size are deleted. countWork adds its own.
   #targets(width, height) {
     if (this.size && this.size[0] === width && this.size[1] === height) return;
     const gl = this.gl;
-    const target = (formats, depth) => {
-      const fbo = gl.createFramebuffer();
-      gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
-      const textures = [];
-      for (let k = 0; k < formats.length; k++) {
-        const t = gl.createTexture();
-        gl.bindTexture(gl.TEXTURE_2D, t);
-        gl.texStorage2D(gl.TEXTURE_2D, 1, formats[k], width, height);
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-        gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + k, gl.TEXTURE_2D, t, 0);
-        textures.push(t);
-      }
-      if (depth) {
-        const rb = gl.createRenderbuffer();
-        gl.bindRenderbuffer(gl.RENDERBUFFER, rb);
-        gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT32F, width, height);
-        gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, rb);
-      }
-      gl.drawBuffers(textures.map((_, k) => gl.COLOR_ATTACHMENT0 + k));
-      if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE)
-        throw new PlayerError('this browser cannot render to RGBA32F and RGBA32UI targets');
-      return { fbo, textures };
-    };
+    for (const t of [this.gbuffer, this.frame, this.counting]) if (t) deleteTarget(gl, t);
+    this.counting = null;
     const float = gl.RGBA32F;
-    this.gbuffer = target([float, float, float, float], true);
-    this.frame = target([float, float], false);
-    this.counting = target([float, float, gl.RGBA32UI, gl.RGBA32UI], false);
+    this.gbuffer = makeTarget(gl, width, height, [float, float, float, float], [], true);
+    this.frame = makeTarget(gl, width, height, [float, float], [], false);
     this.size = [width, height];
   }
 
@@ -463,6 +477,9 @@ export class FieldRenderer {
   countWork(camera, width, height) {
     const gl = this.gl;
     this.#targets(width, height);
+    // The frame's colour and hits, then two RGBA32UI attachments for the counts.
+    this.counting ??= makeTarget(gl, width, height, [gl.RGBA32UI, gl.RGBA32UI],
+                                 this.frame.textures, false);
     this.#drawGbuffer(camera, width, height);
     this.#drawTracing(camera, width, height, true);
     const totals = Object.fromEntries(WORK_COUNTERS.map((name) => [name, 0]));
@@ -481,8 +498,8 @@ export class FieldRenderer {
    * Draws `camera` ({position, target, up, fov in degrees}) into the default framebuffer's
    * bottom-left width x height pixels. With options.viewProjection (a host app's camera: 16
    * floats, column-major, GL clip space) it also writes the first hits' depth as that camera
-   * sees them into the default framebuffer's depth buffer (cleared to 1 first), so that the
-   * app's objects drawn after it meet gfield's in depth.
+   * sees them into the default framebuffer's depth buffer (all of it cleared to 1 first), so
+   * that the app's objects drawn after it meet gfield's in depth.
    */
   render(camera, width, height, options = {}) {
     const gl = this.gl;
@@ -517,6 +534,7 @@ export class FieldRenderer {
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     gl.colorMask(true, true, true, true);
     gl.depthFunc(gl.LESS);
+    gl.disable(gl.DEPTH_TEST);
   }
 }
 
@@ -553,9 +571,15 @@ export function cameraFromThree(camera) {
  * into the whole drawing buffer of `renderer` (a THREE.WebGLRenderer), with the depth of its
  * first hits in three.js's depth buffer, resetting three.js's idea of the GL state before and
  * after. Then draw three.js objects with renderer.autoClear = false: they meet gfield's objects
- * in depth (in front of or behind them) and cover the background.
+ * in depth (in front of or behind them) and cover the background. gfield draws from the
+ * camera's position, orientation and vertical fov at the drawing buffer's aspect: a camera with
+ * zoom, a view offset or a film offset is refused, and the renderer's depth buffer must be the
+ * plain one (not logarithmic or reversed).
  */
 export function drawWithThree(field, renderer, camera) {
+  if (camera.zoom !== 1 || camera.view?.enabled || camera.filmOffset)
+    throw new PlayerError('drawWithThree: the camera has a zoom, view offset or film offset, ' +
+                          'which gfield does not draw');
   const size = renderer.getDrawingBufferSize(new camera.position.constructor());
   const view = cameraFromThree(camera);  // updates camera.matrixWorldInverse too
   const viewProjection = camera.projectionMatrix.clone().multiply(camera.matrixWorldInverse);

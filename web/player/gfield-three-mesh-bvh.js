@@ -9,18 +9,24 @@
 
 import { BufferAttribute, BufferGeometry } from 'three';
 import { BVHShaderGLSL, MeshBVH, MeshBVHUniformStruct, SAH } from 'three-mesh-bvh';
+import { PlayerError } from './gfield-player.js';
 
 // GpuVertex (runtime/gpu_assets.hpp): position, normal, uv, base (rgb, texture layer); 12 floats,
 // 3 RGBA32F texels.
 const VERTEX_FLOATS = 12;
+// Texture units of each mesh (its four BVH textures and its vertices), and at most those of the
+// tracing stage itself in this method (G-buffer 4, albedo, mesh textures, environment).
+const UNITS_PER_MESH = 5;
+const STAGE_UNITS = 7;
 
-// GL formats of a three.js texture of three-mesh-bvh's ("RGBA32F", "RG32UI", ...).
+// GL formats of a three.js texture of three-mesh-bvh's: 32-bit float or unsigned ("RGBA32F",
+// "RG32UI", ...), the ones MeshBVHUniformStruct makes of float positions and uint32 indices.
 function glFormat(gl, texture) {
-  const name = texture.internalFormat;
-  const integer = name.endsWith('UI');
-  const channels = name.match(/^[A-Z]+?(?=\d)/)[0];
-  const format = { R: 'RED', RG: 'RG', RGBA: 'RGBA' }[channels] + (integer ? '_INTEGER' : '');
-  return [gl[name], gl[format], integer ? gl.UNSIGNED_INT : gl.FLOAT];
+  const m = /^(R|RG|RGBA)32(F|UI)$/.exec(texture.internalFormat);
+  if (!m) throw new PlayerError(`three-mesh-bvh: texture format ${texture.internalFormat} unexpected`);
+  const integer = m[2] === 'UI';
+  const format = { R: 'RED', RG: 'RG', RGBA: 'RGBA' }[m[1]] + (integer ? '_INTEGER' : '');
+  return [gl[texture.internalFormat], gl[format], integer ? gl.UNSIGNED_INT : gl.FLOAT];
 }
 
 function upload(gl, width, height, [internal, format, type], data) {
@@ -42,7 +48,7 @@ function countedRayFunctions() {
     ['uint currNodeIndex = stack[ pointer ];', 'WORK_BVH_NODES'],
     ['uvec3 indices = uTexelFetch1D( indexAttr, i ).xyz;', 'WORK_BVH_TRIANGLES']]) {
     if (!text.includes(line))
-      throw new Error(`three-mesh-bvh's GLSL has no "${line}" for the work counters`);
+      throw new PlayerError(`vendor/three-mesh-bvh.js: its GLSL has no "${line}" for the work counters`);
     text = text.replace(line, `${line} WORK_ADD(${counter}, 1);`);
   }
   return text;
@@ -57,6 +63,11 @@ export class ThreeMeshBvh {
   constructor(gl, scene) {
     const start = performance.now();
     const used = new Set(scene.manifest.objects.map((o) => o.mesh).filter((m) => m >= 0));
+    const limit = gl.getParameter(gl.MAX_TEXTURE_IMAGE_UNITS);
+    if (STAGE_UNITS + UNITS_PER_MESH * used.size > limit)
+      throw new PlayerError(`method=three-mesh-bvh: ${used.size} meshes need ` +
+                            `${STAGE_UNITS + UNITS_PER_MESH * used.size} texture units; this ` +
+                            `browser has ${limit}`);
     this.meshes = [...used].sort((a, b) => a - b).map((m) => this.#mesh(gl, scene, m));
     this.buildMs = performance.now() - start;
     this.bytes = this.meshes.reduce((sum, mesh) => sum + mesh.bytes, 0);
@@ -65,6 +76,9 @@ export class ThreeMeshBvh {
   // Mesh m's BVH and vertices as textures; its gfield BVH root names it in the shader.
   #mesh(gl, scene, m) {
     const mesh = scene.manifest.meshes[m];
+    if (mesh.vertex_bytes !== 4 * VERTEX_FLOATS)
+      throw new PlayerError(`scene.json: mesh ${m} has vertices of ${mesh.vertex_bytes} bytes; ` +
+                            `this player reads ${4 * VERTEX_FLOATS}`);
     const vertices = new Float32Array(scene.bytes, mesh.vertices.offset, mesh.vertices.bytes / 4);
     const count = vertices.length / VERTEX_FLOATS;
     const positions = new Float32Array(3 * count);
@@ -72,6 +86,7 @@ export class ThreeMeshBvh {
       positions.set(vertices.subarray(i * VERTEX_FLOATS, i * VERTEX_FLOATS + 3), 3 * i);
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new BufferAttribute(positions, 3));
+    // A copy: the build reorders the index in place, and the export's bytes stay as they are.
     geometry.setIndex(new BufferAttribute(
         new Uint32Array(scene.bytes, mesh.indices.offset, mesh.index_count).slice(), 1));
     const struct = new MeshBVHUniformStruct();
