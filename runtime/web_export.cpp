@@ -1,6 +1,7 @@
 #include "runtime/web_export.hpp"
 
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <system_error>
@@ -114,14 +115,15 @@ json add_rows(Blob& blob, GLuint buffer, int texel_bytes, const char* web_format
   return texture_json(blob, bytes, gpu::WEB_TEXEL_ROW, int(rows), 1, web_format);
 }
 
-json add_mesh(Blob& blob, const GpuMesh& mesh, int bvh_root) {
+json add_mesh(Blob& blob, const GpuMesh& mesh, int bvh_root, bool field) {
   const std::vector<uint8_t> vertices = read_buffer(mesh.vertices.id());
   const std::vector<uint8_t> indices = read_buffer(mesh.indices.id());
   return json{{"vertices", blob.add(vertices.data(), vertices.size())},
               {"indices", blob.add(indices.data(), indices.size())},
               {"index_count", mesh.index_count},
               {"vertex_bytes", sizeof(GpuVertex)},
-              {"bvh_root", bvh_root}};
+              {"bvh_root", bvh_root},
+              {"field", field}};
 }
 
 template <typename M>
@@ -202,9 +204,9 @@ bool add_gpu_data(const GpuScene& gpu, Blob& blob, json& manifest, std::string& 
                                  "the environment", error);
   json meshes = json::array();
   for (const GpuAsset& asset : a.assets())
-    meshes.push_back(add_mesh(blob, asset.source, asset.bvh_root));
+    meshes.push_back(add_mesh(blob, asset.source, asset.bvh_root, asset.samples_per_side > 0));
   manifest["meshes"] = meshes;
-  manifest["proxy_cube"] = add_mesh(blob, gpu.proxy_cube(), -1);
+  manifest["proxy_cube"] = add_mesh(blob, gpu.proxy_cube(), -1, false);
   return error.empty();
 }
 
@@ -370,12 +372,20 @@ int run_export_web(const Scene& scene, const fs::path& out, const WebExportOptio
   GpuScene gpu;
   AssetNeeds needs;
   needs.fields = true;
+  needs.optional_fields =
+      true;  // a mesh without its assets is traced by its BVH, as gfield-view does
   needs.field_bits = 8;
   needs.source_meshes = true;
   needs.bvhs = true;  // the page's BVH mode
-  const bool ok =
-      gpu.load(scene, error) && gpu.require(needs, error) && export_web(gpu, out, options, error);
-  return ok ? 0 : 2;
+  if (!gpu.load(scene, error) || !gpu.require(needs, error))
+    return 2;
+  const std::vector<GpuAsset>& assets = gpu.assets().assets();
+  for (size_t m = 0; m < scene.meshes.size() && m < assets.size(); ++m)
+    if (assets[m].samples_per_side == 0)
+      std::fprintf(
+          stderr, "gfield-view: note: %s: traced through its BVH in the web player\n",
+          missing_asset_message(scene.meshes[m], scene.filename, "geometry field").c_str());
+  return export_web(gpu, out, options, error) ? 0 : 2;
 }
 
 }  // namespace gfield

@@ -35,8 +35,9 @@ struct WebExportOptions {
   int width = 0, height = 0;           ///< the picture the page draws by default
 };
 
-/// Writes the web folder `out` for `gpu`, a loaded GPU scene whose assets hold images, 8-bit
-/// fields, source meshes and BVHs for every mesh (a current GL context). False with a one-line
+/// Writes the web folder `out` for `gpu`, a loaded GPU scene whose assets hold images and 8-bit
+/// fields (where the mesh has them), source meshes and BVHs for every mesh (a current GL
+/// context). False with a one-line
 /// "FILE: problem" when the scene exceeds what WebGL2 holds (objects, lights, texture sizes),
 /// a file cannot be read or written, or `out` exists and is not an earlier export; then
 /// nothing is left behind.
@@ -44,8 +45,9 @@ bool export_web(const GpuScene& gpu, const std::filesystem::path& out,
                 const WebExportOptions& options, std::string& error);
 
 /// gfield-view SCENE --export-web DIR: a headless context, the scene's images, 8-bit fields,
-/// source meshes and BVHs loaded, export_web. Returns the exit code: 0; 2 for bad input or
-/// kExitNoOpenGL, with a one-line `error`.
+/// source meshes and BVHs loaded (a mesh without its assets noted on stderr: the player traces
+/// it by its BVH, as gfield-view does), export_web. Returns the exit code: 0; 2 for bad input
+/// or kExitNoOpenGL, with a one-line `error`.
 int run_export_web(const Scene& scene, const std::filesystem::path& out,
                    const WebExportOptions& options, std::string& error);
 

@@ -331,13 +331,16 @@ export class FieldRenderer {
     const external = method === 'three-mesh-bvh';
     if (external && !this.externalBvh)
       throw new PlayerError('method=three-mesh-bvh: its BVHs are not built (externalBvh)');
-    // As gfield-view's field method builds its programs (--intersect field or bvh).
-    const bvh = method !== 'field';
+    // As gfield-view's field method builds its programs (--intersect field or bvh): meshes
+    // exported without a field are traced by their BVH in every method.
+    const withField = this.manifest.meshes.map((m) => m.field !== false);
+    const byField = method === 'field' && withField.some((f) => f);
+    const byBvh = method !== 'field' || withField.some((f) => !f);
     const key = `${method} ${mode}${count ? ' counting' : ''}`;
     if (!this.tracePrograms.has(key))
       this.tracePrograms.set(key, this.#program('fullscreen.vert', 'field_trace.frag',
-          `#define GF_TRACE_MODE ${mode}\n#define GF_FIELD_MESHES ${bvh ? 0 : 1}\n` +
-          `#define GF_BVH_MESHES ${bvh ? 1 : 0}\n${external ? '#define GF_EXTERNAL_BVH 1\n' : ''}` +
+          `#define GF_TRACE_MODE ${mode}\n#define GF_FIELD_MESHES ${byField ? 1 : 0}\n` +
+          `#define GF_BVH_MESHES ${byBvh ? 1 : 0}\n${external ? '#define GF_EXTERNAL_BVH 1\n' : ''}` +
           `${count ? '#define GF_COUNT_WORK 1\n' : ''}`,
           external ? this.externalBvh.glsl : ''));
     return this.tracePrograms.get(key);
