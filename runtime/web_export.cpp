@@ -235,6 +235,15 @@ bool write_text(const fs::path& path, const std::string& text, std::string& erro
   return true;
 }
 
+// Copies file `from` to `to`; false with "FROM: cannot copy to TO: why".
+bool copy_into(const fs::path& from, const fs::path& to, std::string& error) {
+  std::error_code ec;
+  fs::copy_file(from, to, ec);
+  if (ec)
+    error = from.string() + ": cannot copy to " + to.string() + ": " + ec.message();
+  return !ec;
+}
+
 // Whether `node_modules` holds every vendor file; then `version` is three-mesh-bvh's (false with
 // `error` when its package.json names none).
 bool vendor_version(const fs::path& node_modules, std::string& version, std::string& error) {
@@ -269,14 +278,9 @@ bool add_vendor(const fs::path& node_modules, const fs::path& dir, json& manifes
     error = (dir / "vendor").string() + ": cannot create: " + ec.message();
     return false;
   }
-  for (const VendorFile& file : kVendorFiles) {
-    fs::copy_file(node_modules / file.from, dir / "vendor" / file.to, ec);
-    if (ec) {
-      error = (node_modules / file.from).string() + ": cannot copy to " +
-              (dir / "vendor" / file.to).string() + ": " + ec.message();
+  for (const VendorFile& file : kVendorFiles)
+    if (!copy_into(node_modules / file.from, dir / "vendor" / file.to, error))
       return false;
-    }
-  }
   manifest["peers"]["three-mesh-bvh"] = version;
   return true;
 }
@@ -298,14 +302,9 @@ bool write_folder(const GpuScene& gpu, const fs::path& dir, const WebExportOptio
         !write_text(dir / "shaders" / stage, text, error))
       return false;
   }
-  std::error_code ec;
-  for (const char* file : kPlayerFiles) {
-    fs::copy_file(options.player_dir / file, dir / file, ec);
-    if (ec) {
-      error = (options.player_dir / file).string() + ": cannot copy the player: " + ec.message();
+  for (const char* file : kPlayerFiles)
+    if (!copy_into(options.player_dir / file, dir / file, error))
       return false;
-    }
-  }
   return add_vendor(options.node_modules, dir, manifest, error) &&
          write_gzip(dir / "scene.bin.gz", blob.bytes, error) &&
          write_text(dir / "scene.json", manifest.dump(1) + "\n", error);
@@ -372,8 +371,8 @@ int run_export_web(const Scene& scene, const fs::path& out, const WebExportOptio
   GpuScene gpu;
   AssetNeeds needs;
   needs.fields = true;
-  needs.optional_fields =
-      true;  // a mesh without its assets is traced by its BVH, as gfield-view does
+  // A mesh without its assets is traced by its BVH, as gfield-view does.
+  needs.optional_fields = true;
   needs.field_bits = 8;
   needs.source_meshes = true;
   needs.bvhs = true;  // the page's BVH mode

@@ -213,6 +213,8 @@ export class FieldRenderer {
     this.depthProgram = this.#program('fullscreen.vert',
                                       { name: 'gfield-player.js (its depth pass)', text: DEPTH_FRAG }, '');
     this.tracePrograms = new Map();
+    this.someWithField = this.manifest.meshes.some((m) => m.field !== false);
+    this.someWithoutField = this.manifest.meshes.some((m) => m.field === false);
     this.emptyVao = gl.createVertexArray();
     // The three-mesh-bvh method's BVHs: { glsl, bind(gl, program, unit) } (ThreeMeshBvh).
     this.externalBvh = null;
@@ -333,9 +335,8 @@ export class FieldRenderer {
       throw new PlayerError('method=three-mesh-bvh: its BVHs are not built (externalBvh)');
     // As gfield-view's field method builds its programs (--intersect field or bvh): meshes
     // exported without a field are traced by their BVH in every method.
-    const withField = this.manifest.meshes.map((m) => m.field !== false);
-    const byField = method === 'field' && withField.some((f) => f);
-    const byBvh = method !== 'field' || withField.some((f) => !f);
+    const byField = method === 'field' && this.someWithField;
+    const byBvh = method !== 'field' || this.someWithoutField;
     const key = `${method} ${mode}${count ? ' counting' : ''}`;
     if (!this.tracePrograms.has(key))
       this.tracePrograms.set(key, this.#program('fullscreen.vert', 'field_trace.frag',

@@ -59,14 +59,15 @@ for (const dir of args) {
     const peer = await time(server.url, 'three-mesh-bvh');
     renderer = field.renderer;
     version = peer.peer.version;
+    const name = dir.replace(/\/$/, '').split('/').pop();
     const cell = (t) => `${t.median.toFixed(1)} (${t.min.toFixed(1)}-${t.max.toFixed(1)})`;
-    rows.push(`| ${dir.replace(/\/$/, '').split('/').pop()} | ${cell(field)} | ${cell(bvh)} | ` +
+    rows.push(`| ${name} | ${cell(field)} | ${cell(bvh)} | ` +
               `${cell(peer)} | ${(field.median / peer.median).toFixed(2)} | ` +
               `${peer.peer.buildMs.toFixed(0)} ms, ${(peer.peer.bytes / 2 ** 20).toFixed(1)} MiB |`);
     const walk = (w) => `${w.per_traversal.nodes.toFixed(1)} nodes, ` +
                         `${w.per_traversal.triangles.toFixed(1)} triangles`;
     const f = field.work.per_lookup;
-    workRows.push(`| ${dir.replace(/\/$/, '').split('/').pop()} | ${field.work.totals.lookups} | ` +
+    workRows.push(`| ${name} | ${field.work.totals.lookups} | ` +
                   `${f.field_fetches.toFixed(1)} + ${f.image_fetches.toFixed(1)}, ` +
                   `${f.newton_steps.toFixed(1)} Newton | ${walk(bvh.work)} | ${walk(peer.work)} |`);
   } finally {
