@@ -250,6 +250,12 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
   vec4 t11 = vec4(0.0f);
   float previous = GF_FAR;
   int stalls = 0;
+  // How the walk ended: 0 no intersection, 1 on the line, 2 at a seam (then r is the offset of
+  // p from the line). The point's checks follow the loop: a shader runs each fetch in a loop's
+  // body at every step (llvmpipe runs every branch under a mask), the normal's once here.
+  int found = 0;
+  vec2 r = vec2(0.0f);
+  float texel = 0.0f;
   for (int iteration = 0; iteration < GF_NEWTON_ITERATIONS; iteration++) {
     GF_COUNT(WORK_NEWTON_STEPS, 1);
     ivec2 c = gf_image_cell(x, n);
@@ -270,17 +276,16 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
     p = mix(a, b, f.y);
     vec3 pu = mix(p10 - p00, p11 - p01, f.y);
     vec3 pv = b - a;
-    vec2 r = vec2(dot(p - o, e1), dot(p - o, e2));
+    r = vec2(dot(p - o, e1), dot(p - o, e2));
+    texel = max(dot(pu, pu), dot(pv, pv));
     if (dot(r, r) <= tolerance * tolerance) {
-      uv = (x + 0.5f) / float(n);
-      int covered = gf_patch_coverage(vec4(t00.w, t10.w, t01.w, t11.w));
-      return covered == 4 ||
-             (covered > 0 && gf_clear_of_start(uv, p, start, max(dot(pu, pu), dot(pv, pv))));
+      found = 1;
+      break;
     }
     float residual = dot(r, r);
     stalls = residual > 0.5f * previous ? stalls + 1 : 0;
     if (stalls >= GF_NEWTON_STALLS) {
-      return false;
+      break;
     }
     previous = residual;
     float j11 = dot(pu, e1);
@@ -294,14 +299,8 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
       // surface around the ray is closed, see gf_trace), neither chart's patches reach it:
       // accept the border point when the line passes within one texel of it, moved onto the
       // line. At an open boundary of the surface this would be a false hit.
-      float texel = max(dot(pu, pu), dot(pv, pv));
-      if (!seams || dot(r, r) > texel) {
-        return false;
-      }
-      uv = (x + 0.5f) / float(n);
-      bool clear = gf_clear_of_start(uv, p, start, texel);
-      p -= r.x * e1 + r.y * e2;
-      return clear;
+      found = seams && dot(r, r) <= texel ? 2 : 0;
+      break;
     }
     vec2 delta = vec2(j22 * r.x - j12 * r.y, j11 * r.y - j21 * r.x) / -det;
     float delta_length = sqrt(dot(delta, delta));
@@ -310,7 +309,20 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
     }
     x = clamp(x + delta, vec2(0.0f), vec2(float(n - 1)));
   }
-  return false;
+  if (found == 0) {
+    return false;
+  }
+  uv = (x + 0.5f) / float(n);
+  int covered = gf_patch_coverage(vec4(t00.w, t10.w, t01.w, t11.w));
+  if (found == 1 && covered == 4) {
+    return true;
+  }
+  bool clear = gf_clear_of_start(uv, p, start, texel);
+  if (found == 2) {
+    p -= r.x * e1 + r.y * e2;
+    return clear;
+  }
+  return covered > 0 && clear;
 }
 
 // One lookup's line: the ray, its range, and its 2 x 2 entry and exit samples with weights (the
@@ -490,40 +502,41 @@ bool gf_within(vec2 uv, vec2 first, float reach) {
   return max(off.x, off.y) <= reach;
 }
 
-// The candidates of the 16 pairs, grouped; two groups in their order along the ray (placed by
-// the texel nearest to their mean uv).
-GfCandidates gf_gather_candidates(GF_IN(GfLine) line) {
+// The candidates of pairs [first, end) of the 16 (p = 4 * entry + exit), grouped; two groups in
+// their order along the ray (placed by the texel nearest to their mean uv). One loop over the
+// pairs, however many are read: a shader holds one copy of a pair's reading.
+GfCandidates gf_gather_candidates(GF_IN(GfLine) line, int first, int end) {
   GfCandidates c = gf_no_candidates();
   vec2 first0 = vec2(-1.0f);
   vec2 first1 = vec2(-1.0f);
   float reach = GF_GROUP_REACH;
-  for (int i = 0; i < 4; i++) {
-    for (int j = 0; j < 4; j++) {
-      GfLineHits hits;
-      bool crossed;
-      vec2 uv = gf_pair_candidate(line, i, j, hits, crossed);
-      float w = line.w_entry[i] * line.w_exit[j];
-      c.weight += crossed ? w : 0.0f;
-      c.member[4 * i + j] = uv;
-      c.layer0 |= uv.x >= 0.0f && hits.count < 0 ? 1 << (4 * i + j) : 0;
-      if (uv.x < 0.0f) {
-        continue;
-      }
-      if (c.sum0.z == 0.0f) {
-        first0 = uv;
-      }
-      if (gf_within(uv, first0, reach)) {
-        gf_candidate_add(c.sum0, c.best0, uv, w);
-        continue;
-      }
-      if (c.sum1.z == 0.0f) {
-        first1 = uv;
-      }
-      if (gf_within(uv, first1, reach)) {
-        gf_candidate_add(c.sum1, c.best1, uv, w);
-      } else {
-        c.together = false;
-      }
+  for (int pair = first; pair < end; pair++) {
+    int i = pair / 4;
+    int j = pair % 4;
+    GfLineHits hits;
+    bool crossed;
+    vec2 uv = gf_pair_candidate(line, i, j, hits, crossed);
+    float w = line.w_entry[i] * line.w_exit[j];
+    c.weight += crossed ? w : 0.0f;
+    c.member[pair] = uv;
+    c.layer0 |= uv.x >= 0.0f && hits.count < 0 ? 1 << pair : 0;
+    if (uv.x < 0.0f) {
+      continue;
+    }
+    if (c.sum0.z == 0.0f) {
+      first0 = uv;
+    }
+    if (gf_within(uv, first0, reach)) {
+      gf_candidate_add(c.sum0, c.best0, uv, w);
+      continue;
+    }
+    if (c.sum1.z == 0.0f) {
+      first1 = uv;
+    }
+    if (gf_within(uv, first1, reach)) {
+      gf_candidate_add(c.sum1, c.best1, uv, w);
+    } else {
+      c.together = false;
     }
   }
   if (c.sum1.z > 0.0f) {
@@ -619,21 +632,20 @@ bool gf_next_pair(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
 // than a texel off that, from that one; then, where the pairs whose lines hit carry at least
 // GF_PAIRS_WEIGHT, every candidate on its own.
 bool gf_next_start(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
-  if (s.stage == GF_STAGE_NEAREST_PAIR) {
+  if (s.stage == GF_STAGE_NEAREST_PAIR && !line.beyond) {
     s.stage = GF_STAGE_GROUP0;
-    if (line.beyond) {
-      GfLineHits hits;
-      bool crossed;
-      s.from = GF_STAGE_NEAREST_PAIR;
-      uv = gf_pair_candidate(line, gf_heaviest(line.w_entry), gf_heaviest(line.w_exit), hits,
-                             crossed);
-      if (uv.x >= 0.0f) {
-        return true;
-      }
-    }
   }
-  if (s.stage == GF_STAGE_GROUP0) {
-    s.candidates = gf_gather_candidates(line);
+  if (s.stage == GF_STAGE_NEAREST_PAIR || s.stage == GF_STAGE_GROUP0) {
+    // The nearest pair alone, or the 16 (one reading of pairs for both).
+    bool alone = s.stage == GF_STAGE_NEAREST_PAIR;
+    int nearest = 4 * gf_heaviest(line.w_entry) + gf_heaviest(line.w_exit);
+    s.candidates = gf_gather_candidates(line, alone ? nearest : 0, alone ? nearest + 1 : 16);
+    if (alone) {
+      s.stage = GF_STAGE_GROUP0;
+      s.from = GF_STAGE_NEAREST_PAIR;
+      uv = vec2(s.candidates.best0.x, s.candidates.best0.y);
+      return true;  // (-1, -1) when the pair has no candidate: no search, the groups next
+    }
   }
   for (int stage = GF_STAGE_GROUP0; stage < GF_STAGE_PAIRS; stage++) {
     if (stage == s.stage) {
@@ -667,16 +679,23 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   s.from = -1;
   s.pair = 0;
   s.deeper = false;
-  GfHit nearest = gf_miss();
+  // The nearest verified hit: its t, uv and point (its normal is read once, after the loop).
+  bool found = false;
+  float hit_t = 0.0f;
+  vec2 hit_uv = vec2(-1.0f);
+  vec3 hit_p = vec3(0.0f);
   float nearest_t = GF_FAR;
   vec2 uv;
   for (int visit = 0; visit < 4 + 32 + 1; visit++) {
     if (!gf_next_start(line, s, uv)) {
       break;
     }
+    if (uv.x < 0.0f) {
+      continue;
+    }
     // Once a hit is verified, a start whose surface point lies beyond it cannot lead to a nearer
     // one (GF_PRUNE_SPACINGS).
-    if (nearest.hit) {
+    if (found) {
       float t_start = gf_stored_t(line, uv);
       if ((line.last ? -t_start : t_start) > nearest_t + GF_PRUNE_SPACINGS * 2.0f * line.margin) {
         gf_search_done_with_start(s);
@@ -694,18 +713,24 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
     if (t < line.t_min || t > line.t_max || along >= nearest_t) {
       continue;
     }
-    nearest = gf_hit(t, uv, p);
+    found = true;
+    hit_t = t;
+    hit_uv = uv;
+    hit_p = p;
     nearest_t = along;
     // The nearest pair's hit is the answer, and a group's when no candidate lies outside the
     // groups (the groups are in order along the ray: a hit of the first is the nearer).
     if (s.from == GF_STAGE_NEAREST_PAIR || (s.from < GF_STAGE_PAIRS && s.candidates.together)) {
-      return nearest;
+      break;
     }
     // A group's hit: its heaviest candidate is not searched.
     s.stage = s.from == GF_STAGE_GROUP0 ? GF_STAGE_GROUP1 : s.stage;
     s.stage = s.from == GF_STAGE_GROUP1 ? GF_STAGE_PAIRS : s.stage;
   }
-  return nearest;
+  if (!found) {
+    return gf_miss();  // WebGL has no ?: of structs
+  }
+  return gf_hit(hit_t, hit_uv, hit_p);
 }
 
 // The first hit beyond the ray's origin (last = false) or the last hit before its end (last =

@@ -68,17 +68,18 @@ uint gf_field_word(int i) {
 // floats in two words (runtime/gpu_assets.cpp, gfield/gpu_storage.hpp: field_interior_words).
 vec2 gf_field_interior_texel(int i) {
   WORK_ADD(WORK_FIELD_FETCHES, 1);
-  if (gs_field_bits == 8) {
-    uint w = gs_field_word(gs_field_interior + i / 2) >> uint(16 * (i % 2));
-    return vec2(gf_decode_field_code(float(w & 255u), 8),
-                gf_decode_field_code(float((w >> 8u) & 255u), 8));
+  // One word holds both codes below 32 bits: a word's half (8 bits) or the whole word (16).
+  bool split = gs_field_bits == 32;
+  int word = gs_field_bits == 8 ? i / 2 : (split ? 2 * i : i);
+  uint w = gs_field_word(gs_field_interior + word);
+  if (split) {
+    return vec2(uintBitsToFloat(w), uintBitsToFloat(gs_field_word(gs_field_interior + word + 1)));
   }
-  if (gs_field_bits == 16) {
-    uint w = gs_field_word(gs_field_interior + i);
-    return vec2(gf_decode_field_code(float(w & 65535u), 16), gf_decode_field_code(float(w >> 16u), 16));
-  }
-  return vec2(uintBitsToFloat(gs_field_word(gs_field_interior + 2 * i)),
-              uintBitsToFloat(gs_field_word(gs_field_interior + 2 * i + 1)));
+  int bits = gs_field_bits;
+  uint mask = (1u << uint(bits)) - 1u;
+  w >>= uint(bits == 8 ? 16 * (i % 2) : 0);
+  return vec2(gf_decode_field_code(float(w & mask), bits),
+              gf_decode_field_code(float((w >> uint(bits)) & mask), bits));
 }
 int gf_image_size() { return gs_image_size; }
 // Texel (i, j) of the selected image (0 <= i, j < n) in its layer.
