@@ -5,7 +5,10 @@
 // frame with the mesh looked up in its geometry field (refined) and traced exactly through its
 // BVH, the PSNR of each against the Embree reference tracer's picture (1 spp, same depth), the
 // GPU bytes of each, and the work per lookup or traversal (counted on the GPU); and
-// --intersect auto's time against the faster of the two, with the route it took. Prints markdown.
+// --intersect auto's time against the faster of the two, with the route it took. Then, per mesh,
+// rays that hit it and rays that miss it apart (view rays, mirror reflections off its surface,
+// refractions into it): the work of the field lookup and of the BVH walk per ray, and the GPU
+// lookup's agreement with the exact cast (bench/ray_work.hpp). Prints markdown.
 // Assets are built with `gfield build` (its defaults) into a temporary folder.
 //
 // Usage: bench_runtime_complexity [--frames F] [--depth D] [SIZE]   (default 2 frames, depth 4,
@@ -21,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/pn_subdivision.hpp"
+#include "bench/ray_work.hpp"
 #include "example_scenes.hpp"
 #include "gl_bench_setup.hpp"
 #include "preprocess/reference_tracer.hpp"
@@ -32,6 +36,9 @@ namespace fs = std::filesystem;
 using namespace gfield;
 
 namespace {
+
+/// Rays per family of the per-ray table, at most (each split into hits and misses).
+constexpr size_t kRaysPerFamily = 16384;
 
 /// `mesh` moved and scaled so that its box has `target`'s centre and diagonal.
 TriangleMesh fitted(TriangleMesh mesh, const TriangleMesh& target) {
@@ -153,6 +160,61 @@ void bench_scene(const SeriesMesh& m, const std::string& file, const char* kind,
   std::fflush(stdout);
 }
 
+/// Work per ray of `work` over `rays` rays: "F + I fetches, N Newton".
+std::string work_text(const LookupWork& work, size_t rays) {
+  const auto per = [&](int k) { return double(work.counts[size_t(k)]) / double(rays); };
+  char text[96];
+  std::snprintf(text, sizeof(text), "%.1f + %.1f fetches, %.1f Newton",
+                per(gpu::WORK_FIELD_FETCHES), per(gpu::WORK_IMAGE_FETCHES),
+                per(gpu::WORK_NEWTON_STEPS));
+  return text;
+}
+
+/// The per-ray rows of mesh `m` (its glass scene's assets): each family's rays that hit and rays
+/// that miss, their work counted on the CPU, field against BVH, and the GPU lookup's answers.
+void bench_rays(const SeriesMesh& m, const std::string& scene_file, size_t count) {
+  Scene scene;
+  TriangleMesh mesh;
+  GeometryImage image;
+  GeometryField field;
+  EmbreeMesh embree;
+  FieldLookup lookup;
+  GpuAssets assets;
+  AssetNeeds needs;
+  needs.fields = needs.bvhs = true;
+  std::string error;
+  if (!load_scene(scene_file, scene, error, OutsidePaths::kAllowed) ||
+      !load_mesh(m.file, mesh, error) ||
+      !load_geometry_image(m.asset + ".gimage.exr", image, error) ||
+      !load_geometry_field(m.asset + ".gfield.exr", field, error) || !embree.build(mesh, error) ||
+      !assets.require(scene, needs, error)) {
+    std::fprintf(stderr, "%s: %s\n", m.name.c_str(), error.c_str());
+    return;
+  }
+  const GeometryField stored = quantized_field(field, 8);  // what the GPU reads
+  if (!make_field_lookup(stored, image, lookup, error)) {
+    std::fprintf(stderr, "%s: %s\n", m.name.c_str(), error.c_str());
+    return;
+  }
+  const std::vector<glm::vec3> positions(mesh.positions.begin(), mesh.positions.end());
+  const MeshBvh bvh = build_mesh_bvh(positions, mesh.triangles);
+  const Box& box = assets.asset(0).box;
+  for (const RayFamily& family :
+       ray_families(embree, mesh, box, surface_offsets(image, box), count)) {
+    for (const bool exact : {true, false}) {
+      const RaySet& set = exact ? family.hits : family.misses;
+      SetWork w;
+      if (set.rays.size() < 256 ||
+          !work_of_set(assets, lookup, bvh, positions, mesh, set, family.self_t_min, exact, w))
+        continue;
+      std::printf("| %s | %zu | %s | %s | %zu | %.2f | %s | %.1f |\n", m.name.c_str(), m.faces,
+                  family.name, exact ? "hit" : "miss", set.rays.size(), w.agree,
+                  work_text(w.field, set.rays.size()).c_str(), w.bvh_nodes);
+      std::fflush(stdout);
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -183,5 +245,17 @@ int main(int argc, char** argv) {
       bench_scene(m, series_scene(m, mirror, folder.path), mirror ? "mirror" : "glass", size, depth,
                   frames);
   std::printf("\n%s\n", kFrameTimeNote);
+  std::printf(
+      "\nPer ray, rays that hit the mesh and rays that miss it apart (Embree's exact cast), "
+      "%zu rays per family at most: the GPU lookup's answers that agree with the exact "
+      "cast, and the work of the field lookup and of the BVH walk, counted on the CPU by "
+      "the code the shaders run\n\n",
+      kRaysPerFamily);
+  std::printf(
+      "| mesh | faces | rays | exact | count | field agrees %% | field work | BVH nodes "
+      "|\n");
+  std::printf("|---|---|---|---|---|---|---|---|\n");
+  for (const SeriesMesh& m : series)
+    bench_rays(m, series_scene(m, false, folder.path), kRaysPerFamily);
   return 0;
 }

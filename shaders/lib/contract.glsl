@@ -123,9 +123,11 @@ GF_CONST int UNIT_GI_ALBEDO = 22;      // 2D array RGBA16F: geometry-image albed
 GF_CONST int UNIT_MESH_TEXTURES = 23;  // 2D array RGBA16F: the meshes' own textures (linear
                                        // rgb, row 0 at v = 0), bilinear, repeating
 GF_CONST int UNIT_GBUFFER_ALBEDO = 24;  // rgb albedo of the first hit (diffuse surfaces)
+GF_CONST int UNIT_PROBE_SELF = 25;  // field probe, rays leaving the surface: the origin of their
+                                    // own lookup (xyz) and the side they leave on (w: facing)
 // Units in all: every unit above is below it, and no two are the same (tests/core/
 // gpu_contract_test.cpp checks both at compile time).
-GF_CONST int UNIT_COUNT = 25;
+GF_CONST int UNIT_COUNT = 26;
 
 // The web player (docs/web.md): WebGL2 has no storage buffers. The objects and lights are
 // uniform blocks of at most these many (std140: 48 GpuObjects fill 15 of the 16 KB every WebGL2

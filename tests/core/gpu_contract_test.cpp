@@ -49,6 +49,7 @@ constexpr UnitRange kUnits[] = {
     GF_UNITS(UNIT_GI_ALBEDO, 1),
     GF_UNITS(UNIT_MESH_TEXTURES, 1),
     GF_UNITS(UNIT_GBUFFER_ALBEDO, 1),
+    GF_UNITS(UNIT_PROBE_SELF, 1),
 };
 #undef GF_UNITS
 

@@ -4,19 +4,26 @@
 // the exact sphere.
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <random>
 
 #include <gtest/gtest.h>
 
+#include "geometry/mesh_io.hpp"
 #include "gfield/field_lookup.hpp"
 #include "gfield/gpu_storage.hpp"
+#include "gfield/scene.hpp"
 #include "runtime/field_probe.hpp"
 #include "runtime/shader_program.hpp"
 #include "synthetic_assets.hpp"
+#include "test_support/build_paths.hpp"
 #include "test_support/gl_suite.hpp"
 
 namespace gfield {
 namespace {
+namespace fs = std::filesystem;
 
 /// Camera-like rays from a viewpoint at the sphere plus random rays crossing the box.
 std::vector<Ray> test_rays() {
@@ -54,19 +61,25 @@ void expect_gpu_agrees(const GpuAssets& assets, const FieldLookup& lookup,
   std::string error;
   for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
     for (bool last : {false, true}) {
-      std::vector<glm::vec4> gpu;
-      ASSERT_TRUE(probe_field_gpu(assets, asset, rays, mode, last, default_shader_dir().string(),
-                                  gpu, error))
+      ProbeQuery query;
+      query.mode = mode;
+      query.last_hit = last;
+      ProbeResult probe;
+      ASSERT_TRUE(
+          probe_rays_gpu(assets, asset, rays, query, default_shader_dir().string(), probe, error))
           << error;
-      size_t agree = 0, hits = 0, truth = 0;
+      const std::vector<glm::vec4>& gpu = probe.hits;
+      size_t agree = 0, hits = 0, truth = 0, normals = 0;
       for (size_t i = 0; i < rays.size(); ++i) {
         const FieldHit cpu =
             last ? lookup_last_hit(lookup, rays[i], mode) : lookup_first_hit(lookup, rays[i], mode);
         const bool gpu_hit = gpu[i].x > 0.5f;
         hits += cpu.hit ? 1 : 0;
         if (gpu_hit == cpu.hit &&
-            (!cpu.hit || glm::distance(glm::vec2(gpu[i].z, gpu[i].w), cpu.uv) < 1e-3f))
+            (!cpu.hit || glm::distance(glm::vec2(gpu[i].z, gpu[i].w), cpu.uv) < 1e-3f)) {
           ++agree;
+          normals += !cpu.hit || glm::dot(probe.normals[i], cpu.normal) > 0.999f ? 1 : 0;
+        }
         // Ground truth for the camera rays (first hit, unbounded t).
         if (!last && i < 96 * 96) {
           const bool exact = test::sphere_hit(rays[i].origin, rays[i].direction) >= 0.0f;
@@ -78,6 +91,7 @@ void expect_gpu_agrees(const GpuAssets& assets, const FieldLookup& lookup,
                    std::to_string(bits) + " bits");
       EXPECT_GE(agreement, 0.999) << agree << " of " << rays.size();
       EXPECT_GT(hits, rays.size() / 4);  // the rays do exercise hits
+      EXPECT_EQ(normals, agree) << "the normals of hits that agree";
       if (!last && mode == LookupMode::kRefined) {
         EXPECT_GE(double(truth) / (96.0 * 96.0), 0.99);
       }
@@ -106,6 +120,56 @@ TEST_F(FieldProbe, GpuLookupAgreesWithCpuLookup) {
     EXPECT_EQ(assets.assets()[0].field_bytes, field_gpu_bytes(field, bits));
     expect_gpu_agrees(assets, lookup, rays, bits);
   }
+}
+
+// Rays leaving the surface, looked up as the runtime looks up the mesh a ray leaves
+// (gf_trace_leaving): the GPU against the CPU (lookup_first_hit_leaving), refined.
+TEST_F(FieldProbe, GpuLookupOfRaysLeavingTheSurfaceAgreesWithCpuLookup) {
+  std::string error;
+  GeometryImage image;
+  GeometryField field;
+  test::make_sphere_assets(64, 8, image, field);
+  const GeometryField stored = quantized_field(field, 8);
+  FieldLookup lookup;
+  ASSERT_TRUE(make_field_lookup(stored, image, lookup, error)) << error;
+  GpuAssets assets;
+  ASSERT_TRUE(assets.upload({&image}, {&field}, 8, error)) << error;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  std::vector<Ray> rays;
+  ProbeQuery query;
+  query.self_t_min = 4e-3f;
+  for (int k = 0; k < 4096; ++k) {
+    const glm::vec3 p = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
+    const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
+    const float facing = glm::dot(p, d) >= 0.0f ? 1.0f : -1.0f;  // the sphere's normal is p
+    rays.push_back({p + 1e-3f * facing * p, d, 2e-3f});
+    query.self.emplace_back(p + 2e-3f * facing * p, facing);
+  }
+  ProbeResult probe;
+  ASSERT_TRUE(probe_rays_gpu(assets, 0, rays, query, default_shader_dir().string(), probe, error))
+      << error;
+  size_t agree = 0, hits = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const glm::vec4 self = query.self[i];
+    const FieldHit cpu = lookup_first_hit_leaving(lookup, rays[i], glm::vec3(self),
+                                                  query.self_t_min, self.w, LookupMode::kRefined);
+    const bool gpu_hit = probe.hits[i].x > 0.5f;
+    hits += cpu.hit ? 1 : 0;
+    agree += gpu_hit == cpu.hit &&
+                     (!cpu.hit ||
+                      glm::distance(glm::vec2(probe.hits[i].z, probe.hits[i].w), cpu.uv) < 1e-3f)
+                 ? 1
+                 : 0;
+  }
+  // Rays into the solid hit the far side; rays out of it miss: about half of each.
+  EXPECT_GT(hits, rays.size() / 4);
+  EXPECT_LT(hits, 3 * rays.size() / 4);
+  EXPECT_GE(double(agree) / double(rays.size()), 0.999);
+  query.last_hit = true;
+  EXPECT_FALSE(probe_rays_gpu(assets, 0, rays, query, default_shader_dir().string(), probe, error));
+  EXPECT_EQ(error,
+            "probe: rays leaving the surface need a self origin each and look up first hits");
 }
 
 /// The same sphere with uv mirrored to (1 - u, 1 - v): texels reversed, field uvs mirrored.
@@ -150,6 +214,76 @@ TEST_F(FieldProbe, ImagesOfDifferentSizesShareTheArray) {
     SCOPED_TRACE("asset " + std::to_string(a));
     expect_gpu_agrees(assets, lookup, rays, 8, a);
   }
+}
+
+/// Every triangle of `mesh` tested (double precision): the nearest t in [t_min, t_max], or -1.
+double brute_force_t(const TriangleMesh& mesh, const Ray& ray) {
+  const glm::dvec3 o(ray.origin), d(ray.direction);
+  double best = -1.0;
+  for (const glm::ivec3& f : mesh.triangles) {
+    const glm::dvec3 p0 = mesh.positions[size_t(f[0])];
+    const glm::dvec3 e1 = mesh.positions[size_t(f[1])] - p0;
+    const glm::dvec3 e2 = mesh.positions[size_t(f[2])] - p0;
+    const glm::dvec3 p = glm::cross(d, e2);
+    const double det = glm::dot(e1, p);
+    if (det == 0.0)
+      continue;
+    const glm::dvec3 r = o - p0, q = glm::cross(r, e1);
+    const double u = glm::dot(r, p) / det, v = glm::dot(d, q) / det, t = glm::dot(e2, q) / det;
+    if (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t >= ray.t_min && t <= ray.t_max &&
+        (best < 0.0 || t < best))
+      best = t;
+  }
+  return best;
+}
+
+// The probe's BVH route (bench_runtime_complexity times it beside the lookup): spot's BVH as the
+// runtime loads it, against every triangle tested, for segments through its box.
+TEST_F(FieldProbe, BvhProbeFindsTheNearestTriangle) {
+  const fs::path dir = fs::path(gfield::build_paths::test_tmp()) / "field_probe_bvh";
+  fs::create_directories(dir);
+  const std::string mesh_file = std::string(gfield::build_paths::mesh_dir()) + "/spot.obj";
+  std::ofstream(dir / "scene.json") << R"({"camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
+    "objects": [{"shape": "mesh", "file": ")" +
+                                           mesh_file + R"(", "material": {"type": "mirror"}}]})";
+  Scene scene;
+  TriangleMesh mesh;
+  std::string error;
+  ASSERT_TRUE(load_scene((dir / "scene.json").string(), scene, error, OutsidePaths::kAllowed))
+      << error;
+  ASSERT_TRUE(load_mesh(mesh_file, mesh, error)) << error;
+  AssetNeeds needs;
+  needs.bvhs = true;
+  GpuAssets assets;
+  ASSERT_TRUE(assets.require(scene, needs, error)) << error;
+  const Box box = assets.asset(0).mesh_bounds;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<Ray> rays;
+  for (int k = 0; k < 2048; ++k) {
+    const glm::vec3 a = box.min + (box.max - box.min) * glm::vec3(u(rng), u(rng), u(rng));
+    const glm::vec3 b = box.min + (box.max - box.min) * glm::vec3(u(rng), u(rng), u(rng));
+    rays.push_back({2.0f * a - b, b - a, 0.0f, 3.0f});
+  }
+  ProbeQuery query;
+  query.bvh = true;
+  ProbeResult probe;
+  ASSERT_TRUE(probe_rays_gpu(assets, 0, rays, query, default_shader_dir().string(), probe, error))
+      << error;
+  size_t agree = 0, hits = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const double t = brute_force_t(mesh, rays[i]);
+    const bool hit = probe.hits[i].x > 0.5f;
+    hits += t >= 0.0 ? 1 : 0;
+    agree += hit == (t >= 0.0) && (!hit || std::abs(probe.hits[i].y - t) < 1e-4 * (1.0 + t)) &&
+                     (!hit || std::abs(glm::length(probe.normals[i]) - 1.0f) < 1e-4f)
+                 ? 1
+                 : 0;
+  }
+  EXPECT_GT(hits, rays.size() / 4);  // the rays do exercise hits
+  EXPECT_GE(agree, rays.size() - 2) << "of " << rays.size() << " rays";
+  EXPECT_FALSE(probe_rays_gpu(assets, 1, rays, query, default_shader_dir().string(), probe, error));
+  EXPECT_EQ(error, "probe: no asset 1");
 }
 
 }  // namespace
