@@ -1,9 +1,10 @@
 #pragma once
 // What one ray costs, rays that hit the mesh and rays that miss it apart (by Embree's exact
-// cast), the field lookup (refined) against the BVH, for bench_runtime_complexity: the work of
-// each ray counted on the CPU by the code the shaders run (the lookup:
-// shaders/lib/field_lookup.glsl; the walk: shaders/lib/bvh_trace.glsl), and the GPU lookup's
-// answers (runtime/field_probe.hpp) against the exact cast.
+// cast), the field lookup (refined) against the BVH, for bench_runtime_complexity: each route's
+// time per ray in the probe pass (runtime/field_probe.hpp: one fragment per ray, the rays of one
+// kind together, so that no group mixes kinds), the GPU lookup's answers against the exact cast,
+// and the work of each ray counted on the CPU by the code the shaders run (the lookup:
+// shaders/lib/field_lookup.glsl; the walk: shaders/lib/bvh_trace.glsl).
 
 #include <cstdio>
 #include <string>
@@ -69,27 +70,41 @@ inline std::vector<RayFamily> ray_families(const EmbreeMesh& embree, const Trian
   return families;
 }
 
-/// One set's figures: the GPU lookup's answers that agree with the exact cast, and the work per
-/// ray counted on the CPU.
+/// One set's figures: each route's ns per ray in the probe pass, the GPU lookup's answers that
+/// agree with the exact cast, and the work per ray counted on the CPU.
 struct SetWork {
+  double field_ns = 0.0, bvh_ns = 0.0;
   double agree = 0.0;  ///< percent
   LookupWork field;
   double bvh_nodes = 0.0;
 };
 
-/// Counts `set` (rays that all hit, `exact`, or all miss) both ways and looks it up on the GPU.
+/// The probe of `set` by `query`, 5 timed passes: its answers, and ns per ray in `ns`.
+inline bool probe_set(const GpuAssets& assets, const RaySet& set, const ProbeQuery& query,
+                      ProbeResult& result, double& ns) {
+  std::string error;
+  if (!probe_rays_gpu(assets, 0, set.rays, query, 5, default_shader_dir().string(), result,
+                      error)) {
+    std::fprintf(stderr, "probe: %s\n", error.c_str());
+    return false;
+  }
+  ns = result.ms * 1e6 / double(set.rays.size());
+  return true;
+}
+
+/// Times, counts and checks `set` (rays that all hit, `exact`, or all miss) both ways.
 inline bool work_of_set(const GpuAssets& assets, const FieldLookup& lookup, const MeshBvh& bvh,
                         const std::vector<glm::vec3>& positions, const TriangleMesh& mesh,
                         const RaySet& set, float self_t_min, bool exact, SetWork& work) {
   ProbeQuery query;
   query.self = set.self;
   query.self_t_min = self_t_min;
-  ProbeResult gpu;
-  std::string error;
-  if (!probe_rays_gpu(assets, 0, set.rays, query, default_shader_dir().string(), gpu, error)) {
-    std::fprintf(stderr, "probe: %s\n", error.c_str());
+  ProbeQuery walk;
+  walk.bvh = true;
+  ProbeResult gpu, walked;
+  if (!probe_set(assets, set, query, gpu, work.field_ns) ||
+      !probe_set(assets, set, walk, walked, work.bvh_ns))
     return false;
-  }
   FieldLookup counted = lookup;
   counted.work = &work.field;
   size_t agree = 0, nodes = 0;

@@ -7,8 +7,8 @@
 // GPU bytes of each, and the work per lookup or traversal (counted on the GPU); and
 // --intersect auto's time against the faster of the two, with the route it took. Then, per mesh,
 // rays that hit it and rays that miss it apart (view rays, mirror reflections off its surface,
-// refractions into it): the work of the field lookup and of the BVH walk per ray, and the GPU
-// lookup's agreement with the exact cast (bench/ray_work.hpp). Prints markdown.
+// refractions into it): the time and work per ray of the field lookup and of the BVH walk, and
+// the GPU lookup's agreement with the exact cast (bench/ray_work.hpp). Prints markdown.
 // Assets are built with `gfield build` (its defaults) into a temporary folder.
 //
 // Usage: bench_runtime_complexity [--frames F] [--depth D] [SIZE]   (default 2 frames, depth 4,
@@ -207,8 +207,9 @@ void bench_rays(const SeriesMesh& m, const std::string& scene_file, size_t count
       if (set.rays.size() < 256 ||
           !work_of_set(assets, lookup, bvh, positions, mesh, set, family.self_t_min, exact, w))
         continue;
-      std::printf("| %s | %zu | %s | %s | %zu | %.2f | %s | %.1f |\n", m.name.c_str(), m.faces,
-                  family.name, exact ? "hit" : "miss", set.rays.size(), w.agree,
+      std::printf("| %s | %zu | %s | %s | %zu | %.0f | %.0f | %.2f | %.2f | %s | %.1f |\n",
+                  m.name.c_str(), m.faces, family.name, exact ? "hit" : "miss", set.rays.size(),
+                  w.field_ns, w.bvh_ns, w.field_ns / w.bvh_ns, w.agree,
                   work_text(w.field, set.rays.size()).c_str(), w.bvh_nodes);
       std::fflush(stdout);
     }
@@ -247,14 +248,16 @@ int main(int argc, char** argv) {
   std::printf("\n%s\n", kFrameTimeNote);
   std::printf(
       "\nPer ray, rays that hit the mesh and rays that miss it apart (Embree's exact cast), "
-      "%zu rays per family at most: the GPU lookup's answers that agree with the exact "
-      "cast, and the work of the field lookup and of the BVH walk, counted on the CPU by "
-      "the code the shaders run\n\n",
+      "%zu rays per family at most: ns per ray of each route in the probe pass (one "
+      "fragment per ray, the median of 5 timed passes, each from a finished GPU to its "
+      "end), the GPU lookup's answers that agree with the exact cast, and the work of the "
+      "field lookup and of the BVH walk, counted on the CPU by the code the shaders "
+      "run\n\n",
       kRaysPerFamily);
   std::printf(
-      "| mesh | faces | rays | exact | count | field agrees %% | field work | BVH nodes "
-      "|\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+      "| mesh | faces | rays | exact | count | field ns | BVH ns | field / BVH | field "
+      "agrees %% | field work | BVH nodes |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const SeriesMesh& m : series)
     bench_rays(m, series_scene(m, false, folder.path), kRaysPerFamily);
   return 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gfield/gpu_contract.hpp"
+#include "gfield/stopwatch.hpp"
 #include "runtime/shader_program.hpp"
 
 namespace gfield {
@@ -46,9 +47,29 @@ void upload_rays(const std::vector<Ray>& rays, const std::vector<glm::vec4>& sel
 
 /// The probe program's defines for `query`.
 std::string probe_defines(const ProbeQuery& query) {
+  std::string defines = "#define PROBE_WIDTH " + std::to_string(kProbeWidth) + "\n";
   if (query.bvh)
-    return "#define PROBE_BVH 1\n";
-  return query.self.empty() ? "" : "#define PROBE_LEAVING 1\n";
+    return defines + "#define PROBE_BVH 1\n";
+  return defines + (query.self.empty() ? "" : "#define PROBE_LEAVING 1\n");
+}
+
+/// Draws the probe pass 1 + `timed` times; the median ms of the timed passes (0: none), each
+/// from a finished GPU to the pass's end (glFinish: llvmpipe's timestamp queries do not wait for
+/// its rasteriser threads).
+double draw_passes(int timed) {
+  std::vector<double> ms;
+  for (int pass = 0; pass <= timed; ++pass) {
+    glFinish();
+    const Stopwatch watch;
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glFinish();
+    if (pass > 0)
+      ms.push_back(watch.milliseconds());
+  }
+  if (ms.empty())
+    return 0.0;
+  std::nth_element(ms.begin(), ms.begin() + long(ms.size() / 2), ms.end());
+  return ms[ms.size() / 2];
 }
 
 /// Binds what the probe program reads and sets its uniforms for `query` on asset `a`.
@@ -80,8 +101,8 @@ void bind_query(const GpuAssets& assets, const GpuAsset& a, const ProbeQuery& qu
 }  // namespace
 
 bool probe_rays_gpu(const GpuAssets& assets, int asset, const std::vector<Ray>& rays,
-                    const ProbeQuery& query, const std::string& shader_dir, ProbeResult& result,
-                    std::string& error) {
+                    const ProbeQuery& query, int timed, const std::string& shader_dir,
+                    ProbeResult& result, std::string& error) {
   if (asset < 0 || asset >= int(assets.assets().size())) {
     error = "probe: no asset " + std::to_string(asset);
     return false;
@@ -115,8 +136,9 @@ bool probe_rays_gpu(const GpuAssets& assets, int asset, const std::vector<Ray>& 
   glBindTextureUnit(gpu::UNIT_PROBE_DIRECTIONS, t.directions.id());
   glBindTextureUnit(gpu::UNIT_PROBE_SELF, t.self.id());
   bind_query(assets, a, query, program);
+  glUniform1i(program.uniform("u_ray_count"), int(rays.size()));
   glBindVertexArray(vertex_array.make());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  result.ms = draw_passes(timed);
   std::vector<glm::vec4> hits(size_t(t.width) * size_t(t.height)), normals(hits.size());
   const GLsizei bytes = GLsizei(hits.size() * sizeof(glm::vec4));
   glGetTextureImage(t.hits.id(), 0, GL_RGBA, GL_FLOAT, bytes, hits.data());

@@ -30,11 +30,21 @@ uniform bool u_last;
 layout(binding = UNIT_PROBE_ORIGINS) uniform sampler2D u_ray_origins;
 layout(binding = UNIT_PROBE_DIRECTIONS) uniform sampler2D u_ray_directions;
 
+// The rays given: the grid's texels past them, and the lanes past the grid's edge that a GPU may
+// shade with the rest of a block (llvmpipe shades 4 x 4 blocks), read no ray. Such a lane would
+// read zeros, a ray of zero direction, that the BVH walk spends tens of ms on in llvmpipe.
+uniform int u_ray_count;
+
 layout(location = 0) out vec4 o_hit;
 layout(location = 1) out vec4 o_normal;
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+  o_hit = vec4(0.0f, 0.0f, -1.0f, -1.0f);
+  o_normal = vec4(0.0f);
+  if (pixel.y * PROBE_WIDTH + pixel.x >= u_ray_count) {
+    return;
+  }
   vec4 origin = texelFetch(u_ray_origins, pixel, 0);
   vec4 direction = texelFetch(u_ray_directions, pixel, 0);
 #ifdef PROBE_BVH
