@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <system_error>
 #include <vector>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gfield/gpu_contract.hpp"
+#include "gfield/printable.hpp"
 #include "runtime/gl_context.hpp"
 #include "runtime/glsl_es.hpp"
 
@@ -384,7 +386,18 @@ int run_export_web(const Scene& scene, const fs::path& out, const WebExportOptio
       std::fprintf(
           stderr, "gfield-view: note: %s: traced through its BVH in the web player\n",
           missing_asset_message(scene.meshes[m], scene.filename, "geometry field").c_str());
-  return export_web(gpu, out, options, error) ? 0 : 2;
+  if (!export_web(gpu, out, options, error))
+    return 2;
+  std::uintmax_t bytes = 0;
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(out, ec))
+    bytes += entry.is_regular_file(ec) ? entry.file_size(ec) : 0;
+  std::printf(
+      "wrote %s: %.1f MB, %zu meshes; serve it (python3 -m http.server --directory %s) "
+      "and open its index.html\n",
+      printable(out.string()).c_str(), double(bytes) / 1e6, scene.meshes.size(),
+      printable(out.string()).c_str());
+  return 0;
 }
 
 }  // namespace gfield

@@ -21,6 +21,11 @@ struct CommandError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A command that ran another program, which failed and said why: exit with its status.
+struct CommandExit {
+  int status = 2;
+};
+
 /// Prints each warning as "gfield: warning: WARNING" on stderr (the command goes on).
 inline void print_warnings(const std::vector<std::string>& warnings) {
   for (const std::string& w : warnings) {
@@ -45,5 +50,6 @@ void add_image_command(CLI::App& app);
 void add_thickness_command(CLI::App& app);
 void add_assets_command(CLI::App& app);
 void add_export_gltf_command(CLI::App& app);
+void add_export_web_command(CLI::App& app);
 
 }  // namespace gfield

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   gfield::add_thickness_command(app);
   gfield::add_assets_command(app);
   gfield::add_export_gltf_command(app);
+  gfield::add_export_web_command(app);
 
   if (argc > 1 && argv[1][0] != '-') {  // a word that names no command: say so, not "required"
     const std::vector<CLI::App*> commands = app.get_subcommands([](CLI::App*) { return true; });
@@ -58,6 +59,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "gfield: %s (see gfield --help)\n", gfield::printable(e.what()).c_str());
     return 2;
+  } catch (const gfield::CommandExit& e) {
+    return e.status;
   } catch (const gfield::CommandError& e) {
     std::fprintf(stderr, "gfield: error: %s\n", gfield::printable(e.what()).c_str());
     return 2;

@@ -1,0 +1,107 @@
+// gfield export-web SCENE -o DIR: the web player and the scene as gfield-view draws it with
+// geometry fields (docs/web.md). The export reads back the runtime's GPU scene, so gfield-view
+// writes it (gfield-view SCENE --export-web DIR): gfield links no OpenGL. gfield-view is looked
+// for as $GFIELD_VIEW, beside this executable, in the build tree, then on the PATH.
+
+#include <CLI/CLI.hpp>
+
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "preprocess/cli/commands.hpp"
+
+extern char** environ;
+
+namespace gfield {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The gfield-view executable: $GFIELD_VIEW, else the one beside this executable (an install),
+/// else the build tree's, else "gfield-view" (the PATH).
+std::string view_executable() {
+  if (const char* env = std::getenv("GFIELD_VIEW"); env != nullptr && env[0] != '\0')
+    return env;
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec && fs::is_regular_file(self.parent_path() / "gfield-view", ec))
+    return (self.parent_path() / "gfield-view").string();
+  if (fs::is_regular_file(GFIELD_BUILD_TREE_VIEW, ec))
+    return GFIELD_BUILD_TREE_VIEW;
+  return "gfield-view";
+}
+
+/// Runs `argv` (argv[0] looked up on the PATH when it has no '/'), its output ours; its exit
+/// status, or -1 when it could not be started.
+int run_program(std::vector<std::string> argv) {
+  std::vector<char*> args;
+  for (std::string& a : argv)
+    args.push_back(a.data());
+  args.push_back(nullptr);
+  std::fflush(stdout);
+  pid_t pid = 0;
+  int status = 0;
+  if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) != 0 ||
+      waitpid(pid, &status, 0) != pid)
+    return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+/// export-web's arguments.
+struct ExportWebArguments {
+  std::string scene;
+  std::string output;
+  std::string assets;
+  std::string size;
+  bool rebuild_stale = false;
+  bool allow_outside = false;
+};
+
+}  // namespace
+
+void add_export_web_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "export-web",
+      "Write DIR: the web player (index.html) and the scene as gfield-view draws it with\n"
+      "geometry fields, in browser-ready files, for any static web server (docs/web.md). Runs\n"
+      "gfield-view SCENE --export-web DIR ($GFIELD_VIEW, else the gfield-view beside gfield).");
+  auto a = std::make_shared<ExportWebArguments>();
+  cmd->add_option("SCENE", a->scene, "scene file (.json, .gltf, .glb)")->required();
+  cmd->add_option("-o,--output", a->output, "the folder to write (new, or an earlier export)")
+      ->required();
+  cmd->add_option("--assets", a->assets,
+                  "folder of prebuilt assets (NAME.gimage.exr/.gfield.exr for mesh NAME.obj)");
+  cmd->add_option("--size", a->size, "the player's picture size WxH (default: the scene's)");
+  cmd->add_flag("--rebuild-stale", a->rebuild_stale,
+                "rebuild an asset built from another mesh or an older version of its mesh");
+  cmd->add_flag("--allow-outside-paths", a->allow_outside,
+                "read the files a scene or glTF file names outside its folder");
+  cmd->callback([a] {
+    std::vector<std::string> argv = {view_executable(), a->scene, "--export-web", a->output};
+    if (!a->assets.empty())
+      argv.insert(argv.end(), {"--assets", a->assets});
+    if (!a->size.empty())
+      argv.insert(argv.end(), {"--size", a->size});
+    if (a->rebuild_stale)
+      argv.push_back("--rebuild-stale");
+    if (a->allow_outside)
+      argv.push_back("--allow-outside-paths");
+    const int status = run_program(argv);
+    if (status < 0)
+      throw CommandError(argv[0] +
+                         ": cannot be run (export-web needs gfield-view: install it, "
+                         "or name it in GFIELD_VIEW)");
+    if (status != 0)
+      throw CommandExit{status};  // gfield-view has said what went wrong
+  });
+}
+
+}  // namespace gfield
