@@ -20,11 +20,10 @@
 namespace gfield {
 
 /// Rays of one kind: plain, or leaving the surface (`self`: per ray, the origin of its own
-/// lookup and its facing; `left`: the triangle it leaves, which its exact cast ignores).
+/// lookup and its facing).
 struct RaySet {
   std::vector<Ray> rays;
   std::vector<glm::vec4> self;
-  std::vector<int> left;
 };
 
 /// A family of rays the runtime casts at a mesh, split by the exact cast.
@@ -44,7 +43,6 @@ inline void split_by_exact_cast(const EmbreeMesh& embree, const SurfaceRays& all
                       ? family.hits
                       : family.misses;
     set.rays.push_back(r);
-    set.left.push_back(left);
     if (leaving)
       set.self.emplace_back(all.self_origins[i], all.facing[i]);
   }
@@ -70,11 +68,12 @@ inline std::vector<RayFamily> ray_families(const EmbreeMesh& embree, const Trian
   return families;
 }
 
-/// One set's figures: each route's ns per ray in the probe pass, the GPU lookup's answers that
-/// agree with the exact cast, and the work per ray counted on the CPU.
+/// One set's figures: each route's ns per ray in the probe pass, the GPU's answers that agree
+/// with the exact cast, and the work per ray counted on the CPU.
 struct SetWork {
   double field_ns = 0.0, bvh_ns = 0.0;
-  double agree = 0.0;  ///< percent
+  double agree = 0.0;      ///< the field's, percent
+  double bvh_agree = 0.0;  ///< the BVH walk's (the rasterised mesh, float), percent
   LookupWork field;
   double bvh_nodes = 0.0;
 };
@@ -107,10 +106,11 @@ inline bool work_of_set(const GpuAssets& assets, const FieldLookup& lookup, cons
     return false;
   FieldLookup counted = lookup;
   counted.work = &work.field;
-  size_t agree = 0, nodes = 0;
+  size_t agree = 0, walks_agree = 0, nodes = 0;
   for (size_t i = 0; i < set.rays.size(); ++i) {
     const Ray& r = set.rays[i];
     agree += (gpu.hits[i].x > 0.5f) == exact ? 1 : 0;
+    walks_agree += (walked.hits[i].x > 0.5f) == exact ? 1 : 0;
     if (set.self.empty())
       lookup_first_hit(counted, r, LookupMode::kRefined);
     else
@@ -121,6 +121,7 @@ inline bool work_of_set(const GpuAssets& assets, const FieldLookup& lookup, cons
             .nodes_visited);
   }
   work.agree = 100.0 * double(agree) / double(set.rays.size());
+  work.bvh_agree = 100.0 * double(walks_agree) / double(set.rays.size());
   work.bvh_nodes = double(nodes) / double(set.rays.size());
   return true;
 }

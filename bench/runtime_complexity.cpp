@@ -8,7 +8,7 @@
 // --intersect auto's time against the faster of the two, with the route it took. Then, per mesh,
 // rays that hit it and rays that miss it apart (view rays, mirror reflections off its surface,
 // refractions into it): the time and work per ray of the field lookup and of the BVH walk, and
-// the GPU lookup's agreement with the exact cast (bench/ray_work.hpp). Prints markdown.
+// the GPU's agreement with the exact cast (bench/ray_work.hpp). Prints markdown.
 // Assets are built with `gfield build` (its defaults) into a temporary folder.
 //
 // Usage: bench_runtime_complexity [--frames F] [--depth D] [SIZE]   (default 2 frames, depth 4,
@@ -37,8 +37,10 @@ using namespace gfield;
 
 namespace {
 
-/// Rays per family of the per-ray table, at most (each split into hits and misses).
+/// Rays per family of the per-ray table, at most (each split into hits and misses), and the
+/// fewest rays a row is timed for (a pass over fewer is too short to time).
 constexpr size_t kRaysPerFamily = 16384;
+constexpr size_t kFewestRaysTimed = 256;
 
 /// `mesh` moved and scaled so that its box has `target`'s centre and diagonal.
 TriangleMesh fitted(TriangleMesh mesh, const TriangleMesh& target) {
@@ -191,7 +193,7 @@ void bench_rays(const SeriesMesh& m, const std::string& scene_file, size_t count
     std::fprintf(stderr, "%s: %s\n", m.name.c_str(), error.c_str());
     return;
   }
-  const GeometryField stored = quantized_field(field, 8);  // what the GPU reads
+  const GeometryField stored = quantized_field(field, needs.field_bits);  // what the GPU reads
   if (!make_field_lookup(stored, image, lookup, error)) {
     std::fprintf(stderr, "%s: %s\n", m.name.c_str(), error.c_str());
     return;
@@ -203,13 +205,17 @@ void bench_rays(const SeriesMesh& m, const std::string& scene_file, size_t count
        ray_families(embree, mesh, box, surface_offsets(image, box), count)) {
     for (const bool exact : {true, false}) {
       const RaySet& set = exact ? family.hits : family.misses;
-      SetWork w;
-      if (set.rays.size() < 256 ||
-          !work_of_set(assets, lookup, bvh, positions, mesh, set, family.self_t_min, exact, w))
+      if (set.rays.size() < kFewestRaysTimed) {
+        std::printf("| %s | %zu | %s | %s | %zu | | | | | too few to time | |\n", m.name.c_str(),
+                    m.faces, family.name, exact ? "hit" : "miss", set.rays.size());
         continue;
-      std::printf("| %s | %zu | %s | %s | %zu | %.0f | %.0f | %.2f | %.2f | %s | %.1f |\n",
+      }
+      SetWork w;
+      if (!work_of_set(assets, lookup, bvh, positions, mesh, set, family.self_t_min, exact, w))
+        continue;
+      std::printf("| %s | %zu | %s | %s | %zu | %.0f | %.0f | %.2f | %.2f / %.2f | %s | %.1f |\n",
                   m.name.c_str(), m.faces, family.name, exact ? "hit" : "miss", set.rays.size(),
-                  w.field_ns, w.bvh_ns, w.field_ns / w.bvh_ns, w.agree,
+                  w.field_ns, w.bvh_ns, w.field_ns / w.bvh_ns, w.agree, w.bvh_agree,
                   work_text(w.field, set.rays.size()).c_str(), w.bvh_nodes);
       std::fflush(stdout);
     }
@@ -250,13 +256,13 @@ int main(int argc, char** argv) {
       "\nPer ray, rays that hit the mesh and rays that miss it apart (Embree's exact cast), "
       "%zu rays per family at most: ns per ray of each route in the probe pass (one "
       "fragment per ray, the median of 5 timed passes, each from a finished GPU to its "
-      "end), the GPU lookup's answers that agree with the exact cast, and the work of the "
+      "end), the answers that agree with the exact cast (field / BVH), and the work of the "
       "field lookup and of the BVH walk, counted on the CPU by the code the shaders "
       "run\n\n",
       kRaysPerFamily);
   std::printf(
-      "| mesh | faces | rays | exact | count | field ns | BVH ns | field / BVH | field "
-      "agrees %% | field work | BVH nodes |\n");
+      "| mesh | faces | rays | exact | count | field ns | BVH ns | field / BVH | agree %% "
+      "field / BVH | field work | BVH nodes |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const SeriesMesh& m : series)
     bench_rays(m, series_scene(m, false, folder.path), kRaysPerFamily);

@@ -365,6 +365,21 @@ bool export_web(const GpuScene& gpu, const fs::path& out, const WebExportOptions
   return true;
 }
 
+namespace {
+
+/// The bytes of the files under `folder` (a file that cannot be sized counts 0).
+std::uintmax_t folder_bytes(const fs::path& folder) {
+  std::uintmax_t bytes = 0;
+  std::error_code ec, file_ec;
+  for (fs::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::uintmax_t size = it->is_regular_file(file_ec) ? it->file_size(file_ec) : 0;
+    bytes += file_ec ? 0 : size;
+  }
+  return bytes;
+}
+
+}  // namespace
+
 int run_export_web(const Scene& scene, const fs::path& out, const WebExportOptions& options,
                    std::string& error) {
   auto context = GlContext::create_headless(error);
@@ -388,14 +403,11 @@ int run_export_web(const Scene& scene, const fs::path& out, const WebExportOptio
           missing_asset_message(scene.meshes[m], scene.filename, "geometry field").c_str());
   if (!export_web(gpu, out, options, error))
     return 2;
-  std::uintmax_t bytes = 0;
-  std::error_code ec;
-  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(out, ec))
-    bytes += entry.is_regular_file(ec) ? entry.file_size(ec) : 0;
+  const double bytes = double(folder_bytes(out));
   std::printf(
       "wrote %s: %.1f MB, %zu meshes; serve it (python3 -m http.server --directory %s) "
       "and open its index.html\n",
-      printable(out.string()).c_str(), double(bytes) / 1e6, scene.meshes.size(),
+      printable(out.string()).c_str(), bytes / 1e6, scene.meshes.size(),
       printable(out.string()).c_str());
   return 0;
 }

@@ -5,8 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=${1:-data/scenes/mirror-torus-instances.json}
-if [ ! -x build/runtime/gfield-view ] || [ ! -d out/assets ]; then
-  echo "web-demo: run scripts/demo.sh first (it builds gfield-view and the assets in out/assets)" >&2
+if [ ! -x build/runtime/gfield-view ] || [ ! -x build/preprocess/gfield ] || [ ! -d out/assets ]; then
+  echo "web-demo: run scripts/demo.sh first (it builds gfield, gfield-view and the assets in out/assets)" >&2
   exit 2
 fi
 build/preprocess/gfield export-web "$scene" --assets out/assets -o out/web

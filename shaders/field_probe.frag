@@ -42,19 +42,16 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   o_hit = vec4(0.0f, 0.0f, -1.0f, -1.0f);
   o_normal = vec4(0.0f);
-  if (pixel.y * PROBE_WIDTH + pixel.x >= u_ray_count) {
+  if (pixel.x >= PROBE_WIDTH || pixel.y * PROBE_WIDTH + pixel.x >= u_ray_count) {
     return;
   }
   vec4 origin = texelFetch(u_ray_origins, pixel, 0);
   vec4 direction = texelFetch(u_ray_directions, pixel, 0);
 #ifdef PROBE_BVH
   GbHit h = gb_trace(u_bvh_root, origin.xyz, direction.xyz, origin.w, direction.w);
-  o_hit = h.hit ? vec4(1.0f, h.t, h.bary) : vec4(0.0f, 0.0f, -1.0f, -1.0f);
-  o_normal = vec4(0.0f);
   if (h.hit) {
-    GpuBvhShading s = gb_shading(h.slot);
-    vec3 w = vec3(1.0f - h.bary.x - h.bary.y, h.bary.x, h.bary.y);
-    o_normal.xyz = normalize(w.x * s.normal_u0.xyz + w.y * s.normal_u1.xyz + w.z * s.normal_u2.xyz);
+    o_hit = vec4(1.0f, h.t, h.bary);
+    o_normal = vec4(gb_shading_normal(gb_shading(h.slot), h.bary), 0.0f);
   }
 #else
   gs_select_asset(u_asset, u_image_origin, u_field, u_box_min, u_box_max);

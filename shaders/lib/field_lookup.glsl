@@ -229,6 +229,29 @@ int gf_patch_coverage(vec4 coverage) {
   return covered;
 }
 
+// How a Newton search (gf_refine) ended: without an intersection, on the line, or at a chart
+// border across a seam (see gf_refine).
+GF_CONST int GF_ENDED_APART = 0;
+GF_CONST int GF_ENDED_ON_LINE = 1;
+GF_CONST int GF_ENDED_AT_SEAM = 2;
+
+// Whether the point where a Newton search ended (`ending`, at uv on a patch whose corners'
+// coverage is `coverage`, texels of squared size `texel`) is an intersection, as gf_refine says;
+// at a seam, p is moved onto the line by -r (its offset from the line in e1, e2).
+bool gf_ended_on_surface(int ending, vec2 uv, vec4 coverage, float texel, vec3 start, vec2 r,
+                         vec3 e1, vec3 e2, GF_INOUT(vec3) p) {
+  int covered = gf_patch_coverage(coverage);
+  if (ending == GF_ENDED_ON_LINE && covered == 4) {
+    return true;
+  }
+  bool clear = gf_clear_of_start(uv, p, start, texel);
+  if (ending == GF_ENDED_AT_SEAM) {
+    p -= r.x * e1 + r.y * e2;
+    return clear;
+  }
+  return covered > 0 && clear;
+}
+
 // Newton's method for the intersection of the line through o (directions e1, e2 span the plane
 // orthogonal to it) with the geometry image's surface of bilinear patches between texel centres.
 // Starts at uv, moves across patches (steps of at most GF_NEWTON_MAX_STEP texels) and succeeds
@@ -250,10 +273,10 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
   vec4 t11 = vec4(0.0f);
   float previous = GF_FAR;
   int stalls = 0;
-  // How the walk ended: 0 no intersection, 1 on the line, 2 at a seam (then r is the offset of
-  // p from the line). The point's checks follow the loop: a shader runs each fetch in a loop's
-  // body at every step (llvmpipe runs every branch under a mask), the normal's once here.
-  int found = 0;
+  // How the walk ended (GF_ENDED_*; at a seam, r is p's offset from the line). The point's
+  // checks follow the loop: a shader runs each fetch in a loop's body at every step (llvmpipe
+  // runs every branch under a mask), the normal's once after it.
+  int ending = GF_ENDED_APART;
   vec2 r = vec2(0.0f);
   float texel = 0.0f;
   for (int iteration = 0; iteration < GF_NEWTON_ITERATIONS; iteration++) {
@@ -279,7 +302,7 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
     r = vec2(dot(p - o, e1), dot(p - o, e2));
     texel = max(dot(pu, pu), dot(pv, pv));
     if (dot(r, r) <= tolerance * tolerance) {
-      found = 1;
+      ending = GF_ENDED_ON_LINE;
       break;
     }
     float residual = dot(r, r);
@@ -299,7 +322,7 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
       // surface around the ray is closed, see gf_trace), neither chart's patches reach it:
       // accept the border point when the line passes within one texel of it, moved onto the
       // line. At an open boundary of the surface this would be a false hit.
-      found = seams && dot(r, r) <= texel ? 2 : 0;
+      ending = seams && dot(r, r) <= texel ? GF_ENDED_AT_SEAM : GF_ENDED_APART;
       break;
     }
     vec2 delta = vec2(j22 * r.x - j12 * r.y, j11 * r.y - j21 * r.x) / -det;
@@ -309,20 +332,12 @@ bool gf_refine(vec3 o, vec3 e1, vec3 e2, float tolerance, bool seams, vec3 start
     }
     x = clamp(x + delta, vec2(0.0f), vec2(float(n - 1)));
   }
-  if (found == 0) {
+  if (ending == GF_ENDED_APART) {
     return false;
   }
   uv = (x + 0.5f) / float(n);
-  int covered = gf_patch_coverage(vec4(t00.w, t10.w, t01.w, t11.w));
-  if (found == 1 && covered == 4) {
-    return true;
-  }
-  bool clear = gf_clear_of_start(uv, p, start, texel);
-  if (found == 2) {
-    p -= r.x * e1 + r.y * e2;
-    return clear;
-  }
-  return covered > 0 && clear;
+  return gf_ended_on_surface(ending, uv, vec4(t00.w, t10.w, t01.w, t11.w), texel, start, r, e1,
+                             e2, p);
 }
 
 // One lookup's line: the ray, its range, and its 2 x 2 entry and exit samples with weights (the

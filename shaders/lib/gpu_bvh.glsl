@@ -54,6 +54,13 @@ vec3 gb_triangle_p0(int s) { return gb_triangle_p0w(s).xyz; }
 
 #include "lib/bvh_trace.glsl"
 
+// The rasterised mesh's shading normal (unit) at barycentrics `bary` (corners 1 and 2) of a
+// triangle whose shading is s: its corner normals interpolated.
+vec3 gb_shading_normal(GpuBvhShading s, vec2 bary) {
+  vec3 w = vec3(1.0f - bary.x - bary.y, bary.x, bary.y);
+  return normalize(w.x * s.normal_u0.xyz + w.y * s.normal_u1.xyz + w.z * s.normal_u2.xyz);
+}
+
 // A mesh's exact hit (mesh coordinates): t along the given direction, the interpolated shading
 // normal (unit), texture coordinates, and the base colour there (the mesh's own texture looked
 // up at level 0).
@@ -89,7 +96,7 @@ BvhMeshHit bvh_mesh_hit(int root, vec3 o, vec3 d, float t_min, float t_max) {
   vec3 w = vec3(1.0f - h.bary.x - h.bary.y, h.bary.x, h.bary.y);
   m.t = h.t;
   m.position = o + h.t * d;
-  m.normal = normalize(w.x * s.normal_u0.xyz + w.y * s.normal_u1.xyz + w.z * s.normal_u2.xyz);
+  m.normal = gb_shading_normal(s, h.bary);
   m.uv = w.x * vec2(s.normal_u0.w, s.base_v0.w) + w.y * vec2(s.normal_u1.w, s.base_v1.w) +
          w.z * vec2(s.normal_u2.w, s.base_v2.w);
   vec3 base = w.x * s.base_v0.rgb + w.y * s.base_v1.rgb + w.z * s.base_v2.rgb;

@@ -27,7 +27,7 @@ fs::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-TEST(ExportWeb, GfieldRunsTheViewersExportAndPassesItsOptionsOn) {
+TEST(ExportWeb, GfieldRunsTheViewersExportAndPassesTheSizeOn) {
   const fs::path out = fresh_dir("export_web");
   const std::string scene =
       std::string(gfield::build_paths::data_dir()) + "/scenes/two-mirror-spheres.json";
