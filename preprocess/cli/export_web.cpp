@@ -8,6 +8,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -39,20 +40,22 @@ std::string view_executable() {
   return "gfield-view";
 }
 
-/// Runs `argv` (argv[0] looked up on the PATH when it has no '/'), its output ours; its exit
-/// status, or -1 when it could not be started.
-int run_program(std::vector<std::string> argv) {
+/// Runs `argv` (argv[0] looked up on the PATH when it has no '/'), its output ours, and waits
+/// for it: its wait status in `status`; false when it could not be started.
+bool run_program(std::vector<std::string> argv, int& status) {
   std::vector<char*> args;
   for (std::string& a : argv)
     args.push_back(a.data());
   args.push_back(nullptr);
   std::fflush(stdout);
   pid_t pid = 0;
-  int status = 0;
-  if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) != 0 ||
-      waitpid(pid, &status, 0) != pid)
-    return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) != 0)
+    return false;
+  pid_t waited = -1;
+  do {
+    waited = waitpid(pid, &status, 0);
+  } while (waited < 0 && errno == EINTR);
+  return waited == pid;
 }
 
 /// export-web's arguments.
@@ -72,7 +75,8 @@ void add_export_web_command(CLI::App& app) {
       "export-web",
       "Write DIR: the web player (index.html) and the scene as gfield-view draws it with\n"
       "geometry fields, in browser-ready files, for any static web server (docs/web.md). Runs\n"
-      "gfield-view SCENE --export-web DIR ($GFIELD_VIEW, else the gfield-view beside gfield).");
+      "gfield-view SCENE --export-web DIR: $GFIELD_VIEW, else the gfield-view beside gfield,\n"
+      "else the build tree's, else the PATH's.");
   auto a = std::make_shared<ExportWebArguments>();
   cmd->add_option("SCENE", a->scene, "scene file (.json, .gltf, .glb)")->required();
   cmd->add_option("-o,--output", a->output, "the folder to write (new, or an earlier export)")
@@ -94,13 +98,16 @@ void add_export_web_command(CLI::App& app) {
       argv.push_back("--rebuild-stale");
     if (a->allow_outside)
       argv.push_back("--allow-outside-paths");
-    const int status = run_program(argv);
-    if (status < 0)
+    int status = 0;
+    if (!run_program(argv, status))
       throw CommandError(argv[0] +
                          ": cannot be run (export-web needs gfield-view: install it, "
                          "or name it in GFIELD_VIEW)");
-    if (status != 0)
-      throw CommandExit{status};  // gfield-view has said what went wrong
+    if (WIFSIGNALED(status))
+      throw CommandError(argv[0] + ": killed by signal " + std::to_string(WTERMSIG(status)) +
+                         " (nothing was exported)");
+    if (WEXITSTATUS(status) != 0)
+      throw CommandExit{WEXITSTATUS(status)};  // gfield-view has said what went wrong
   });
 }
 

@@ -1,6 +1,7 @@
 // gfield export-web (preprocess/cli/export_web.cpp): gfield runs gfield-view's export, passes on
 // its options, prints the folder's size, and passes on gfield-view's refusal (its line, its exit
-// code, no folder); a gfield-view that cannot be run is one line of gfield's, exit code 2.
+// code, no folder); a gfield-view that cannot be run, or that a signal kills, is one line of
+// gfield's, exit code 2.
 // The page drawing the export: web/test/player.test.mjs.
 
 #include <unistd.h>
@@ -60,6 +61,20 @@ TEST(ExportWeb, ARefusalIsTheViewersLineAndExitCodeAndNoFolder) {
             std::string::npos)
       << no_viewer.err;
   EXPECT_FALSE(fs::exists(out));
+  // A gfield-view that dies by a signal has said nothing: gfield says it.
+  const fs::path killed = fresh_dir("export_web_killed");
+  fs::create_directories(killed);
+  std::ofstream(killed / "gfield-view") << "#!/bin/sh\nkill -9 $$\n";
+  fs::permissions(killed / "gfield-view", fs::perms::owner_all);
+  const test::CliRun signalled = test::run_program(
+      "GFIELD_VIEW=" + (killed / "gfield-view").string() + " " + gfield::build_paths::cli(),
+      "export-web " + scene + " -o " + out.string());
+  EXPECT_EQ(signalled.exit_code, 2);
+  EXPECT_NE(signalled.err.find("gfield-view: killed by signal 9 (nothing was exported)"),
+            std::string::npos)
+      << signalled.err;
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove_all(killed);
 }
 
 }  // namespace
