@@ -1,9 +1,5 @@
 #include "runtime/scene_assets.hpp"
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -11,34 +7,20 @@
 
 #include "geometry/scene_file.hpp"
 #include "gfield/asset_source.hpp"
+#include "gfield/child_program.hpp"
 #include "gfield/printable.hpp"
 #include "gfield/thickness.hpp"
-
-extern char** environ;
 
 namespace gfield {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// Runs `argv` (argv[0] looked up on the PATH when it has no '/') with its stdout sent to our
-/// stderr; its exit status, or -1 when it could not be started.
-int run_child(std::vector<std::string> argv) {
-  std::vector<char*> args;
-  for (std::string& a : argv)
-    args.push_back(a.data());
-  args.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
-  pid_t pid = 0;
-  std::fflush(stdout);
-  const int started = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
+/// Runs `argv` with its stdout sent to our stderr (gfield-view's stdout is its own report); its
+/// exit code, or -1 when it could not be started.
+int run_gfield(std::vector<std::string> argv) {
   int status = 0;
-  if (started != 0 || waitpid(pid, &status, 0) != pid)
-    return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return run_child(std::move(argv), true, status) ? child_exit_code(status) : -1;
 }
 
 bool has_gltf_meshes(const Scene& scene) {
@@ -49,15 +31,7 @@ bool has_gltf_meshes(const Scene& scene) {
 }  // namespace
 
 std::string gfield_executable() {
-  if (const char* env = std::getenv("GFIELD_CLI"); env != nullptr && env[0] != '\0')
-    return env;
-  std::error_code ec;
-  const fs::path executable = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec && fs::is_regular_file(executable.parent_path() / "gfield", ec))
-    return (executable.parent_path() / "gfield").string();
-  if (fs::is_regular_file(GFIELD_BUILD_TREE_CLI, ec))
-    return GFIELD_BUILD_TREE_CLI;
-  return "gfield";
+  return sibling_executable("GFIELD_CLI", "gfield", GFIELD_BUILD_TREE_CLI);
 }
 
 namespace {
@@ -69,7 +43,7 @@ bool rebuild_asset(const MeshAsset& mesh, std::string& error) {
   const std::string name = image.substr(0, image.size() - std::string(".gimage.exr").size());
   std::fprintf(stderr, "gfield-view: rebuilding %s from %s (--rebuild-stale)\n",
                printable(name).c_str(), printable(mesh.file).c_str());
-  const int status = run_child({gfield_executable(), "build", mesh.file, "-o", name});
+  const int status = run_gfield({gfield_executable(), "build", mesh.file, "-o", name});
   if (status == 0)
     return true;
   error = name + ": rebuilding it from " + mesh.file + " failed (gfield build " +
@@ -106,7 +80,7 @@ bool load_view_scene(const std::string& filename, const std::string& asset_dir,
       command.insert(command.end(), {"--assets", asset_dir});
     if (outside == OutsidePaths::kAllowed)
       command.push_back("--allow-outside-paths");
-    const int status = run_child(command);
+    const int status = run_gfield(command);
     if (status != 0) {
       error = filename + ": building its glTF meshes' assets failed (" + command[0] + " assets " +
               (status < 0 ? "could not be started" : "exited with " + std::to_string(status)) + ")";
@@ -139,7 +113,7 @@ bool build_thickness_maps(const Scene& scene, std::string& error) {
     if (!ec && !ec_image && made >= built)
       continue;
     const std::string name = image.substr(0, image.size() - suffix.size());
-    const int status = run_child({gfield_executable(), "thickness", name});
+    const int status = run_gfield({gfield_executable(), "thickness", name});
     if (status != 0) {
       error = map + ": making it failed (gfield thickness " + name + " " +
               (status < 0 ? "could not be started" : "exited with " + std::to_string(status)) + ")";

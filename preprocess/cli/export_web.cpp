@@ -5,58 +5,18 @@
 
 #include <CLI/CLI.hpp>
 
-#include <spawn.h>
 #include <sys/wait.h>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "gfield/child_program.hpp"
 #include "preprocess/cli/commands.hpp"
-
-extern char** environ;
 
 namespace gfield {
 
 namespace {
-
-namespace fs = std::filesystem;
-
-/// The gfield-view executable: $GFIELD_VIEW, else the one beside this executable (an install),
-/// else the build tree's, else "gfield-view" (the PATH).
-std::string view_executable() {
-  if (const char* env = std::getenv("GFIELD_VIEW"); env != nullptr && env[0] != '\0')
-    return env;
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec && fs::is_regular_file(self.parent_path() / "gfield-view", ec))
-    return (self.parent_path() / "gfield-view").string();
-  if (fs::is_regular_file(GFIELD_BUILD_TREE_VIEW, ec))
-    return GFIELD_BUILD_TREE_VIEW;
-  return "gfield-view";
-}
-
-/// Runs `argv` (argv[0] looked up on the PATH when it has no '/'), its output ours, and waits
-/// for it: its wait status in `status`; false when it could not be started.
-bool run_program(std::vector<std::string> argv, int& status) {
-  std::vector<char*> args;
-  for (std::string& a : argv)
-    args.push_back(a.data());
-  args.push_back(nullptr);
-  std::fflush(stdout);
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) != 0)
-    return false;
-  pid_t waited = -1;
-  do {
-    waited = waitpid(pid, &status, 0);
-  } while (waited < 0 && errno == EINTR);
-  return waited == pid;
-}
 
 /// export-web's arguments.
 struct ExportWebArguments {
@@ -89,7 +49,9 @@ void add_export_web_command(CLI::App& app) {
   cmd->add_flag("--allow-outside-paths", a->allow_outside,
                 "read the files a scene or glTF file names outside its folder");
   cmd->callback([a] {
-    std::vector<std::string> argv = {view_executable(), a->scene, "--export-web", a->output};
+    std::vector<std::string> argv = {
+        sibling_executable("GFIELD_VIEW", "gfield-view", GFIELD_BUILD_TREE_VIEW), a->scene,
+        "--export-web", a->output};
     if (!a->assets.empty())
       argv.insert(argv.end(), {"--assets", a->assets});
     if (!a->size.empty())
@@ -99,7 +61,7 @@ void add_export_web_command(CLI::App& app) {
     if (a->allow_outside)
       argv.push_back("--allow-outside-paths");
     int status = 0;
-    if (!run_program(argv, status))
+    if (!run_child(argv, false, status))
       throw CommandError(argv[0] +
                          ": cannot be run (export-web needs gfield-view: install it, "
                          "or name it in GFIELD_VIEW)");
