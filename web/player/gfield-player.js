@@ -96,11 +96,10 @@ async function fetchOk(base, file) {
   return response;
 }
 
-/**
- * Reads DIR/scene.json and DIR/scene.bin.gz (a URL of the folder, ending in "/"): the manifest,
- * its bytes (an ArrayBuffer of manifest.bin.bytes) and the stages' GLSL ES texts by file name.
- */
-export async function loadWebScene(base) {
+// The stages of an export's shaders/ folder.
+const STAGES = ['fullscreen.vert', 'gbuffer.vert', 'gbuffer.frag', 'field_trace.frag', 'present.frag'];
+
+async function fetchManifest(base) {
   const manifestText = await (await fetchOk(base, 'scene.json')).text();
   let manifest;
   try {
@@ -113,6 +112,11 @@ export async function loadWebScene(base) {
   if (manifest.version !== WEB_SCENE_VERSION)
     throw new PlayerError(`scene.json: layout version ${manifest.version}; this player reads ` +
                           `version ${WEB_SCENE_VERSION} (export the scene again)`);
+  return manifest;
+}
+
+// The manifest's scene.bin.gz, unpacked: an ArrayBuffer of manifest.bin.bytes.
+async function fetchBytes(base, manifest) {
   const file = manifest.bin.file;
   const packed = (await fetchOk(base, file)).body.pipeThrough(new DecompressionStream('gzip'));
   let bytes;
@@ -124,11 +128,51 @@ export async function loadWebScene(base) {
   if (bytes.byteLength !== manifest.bin.bytes)
     throw new PlayerError(`${file}: holds ${bytes.byteLength} bytes, scene.json says ` +
                           `${manifest.bin.bytes} (truncated, or from another export)`);
-  const shaders = {};
-  for (const stage of ['fullscreen.vert', 'gbuffer.vert', 'gbuffer.frag', 'field_trace.frag',
-                       'present.frag'])
-    shaders[stage] = await (await fetchOk(base, `shaders/${stage}`)).text();
-  return { manifest, bytes, shaders };
+  return bytes;
+}
+
+/**
+ * Reads DIR/scene.json and starts reading DIR/scene.bin.gz (a URL of the folder, ending in "/"):
+ * resolves, once the manifest and the stages' GLSL ES texts (by file name) are in, to
+ * { manifest, shaders, bytes }, bytes being a promise of scene.bin.gz unpacked (an ArrayBuffer of
+ * manifest.bin.bytes) that is still downloading.
+ */
+export async function fetchWebScene(base) {
+  const manifest = await fetchManifest(base);
+  const bytes = fetchBytes(base, manifest);
+  bytes.catch(() => {});  // its failure is reported where it is awaited
+  const texts = await Promise.all(STAGES.map(async (stage) =>
+    (await fetchOk(base, `shaders/${stage}`)).text()));
+  return { manifest, shaders: Object.fromEntries(STAGES.map((stage, k) => [stage, texts[k]])), bytes };
+}
+
+/** Reads a whole export (fetchWebScene): { manifest, shaders, bytes (an ArrayBuffer) }. */
+export async function loadWebScene(base) {
+  const scene = await fetchWebScene(base);
+  return { ...scene, bytes: await scene.bytes };
+}
+
+/**
+ * Opens the export at `base` on `gl` with `settings` (FieldRenderer.settings) as fast as it can:
+ * the programs those settings draw with are compiled and their pipelines built (prepare) while
+ * scene.bin.gz downloads and unpacks, and then it is uploaded. Resolves to { scene (as
+ * loadWebScene's), renderer, startup: ms spent { fetch: the manifest and shaders, prepare,
+ * load: waiting for the bytes after that, upload } }.
+ */
+export async function openWebScene(gl, base, settings = {}) {
+  let time = performance.now();
+  const lap = () => { const now = performance.now(), ms = now - time; time = now; return ms; };
+  const scene = await fetchWebScene(base);
+  const startup = { fetch: lap() };
+  const renderer = new FieldRenderer(gl, { manifest: scene.manifest, shaders: scene.shaders });
+  Object.assign(renderer.settings, settings);
+  renderer.prepare();
+  startup.prepare = lap();
+  scene.bytes = await scene.bytes;
+  startup.load = lap();
+  renderer.upload(scene.bytes);
+  startup.upload = lap();
+  return { scene, renderer, startup };
 }
 
 // Column-major 4x4 matrices as glm's (GL clip space, z in [-1, 1]).
@@ -195,7 +239,8 @@ function checkBlock(block, bytes, what) {
 /**
  * The geometry-field renderer of one exported scene on a WebGL2 context: the runtime's field
  * method. Settings: depth (reflections/refractions after the camera ray), mode (a LOOKUP_MODES
- * key), selfReflection, minWeight, maxRays.
+ * key), selfReflection, minWeight, maxRays. `scene` is loadWebScene's; without its bytes
+ * (fetchWebScene's manifest and shaders alone) the renderer draws once they are given to upload.
  */
 export class FieldRenderer {
   constructor(gl, scene) {
@@ -207,7 +252,6 @@ export class FieldRenderer {
     if (!gl.getExtension('EXT_color_buffer_float'))
       throw new PlayerError('this browser cannot render to float textures (EXT_color_buffer_float)');
     gl.getExtension('OES_texture_float_linear');
-    this.#upload(scene.bytes);
     this.gbufferProgram = this.#program('gbuffer.vert', 'gbuffer.frag', '');
     this.presentProgram = this.#program('fullscreen.vert', 'present.frag', '');
     this.depthProgram = this.#program('fullscreen.vert',
@@ -218,39 +262,96 @@ export class FieldRenderer {
     this.emptyVao = gl.createVertexArray();
     // The three-mesh-bvh method's BVHs: { glsl, bind(gl, program, unit) } (ThreeMeshBvh).
     this.externalBvh = null;
+    if (scene.bytes) this.upload(scene.bytes);
   }
 
-  #upload(bytes) {
+  /** Uploads the scene's bytes (an ArrayBuffer of manifest.bin.bytes); once. */
+  upload(bytes) {
     const gl = this.gl, m = this.manifest;
+    if (this.uploaded) throw new PlayerError('the scene is uploaded already');
+    const limit = gl.getParameter(gl.MAX_TEXTURE_SIZE);
     this.textures = {};
     for (const [name, t] of Object.entries(m.textures)) {
       checkBlock(t, bytes, `texture ${name}`);
-      const limit = gl.getParameter(gl.MAX_TEXTURE_SIZE);
       if (t.width > limit || t.height > limit)
         throw new PlayerError(`scene.json: ${name} is ${t.width} x ${t.height} texels; this ` +
                               `browser's textures stop at ${limit}`);
-      const [internal, format, type, View, channels] = textureFormat(gl, t.format);
+      const [, , , View, channels] = textureFormat(gl, t.format);
       const data = new View(bytes, t.offset, t.width * t.height * t.layers * channels);
-      const array = !ROW_TEXTURES.includes(name);
-      const target = array ? gl.TEXTURE_2D_ARRAY : gl.TEXTURE_2D;
-      const texture = gl.createTexture();
-      gl.bindTexture(target, texture);
-      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
-      if (array) gl.texImage3D(target, 0, internal, t.width, t.height, t.layers, 0, format, type, data);
-      else gl.texImage2D(target, 0, internal, t.width, t.height, 0, format, type, data);
-      // The meshes' own textures are filtered (GL_LINEAR, GL_REPEAT); the rest read by texelFetch.
-      const linear = name === 'mesh_textures';
-      gl.texParameteri(target, gl.TEXTURE_MIN_FILTER, linear ? gl.LINEAR : gl.NEAREST);
-      gl.texParameteri(target, gl.TEXTURE_MAG_FILTER, linear ? gl.LINEAR : gl.NEAREST);
-      const wrap = linear ? gl.REPEAT : gl.CLAMP_TO_EDGE;
-      gl.texParameteri(target, gl.TEXTURE_WRAP_S, wrap);
-      gl.texParameteri(target, gl.TEXTURE_WRAP_T, wrap);
-      this.textures[name] = { texture, target };
+      this.textures[name] = this.#texture(name, t, [t.width, t.height, t.layers], data);
     }
     this.objectsBlock = this.#uniformBlock(bytes, m.blocks.objects, MAX_OBJECTS * OBJECT_BYTES, 'objects');
     this.lightsBlock = this.#uniformBlock(bytes, m.blocks.lights, MAX_LIGHTS * LIGHT_BYTES, 'lights');
     this.meshes = m.meshes.map((mesh, i) => this.#mesh(bytes, mesh, `mesh ${i}`));
     this.proxyCube = this.#mesh(bytes, m.proxy_cube, 'the proxy cube');
+    this.uploaded = true;
+  }
+
+  // Texture `name` of the manifest (its entry `t`) at [width, height, layers], holding `data`
+  // (a typed array of its format; null: zeros).
+  #texture(name, t, [width, height, layers], data) {
+    const gl = this.gl;
+    const [internal, format, type] = textureFormat(gl, t.format);
+    const array = !ROW_TEXTURES.includes(name);
+    const target = array ? gl.TEXTURE_2D_ARRAY : gl.TEXTURE_2D;
+    const texture = gl.createTexture();
+    gl.bindTexture(target, texture);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    if (array) gl.texImage3D(target, 0, internal, width, height, layers, 0, format, type, data);
+    else gl.texImage2D(target, 0, internal, width, height, 0, format, type, data);
+    // The meshes' own textures are filtered (GL_LINEAR, GL_REPEAT); the rest read by texelFetch.
+    const linear = name === 'mesh_textures';
+    gl.texParameteri(target, gl.TEXTURE_MIN_FILTER, linear ? gl.LINEAR : gl.NEAREST);
+    gl.texParameteri(target, gl.TEXTURE_MAG_FILTER, linear ? gl.LINEAR : gl.NEAREST);
+    const wrap = linear ? gl.REPEAT : gl.CLAMP_TO_EDGE;
+    gl.texParameteri(target, gl.TEXTURE_WRAP_S, wrap);
+    gl.texParameteri(target, gl.TEXTURE_WRAP_T, wrap);
+    return { texture, target };
+  }
+
+  /**
+   * Compiles the programs the settings draw with and builds their pipelines, before upload: it
+   * draws one pixel of the camera's frame with stand-ins for the scene's data (textures of 1 x 1
+   * texels in the scene's formats, zero uniform blocks, one degenerate triangle per mesh).
+   * Renderers build a program's pipeline at its first draw (SwiftShader about 1.6 s for the
+   * tracing stage), work that can then overlap the download of scene.bin.gz. The three-mesh-bvh
+   * method's tracing program is built with its BVHs, later.
+   */
+  prepare() {
+    const gl = this.gl, m = this.manifest;
+    if (this.uploaded) return;
+    this.textures = Object.fromEntries(Object.entries(m.textures).map(([name, t]) =>
+      [name, this.#texture(name, t, [1, 1, 1], null)]));
+    const block = (size) => {
+      const buffer = gl.createBuffer();
+      gl.bindBuffer(gl.UNIFORM_BUFFER, buffer);
+      gl.bufferData(gl.UNIFORM_BUFFER, size, gl.STATIC_DRAW);
+      return buffer;
+    };
+    this.objectsBlock = block(MAX_OBJECTS * OBJECT_BYTES);
+    this.lightsBlock = block(MAX_LIGHTS * LIGHT_BYTES);
+    const zeros = new ArrayBuffer(3 * m.proxy_cube.vertex_bytes);
+    const triangle = { vertex_bytes: m.proxy_cube.vertex_bytes, index_count: 3,
+                       vertices: { offset: 0, bytes: zeros.byteLength }, indices: { offset: 0, bytes: 12 } };
+    const standIn = this.#mesh(zeros, triangle, 'a stand-in');
+    this.meshes = m.meshes.map(() => standIn);
+    this.proxyCube = standIn;
+    try {
+      this.#targets(1, 1);
+      this.#drawGbuffer(m.camera, 1, 1);
+      if (this.settings.method !== 'three-mesh-bvh') this.#drawTracing(m.camera, 1, 1);
+      this.#present(1, 1);
+    } finally {
+      Object.values(this.textures).forEach((t) => gl.deleteTexture(t.texture));
+      gl.deleteBuffer(this.objectsBlock);
+      gl.deleteBuffer(this.lightsBlock);
+      gl.deleteVertexArray(standIn.vao);
+      gl.deleteBuffer(standIn.vertices);
+      gl.deleteBuffer(standIn.indices);
+      this.textures = null;
+      gl.bindVertexArray(null);
+      gl.useProgram(null);
+    }
   }
 
   // A uniform block's buffer, padded to the length its declaration has.
@@ -286,7 +387,7 @@ export class FieldRenderer {
     gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint8Array(bytes, mesh.indices.offset, mesh.indices.bytes),
                   gl.STATIC_DRAW);
     gl.bindVertexArray(null);
-    return { vao, count: mesh.index_count };
+    return { vao, count: mesh.index_count, vertices, indices };
   }
 
   // A program of two stages (an exported stage's file name, or { name, text }), `defines` after
@@ -480,6 +581,7 @@ export class FieldRenderer {
    */
   countWork(camera, width, height) {
     const gl = this.gl;
+    if (!this.uploaded) throw new PlayerError('countWork: the scene\'s bytes are not uploaded yet');
     this.#targets(width, height);
     // The frame's colour and hits, then two RGBA32UI attachments for the counts.
     this.counting ??= makeTarget(gl, width, height, [gl.RGBA32UI, gl.RGBA32UI],
@@ -506,10 +608,17 @@ export class FieldRenderer {
    * that the app's objects drawn after it meet gfield's in depth.
    */
   render(camera, width, height, options = {}) {
-    const gl = this.gl;
+    if (!this.uploaded) throw new PlayerError('render: the scene\'s bytes are not uploaded yet');
     this.#targets(width, height);
     this.#drawGbuffer(camera, width, height);
     this.#drawTracing(camera, width, height);
+    this.#present(width, height);
+    if (options.viewProjection) this.#drawDepth(options.viewProjection);
+  }
+
+  // The frame's colour, sRGB-encoded, into the default framebuffer's bottom-left pixels.
+  #present(width, height) {
+    const gl = this.gl;
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     gl.viewport(0, 0, width, height);
     const p = this.presentProgram;
@@ -519,7 +628,6 @@ export class FieldRenderer {
     gl.uniform1i(p.uniforms.get('u_frame'), 0);
     gl.bindVertexArray(this.emptyVao);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
-    if (options.viewProjection) this.#drawDepth(options.viewProjection);
   }
 
   #drawDepth(viewProjection) {
