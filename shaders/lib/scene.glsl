@@ -238,20 +238,65 @@ vec3 hit_albedo(int k, vec2 uv) {
   return objects[k].color.rgb * gs_image_albedo(uv);
 }
 
+// Where o + t d (world) enters object k's bounds (GpuObject.box_min/box_max, padded by 1e-3 of
+// their diagonal: a field's hit lies on its geometry image, a hair off the mesh), t >= 0; GF_FAR
+// when it misses them before t_max. A NaN (a ray along a face of the bounds) enters at 0: the
+// test may keep an object it could skip, never skip one the ray meets.
+float object_entry(int k, vec3 o, vec3 d, float t_max) {
+  vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
+  vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
+  vec3 pad = vec3(1.0e-3f * distance(objects[k].box_min.xyz, objects[k].box_max.xyz));
+  vec3 inv = 1.0f / ld;
+  vec3 ta = (objects[k].box_min.xyz - pad - lo) * inv;
+  vec3 tb = (objects[k].box_max.xyz + pad - lo) * inv;
+  vec3 near = min(ta, tb);
+  vec3 far = max(ta, tb);
+  float enter = max(max(near.x, near.y), max(near.z, 0.0f));
+  float leave = min(min(far.x, far.y), far.z);
+  if (enter > leave || enter > t_max) return GF_FAR;
+  return enter >= 0.0f ? enter : 0.0f;
+}
+
+// Whether trace_scene looks object k up for a ray (see there).
+bool scene_candidate(int k, bool opaque_only, SelfLookup self, int inside) {
+  if (opaque_only && objects[k].kind.y == MATERIAL_DIELECTRIC) return false;
+  bool own = k == self.object && objects[k].kind.x == SHAPE_MESH;
+  return !own || u_self_reflection || k == inside;
+}
+
 // The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects (as the reference
 // tracer: a ray inside a dielectric meets what reaches into it too); `opaque_only` skips
 // dielectrics (shadow rays). A mesh object that the ray leaves (self.object) looks itself up only
 // with u_self_reflection, or when it is the dielectric the ray travels in (`inside`, -1: air).
+// Objects are intersected in the order the ray enters their bounds (the one it leaves first),
+// until the next one's bounds begin beyond the nearest hit found: a ray meets the objects whose
+// bounds it enters, not all of them. One loop pass per object met, each with the one call of
+// intersect_object (a shader runs a loop's body while any lane of a group needs it).
 SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup self, int inside) {
   SceneHit best = scene_miss();
   best.t = t_max;
-  for (int k = 0; k < u_object_count; k++) {
-    if (opaque_only && objects[k].kind.y == MATERIAL_DIELECTRIC) continue;
-    bool own = k == self.object && objects[k].kind.x == SHAPE_MESH;
-    if (own && !u_self_reflection && k != inside) continue;
+  // The object met last and where the ray entered it: the next one comes after it in
+  // (entry, index) order.
+  int last = -1;
+  float last_entry = -1.0f;
+  for (int pass = 0; pass < u_object_count; pass++) {
+    int next = -1;
+    float next_entry = GF_FAR;
+    for (int k = 0; k < u_object_count; k++) {
+      if (!scene_candidate(k, opaque_only, self, inside)) continue;
+      float entry = k == self.object ? 0.0f : object_entry(k, o, d, best.t);
+      bool after = entry > last_entry || (entry == last_entry && k > last);
+      if (after && (entry < next_entry || next < 0)) {
+        next = k;
+        next_entry = entry;
+      }
+    }
+    if (next < 0 || next_entry >= best.t) break;
+    last = next;
+    last_entry = next_entry;
     SelfLookup leaving = no_self_lookup();  // WebGL has no ?: of structs
-    if (own) leaving = self;
-    SceneHit h = intersect_object(k, o, d, 0.0f, best.t, leaving);
+    if (next == self.object && objects[next].kind.x == SHAPE_MESH) leaving = self;
+    SceneHit h = intersect_object(next, o, d, 0.0f, best.t, leaving);
     if (h.hit && h.t < best.t) best = h;
   }
   if (best.hit && !opaque_only && !best.has_albedo) best.albedo = hit_albedo(best.object, best.uv);
