@@ -266,12 +266,13 @@ bool scene_candidate(int k, bool opaque_only, SelfLookup self, int inside) {
 
 // The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects (as the reference
 // tracer: a ray inside a dielectric meets what reaches into it too); `opaque_only` skips
-// dielectrics (shadow rays). A mesh object that the ray leaves (self.object) looks itself up only
-// with u_self_reflection, or when it is the dielectric the ray travels in (`inside`, -1: air).
-// Objects are intersected in the order the ray enters their bounds (the one it leaves first),
-// until the next one's bounds begin beyond the nearest hit found: a ray meets the objects whose
-// bounds it enters, not all of them. One loop pass per object met, each with the one call of
-// intersect_object (a shader runs a loop's body while any lane of a group needs it).
+// dielectrics (shadow rays: their first hit found is returned, as any hit blocks them). A mesh
+// object that the ray leaves (self.object) looks itself up only with u_self_reflection, or when
+// it is the dielectric the ray travels in (`inside`, -1: air). Objects are met in the order the
+// ray enters their bounds (the object it leaves first), until the next one's bounds begin beyond
+// the nearest hit found: one loop pass per object whose bounds the ray enters, not one per
+// object, each with the one call of intersect_object (a shader runs a loop's body while any lane
+// of a group needs it).
 SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup self, int inside) {
   SceneHit best = scene_miss();
   best.t = t_max;
@@ -298,6 +299,7 @@ SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup s
     if (next == self.object && objects[next].kind.x == SHAPE_MESH) leaving = self;
     SceneHit h = intersect_object(next, o, d, 0.0f, best.t, leaving);
     if (h.hit && h.t < best.t) best = h;
+    if (best.hit && opaque_only) break;  // a shadow ray: any hit blocks it
   }
   if (best.hit && !opaque_only && !best.has_albedo) best.albedo = hit_albedo(best.object, best.uv);
   return best;
