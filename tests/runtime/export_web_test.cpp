@@ -53,9 +53,12 @@ TEST(ExportWeb, ARefusalIsTheViewersLineAndExitCodeAndNoFolder) {
   EXPECT_FALSE(fs::exists(out));
   const std::string scene =
       std::string(gfield::build_paths::data_dir()) + "/scenes/two-mirror-spheres.json";
-  const test::CliRun no_viewer = test::run_program(
-      "GFIELD_VIEW=/nonexistent/gfield-view " + std::string(gfield::build_paths::cli()),
-      "export-web " + scene + " -o " + out.string());
+  // gfield export-web of the scene with $GFIELD_VIEW set to `viewer`.
+  const auto export_with = [&](const std::string& viewer) {
+    return test::run_program("GFIELD_VIEW=" + viewer + " " + gfield::build_paths::cli(),
+                             "export-web " + scene + " -o " + out.string());
+  };
+  const test::CliRun no_viewer = export_with("/nonexistent/gfield-view");
   EXPECT_EQ(no_viewer.exit_code, 2);
   EXPECT_NE(no_viewer.err.find("gfield: error: /nonexistent/gfield-view: cannot be run"),
             std::string::npos)
@@ -66,9 +69,7 @@ TEST(ExportWeb, ARefusalIsTheViewersLineAndExitCodeAndNoFolder) {
   fs::create_directories(killed);
   std::ofstream(killed / "gfield-view") << "#!/bin/sh\nkill -9 $$\n";
   fs::permissions(killed / "gfield-view", fs::perms::owner_all);
-  const test::CliRun signalled = test::run_program(
-      "GFIELD_VIEW=" + (killed / "gfield-view").string() + " " + gfield::build_paths::cli(),
-      "export-web " + scene + " -o " + out.string());
+  const test::CliRun signalled = export_with((killed / "gfield-view").string());
   EXPECT_EQ(signalled.exit_code, 2);
   EXPECT_NE(signalled.err.find("gfield-view: killed by signal 9 (nothing was exported)"),
             std::string::npos)
