@@ -7,6 +7,9 @@
 # Usage: scripts/check-viewer-only.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# ccache's base folder the checkout's root, as for the other builds (scripts/ccache-launcher.sh):
+# the cache then serves a clone in another folder (CI's copy) too.
+source scripts/ccache-launcher.sh
 if [ "$(id -u)" -ne 0 ]; then
   echo "check-viewer-only: needs root (unshare --mount)" >&2
   exit 2

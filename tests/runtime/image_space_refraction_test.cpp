@@ -50,7 +50,7 @@ class ImageSpaceTest : public test::GlSuite {
     const std::string scene_file =
         std::string(gfield::build_paths::data_dir()) + "/scenes/davis-wyman-color-chart.json";
     const std::string reference = (dir / "reference_tir_only.exr").string();
-    if (!test::up_to_date(reference, {mesh, scene_file})) {
+    test::make_unless_up_to_date(reference, {mesh, scene_file}, [&] {
       test::CliRun run = test::run_cli("build " + mesh + " -o " + name +
                                        " --size 256 --samples 4 --verify-rays 0");
       ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -60,7 +60,9 @@ class ImageSpaceTest : public test::GlSuite {
       run = test::run_cli("render " + scene_file + " -o " + reference +
                           " --size 256x256 --spp 256 --dielectric tir-only -q");
       ASSERT_EQ(run.exit_code, 0) << run.err;
-    }
+    });
+    if (HasFatalFailure())
+      return;
     scene_ = new Scene;
     ASSERT_TRUE(load_scene(scene_file, *scene_, error)) << error;
     ASSERT_EQ(scene_->meshes.size(), 1u);
@@ -129,11 +131,12 @@ TEST_F(ImageSpaceTest, OpaqueTexturedMeshShowsItsOwnTexture) {
   const fs::path dir = fs::path(gfield::build_paths::test_tmp()) / "image_space";
   const std::string mesh = std::string(gfield::build_paths::mesh_dir()) + "/spot-painted.obj";
   const std::string name = (dir / "spot-painted").string();
-  if (!test::up_to_date(name + ".gimage.exr", {mesh})) {
+  test::make_unless_up_to_date(name + ".gimage.exr", {mesh}, [&] {
     const test::CliRun run =
         test::run_cli("build " + mesh + " -o " + name + " --size 256 --samples 4 --verify-rays 0");
     ASSERT_EQ(run.exit_code, 0) << run.err;
-  }
+  });
+  ASSERT_FALSE(HasFatalFailure());
   Scene scene = *scene_;
   MeshAsset asset;
   asset.file = mesh;

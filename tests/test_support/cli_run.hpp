@@ -3,6 +3,8 @@
 // gfield::build_paths::view() in the runtime tests) for end-to-end tests: exit code, stdout,
 // stderr.
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 
 #include <unistd.h>
@@ -10,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
 #include <iterator>
 #include <string>
@@ -64,6 +67,22 @@ inline bool up_to_date(const std::string& output, std::initializer_list<std::str
       return false;
   }
   return true;
+}
+
+/// Runs `make` unless `output` is up_to_date, holding an exclusive lock on OUTPUT.lock meanwhile:
+/// CTest runs a suite's tests in processes of their own, in parallel, and the set-up of a second
+/// one waits for the first's output instead of making it again at the same time.
+inline void make_unless_up_to_date(const std::string& output,
+                                   std::initializer_list<std::string> inputs,
+                                   const std::function<void()>& make) {
+  const std::string lock = output + ".lock";
+  const int fd = open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd >= 0)
+    flock(fd, LOCK_EX);  // without the lock file both make it, as without the lock
+  if (!up_to_date(output, inputs))
+    make();
+  if (fd >= 0)
+    close(fd);  // releases the lock
 }
 
 }  // namespace gfield::test
