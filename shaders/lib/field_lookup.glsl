@@ -653,10 +653,10 @@ bool gf_next_pair(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
 // The next uv a Newton search starts from (s.from: its stage); false when none is left. A range
 // that starts inside the box tries the nearest pair's candidate alone first (reading the lines
 // past the hits behind the origin costs most there); where that pair has none, the spread pairs
-// (GF_STAGE_SPREAD) say whether any line near the ray has one. Then the 16 pairs' candidates: the groups
-// in their order along the ray, each from its mean and, where its heaviest candidate lies more
-// than a texel off that, from that one; then, where the pairs whose lines hit carry at least
-// GF_PAIRS_WEIGHT, every candidate on its own.
+// (GF_STAGE_SPREAD) say whether any line near the ray has one. Then the 16 pairs' candidates:
+// the groups in their order along the ray, each from its mean and, where its heaviest candidate
+// lies more than a texel off that, from that one; then, where the pairs whose lines hit carry at
+// least GF_PAIRS_WEIGHT, every candidate on its own.
 bool gf_next_start(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
   if (s.stage == GF_STAGE_NEAREST_PAIR && !line.beyond) {
     s.stage = GF_STAGE_GROUP0;
@@ -665,8 +665,10 @@ bool gf_next_start(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
     // The nearest pair alone, the spread pairs, or the 16 (one reading of pairs for all).
     bool alone = s.stage == GF_STAGE_NEAREST_PAIR;
     int nearest = 4 * gf_heaviest(line.w_entry) + gf_heaviest(line.w_exit);
+    int first = alone ? nearest : 0;
+    int end = alone ? nearest + 1 : 16;
     int stride = s.stage == GF_STAGE_SPREAD ? GF_SPREAD_STRIDE : 1;
-    s.candidates = gf_gather_candidates(line, alone ? nearest : 0, alone ? nearest + 1 : 16, stride);
+    s.candidates = gf_gather_candidates(line, first, end, stride);
     if (alone) {
       bool none = s.candidates.sum0.z == 0.0f;
       s.stage = none ? GF_STAGE_SPREAD : GF_STAGE_GROUP0;

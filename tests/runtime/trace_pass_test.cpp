@@ -151,10 +151,16 @@ TEST_F(TracePassTest, ComputeTilesCoverAOneTileFrameAndMoreGroupsThanOneDimensio
   // puts in x, so the groups spread into y. That frame looks up, 45 degrees above the
   // horizon, at the studio's sky alone (the torus and the spots lie below the camera): every
   // pixel its own direction, in a frame that costs seconds, not a minute, on llvmpipe.
-  for (const auto& [width, height] : {std::pair{5, 5}, std::pair{2048, 1040}}) {
+  struct Frame {
+    int width;
+    int height;
+    glm::vec3 target;  ///< where the camera looks
+  };
+  const glm::vec3 sky = scene.camera.position + glm::vec3(0.0f, 1.0f, -1.0f);
+  for (const auto& [width, height, target] :
+       {Frame{5, 5, scene.camera.target}, Frame{2048, 1040, sky}}) {
     SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height));
-    if (width > 5)
-      scene.camera.target = scene.camera.position + glm::vec3(0.0f, 1.0f, -1.0f);
+    scene.camera.target = target;
     const PassFrame compute = render_in(method, scene, TracePass::kCompute, width, height);
     const PassFrame fragment = render_in(method, scene, TracePass::kFragment, width, height);
     ASSERT_EQ(compute.image.pixels.size(), size_t(width) * size_t(height));
