@@ -2,17 +2,18 @@
 // counts (spot 5.9K, the Stanford bunny 69K, the bunny split on its PN patches 2 x 2 into 278K
 // and 4 x 4 into 1.1M faces, each scaled into spot's box), placed as the glass of the
 // davis-wyman-color-chart scene and, in a copy of it, as a mirror. Per mesh and scene: ms per
-// frame with the mesh looked up in its geometry field (refined) and traced exactly through its
-// BVH, the PSNR of each against the Embree reference tracer's picture (1 spp, same depth), the
-// GPU bytes of each, and the work per lookup or traversal (counted on the GPU); and
+// frame, and of its tracing pass alone, with the mesh looked up in its geometry field (refined)
+// and traced exactly through its BVH (both rasterise the mesh into the G-buffer), the PSNR of each
+// against the Embree reference tracer's picture (1 spp, same depth), the GPU bytes of each, and the
+// work per lookup or traversal (counted on the GPU); and
 // --intersect auto's time against the faster of the two, with the route it took. Then, per mesh,
 // rays that hit it and rays that miss it apart (view rays, mirror reflections off its surface,
 // refractions into it): the time and work per ray of the field lookup and of the BVH walk, and
 // the GPU's agreement with the exact cast (bench/ray_work.hpp). Prints markdown.
 // Assets are built with `gfield build` (its defaults) into a temporary folder.
 //
-// Usage: bench_runtime_complexity [--frames F] [--depth D] [SIZE]   (default 2 frames, depth 4,
-// 256)
+// Usage: bench_runtime_complexity [--frames F] [--depth D] [SIZE]   (default 1 frame per round,
+// depth 4, 256)
 
 #include <algorithm>
 #include <cstdio>
@@ -40,6 +41,8 @@ namespace {
 /// Rays per family of the per-ray table, at most (each split into hits and misses), and the
 /// fewest rays a row is timed for (a pass over fewer is too short to time).
 constexpr size_t kRaysPerFamily = 16384;
+/// Rounds of the field, the BVH and auto in turn, each of --frames timed frames (run_interleaved).
+constexpr int kRounds = 3;
 constexpr size_t kFewestRaysTimed = 256;
 
 /// `mesh` moved and scaled so that its box has `target`'s centre and diagonal.
@@ -139,26 +142,31 @@ void bench_scene(const SeriesMesh& m, const std::string& file, const char* kind,
   const Image reference = clamped_to_display(tracer.render(options));
   method.settings().max_depth = depth;
   method.settings().mode = LookupMode::kRefined;
-  method.settings().intersect = MeshIntersection::kField;
-  const Run field = run(method, scene, size, frames, reference);
-  method.settings().intersect = MeshIntersection::kBvh;
-  const Run bvh = run(method, scene, size, frames, reference);
-  method.settings().intersect = MeshIntersection::kAuto;
-  const Run automatic = run(method, scene, size, frames, reference);
+  // One pass for every route and round: --pass auto's trial restarts whenever the route changes
+  // and may settle on another pass each round. The fragment pass is the BVH's faster on llvmpipe
+  // and the field's equal (bench_runtime_field).
+  method.settings().pass = TracePass::kFragment;
+  const MeshIntersection routes[] = {MeshIntersection::kField, MeshIntersection::kBvh,
+                                     MeshIntersection::kAuto};
+  const std::vector<Run> runs =
+      run_interleaved(method, scene, size, frames, kRounds, reference, 3,
+                      [&](int k) { method.settings().intersect = routes[k]; });
+  const Run &field = runs[0], &bvh = runs[1], &automatic = runs[2];
   const std::string status = method.status();
   const std::string route = status.substr(0, status.find('\n'));
   double field_mb = 0.0, bvh_mb = 0.0;
   asset_bytes(gpu, field_mb, bvh_mb);
-  std::printf("| %s | %zu | %s | field | %s | %.2f | %.1f | %s |\n", m.name.c_str(), m.faces, kind,
-              range_text(field.wall).c_str(), field.psnr, field_mb,
-              work_line(field.per_sample).c_str());
-  std::printf("| | | | BVH | %s | %.2f | %.1f | %s |\n", range_text(bvh.wall).c_str(), bvh.psnr,
-              bvh_mb, work_line(bvh.per_sample).c_str());
-  std::printf("| | | | field / BVH | %.2f | %+.2f | | |\n", field.ms / bvh.ms,
-              field.psnr - bvh.psnr);
-  std::printf("| | | | auto / the faster | %.2f | %.2f | | %s |\n",
-              automatic.ms / std::min(field.ms, bvh.ms), automatic.psnr,
-              route.substr(std::min(route.size(), route.find("by"))).c_str());
+  std::printf("| %s | %zu | %s | field | %s | %s | %.2f | %.1f | %s |\n", m.name.c_str(), m.faces,
+              kind, range_text(field.wall).c_str(), range_text(field.tracing).c_str(), field.psnr,
+              field_mb, work_line(field.per_sample).c_str());
+  std::printf("| | | | BVH | %s | %s | %.2f | %.1f | %s |\n", range_text(bvh.wall).c_str(),
+              range_text(bvh.tracing).c_str(), bvh.psnr, bvh_mb, work_line(bvh.per_sample).c_str());
+  std::printf("| | | | field / BVH | %.2f | %.2f | %+.2f | | |\n", field.ms / bvh.ms,
+              field.tracing.median / bvh.tracing.median, field.psnr - bvh.psnr);
+  std::printf("| | | | auto / the faster | %.2f | %.2f | %.2f | | %s |\n",
+              automatic.ms / std::min(field.ms, bvh.ms),
+              automatic.tracing.median / std::min(field.tracing.median, bvh.tracing.median),
+              automatic.psnr, route.substr(std::min(route.size(), route.find("by"))).c_str());
   std::fflush(stdout);
 }
 
@@ -225,7 +233,7 @@ void bench_rays(const SeriesMesh& m, const std::string& scene_file, size_t count
 }  // namespace
 
 int main(int argc, char** argv) {
-  int depth = 4, frames = 2, size = 256;
+  int depth = 4, frames = 1, size = 256;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool option = (arg == "--depth" || arg == "--frames") && i + 1 < argc;
@@ -243,15 +251,22 @@ int main(int argc, char** argv) {
   auto context = create_bench_context();
   if (!context)
     return kExitNoOpenGL;
-  std::printf("\n%dx%d, depth %d, %d timed frames; PSNR against the reference tracer (1 spp)\n\n",
-              size, size, depth, frames);
-  std::printf("| mesh | faces | scene | route | ms/frame (min-max) | PSNR dB | GPU MB | work |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "\n%dx%d, depth %d, fragment pass, %d timed frames in %d rounds of field, BVH and auto in "
+      "turn; PSNR against the reference tracer (1 spp)\n\n",
+      size, size, depth, frames * kRounds, kRounds);
+  std::printf(
+      "| mesh | faces | scene | route | ms/frame (min-max) | tracing ms (min-max) | PSNR dB | GPU "
+      "MB | work |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (const SeriesMesh& m : series)
     for (const bool mirror : {false, true})
       bench_scene(m, series_scene(m, mirror, folder.path), mirror ? "mirror" : "glass", size, depth,
                   frames);
   std::printf("\n%s\n", kFrameTimeNote);
+  std::printf(
+      "tracing ms: the tracing pass alone (GPU time), the frame less its G-buffer; both routes "
+      "rasterise the same mesh into the G-buffer, which grows with its faces\n");
   std::printf(
       "\nPer ray, rays that hit the mesh and rays that miss it apart (Embree's exact cast), "
       "%zu rays per family at most: ns per ray of each route in the probe pass (one "

@@ -4,8 +4,11 @@
 // picture and its work counted on the GPU, the GPU bytes of each way of meeting the meshes, and the
 // work as one line.
 
+#include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "gfield/image_metrics.hpp"
 #include "gfield/stopwatch.hpp"
@@ -20,9 +23,20 @@ struct Run {
   double ms = 0.0;        ///< the timed frames' median wall time (frame_timing.hpp)
   double gpu_ms = 0.0;    ///< their median GPU time
   TimeSummary wall, gpu;  ///< the timed frames' wall and GPU times
-  double cpu_ms = 0.0;    ///< CPU time per frame (warm-up frames included), all threads
+  /// The timed frames' tracing pass alone, GPU time: the frame less its G-buffer, the part in
+  /// which the routes to the meshes differ (the G-buffer rasterises the same meshes for both).
+  TimeSummary tracing;
+  double cpu_ms = 0.0;  ///< CPU time per frame (warm-up frames included), all threads
   double psnr = 0.0;
   FrameStats per_sample;  ///< one untimed counting frame
+};
+
+/// A configuration's timed frames, gathered over one or more rounds (ms per frame each).
+struct TimedFrames {
+  std::vector<double> wall_ms, gpu_ms, tracing_ms;
+  double cpu_ms = 0.0;  ///< CPU time of all frames drawn, warm-up frames included
+  int drawn = 0;        ///< frames drawn, warm-up frames included
+  Image image;          ///< the last frame
 };
 
 /// With --pass auto: draws frames until its trial has chosen the pass at size^2, so that the
@@ -33,25 +47,71 @@ inline void settle_pass_trial(GeometryFieldMethod& method, const Camera& camera,
     render_image(method, camera, size, size, 1);
 }
 
-inline Run run(GeometryFieldMethod& method, const Scene& scene, int size, int frames,
-               const Image& reference) {
-  Run r;
+/// One round of the method's present configuration: warm-up frames (frame_timing.hpp), then
+/// `frames` timed frames added to `t`.
+inline void time_round(GeometryFieldMethod& method, const Scene& scene, int size, int frames,
+                       TimedFrames& t) {
   settle_pass_trial(method, scene.camera, size);
-  Image image;
   const double cpu_start = process_cpu_ms();
+  std::vector<double> tracing_ms;  // every frame's, the timed ones last
   const FrameTimes times = time_frames(
-      [&](FrameStats* stats) { image = render_image(method, scene.camera, size, size, 1, stats); },
+      [&](FrameStats* stats) {
+        const double before = stats->gpu_part_ms("tracing");
+        t.image = render_image(method, scene.camera, size, size, 1, stats);
+        tracing_ms.push_back(stats->gpu_part_ms("tracing") - before);
+      },
       frames);
-  r.cpu_ms = (process_cpu_ms() - cpu_start) / double(times.warmup_frames + frames);
-  r.wall = summarize(times.wall_ms);
-  r.gpu = summarize(times.gpu_ms);
+  t.cpu_ms += process_cpu_ms() - cpu_start;
+  t.drawn += times.warmup_frames + frames;
+  t.wall_ms.insert(t.wall_ms.end(), times.wall_ms.begin(), times.wall_ms.end());
+  t.gpu_ms.insert(t.gpu_ms.end(), times.gpu_ms.begin(), times.gpu_ms.end());
+  t.tracing_ms.insert(t.tracing_ms.end(), tracing_ms.end() - frames, tracing_ms.end());
+}
+
+/// The run of the method's present configuration from its timed frames: their summaries, the
+/// last frame's PSNR against `reference`, and one counting frame's work.
+inline Run finish_run(GeometryFieldMethod& method, const Scene& scene, int size,
+                      const TimedFrames& t, const Image& reference) {
+  Run r;
+  r.wall = summarize(t.wall_ms);
+  r.gpu = summarize(t.gpu_ms);
+  r.tracing = summarize(t.tracing_ms);
   r.ms = r.wall.median;
   r.gpu_ms = r.gpu.median;
-  r.psnr = compare_images(clamped_to_display(image), reference).psnr;
+  r.cpu_ms = t.cpu_ms / double(std::max(1, t.drawn));
+  r.psnr = compare_images(clamped_to_display(t.image), reference).psnr;
   method.settings().count_work = true;
   render_image(method, scene.camera, size, size, 1, &r.per_sample);
   method.settings().count_work = false;
   return r;
+}
+
+inline Run run(GeometryFieldMethod& method, const Scene& scene, int size, int frames,
+               const Image& reference) {
+  TimedFrames t;
+  time_round(method, scene, size, frames, t);
+  return finish_run(method, scene, size, t, reference);
+}
+
+/// Runs `configurations` configurations (`configure(k)` sets the method to configuration k) in
+/// `rounds` rounds of `frames` timed frames each, in turn, so that a slow spell of a shared
+/// machine falls on every configuration alike; each one's frames pooled.
+inline std::vector<Run> run_interleaved(GeometryFieldMethod& method, const Scene& scene, int size,
+                                        int frames, int rounds, const Image& reference,
+                                        int configurations,
+                                        const std::function<void(int)>& configure) {
+  std::vector<TimedFrames> timed(static_cast<size_t>(configurations));
+  for (int round = 0; round < rounds; ++round)
+    for (int k = 0; k < configurations; ++k) {
+      configure(k);
+      time_round(method, scene, size, frames, timed[size_t(k)]);
+    }
+  std::vector<Run> runs;
+  for (int k = 0; k < configurations; ++k) {
+    configure(k);
+    runs.push_back(finish_run(method, scene, size, timed[size_t(k)], reference));
+  }
+  return runs;
 }
 
 /// GPU bytes of the meshes' geometry images and fields, and of their BVHs and rasterised meshes.

@@ -82,6 +82,13 @@ double FrameStats::part_ms(const std::string& name) const {
   return 0.0;
 }
 
+double FrameStats::gpu_part_ms(const std::string& name) const {
+  for (const auto& [n, v] : gpu_parts_ms)
+    if (n == name)
+      return v;
+  return 0.0;
+}
+
 double FrameStats::count(const std::string& name) const {
   for (const auto& [n, v] : counts)
     if (n == name)

@@ -84,8 +84,9 @@ struct FrameStats {
   void add_part(const std::string& name, double ms);
   void add_gpu_part(const std::string& name, double ms);
   void add_count(const std::string& name, double count);
-  /// The part or count called `name` (0 when not reported).
+  /// The part (wall or GPU time) or count called `name` (0 when not reported).
   double part_ms(const std::string& name) const;
+  double gpu_part_ms(const std::string& name) const;
   double count(const std::string& name) const;
 };
 

@@ -25,13 +25,14 @@ struct Route {
 /// nodes, glass rays, which cross the solid: 53 to 85).
 double estimated_bvh_nodes(size_t triangles, bool dielectric);
 
-/// The field's cost in BVH node visits, where the measured times would meet on llvmpipe: the
-/// mean over the benchmark's four meshes of (field time / BVH time) x BVH nodes per ray: for
-/// mirrors 59 to 73 per mesh, 64-65 on the mean of a run; for glass 79 to 97, 88-89. The
-/// ratios depend on the CPU llvmpipe runs on (docs/runtime.md). The bytes of a BVH larger than
-/// kAutoBvhBudget send a mesh to its field whatever the time.
-inline constexpr double kFieldNodesMirror = 65.0;
-inline constexpr double kFieldNodesGlass = 88.0;
+/// The field's cost in BVH node visits, where the measured tracing times would meet on
+/// llvmpipe: the mean over bench_runtime_complexity's four meshes and two runs of (field tracing
+/// time / BVH tracing time) x BVH nodes per ray: for mirrors 33 to 70 per mesh and run, 53 on
+/// the mean; for glass 37 to 59, 49. The ratios depend on the CPU llvmpipe runs on
+/// (docs/runtime.md). The bytes of a BVH larger than kAutoBvhBudget send a mesh to its field
+/// whatever the time.
+inline constexpr double kFieldNodesMirror = 53.0;
+inline constexpr double kFieldNodesGlass = 49.0;
 /// BVH bytes per triangle (nodes, triangles, shading: 373 MB for 1.1M faces) and the budget.
 inline constexpr double kBvhBytesPerTriangle = 340.0;
 inline constexpr double kAutoBvhBudget = 1024.0 * 1024.0 * 1024.0;
