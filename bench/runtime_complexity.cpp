@@ -41,9 +41,9 @@ namespace {
 /// Rays per family of the per-ray table, at most (each split into hits and misses), and the
 /// fewest rays a row is timed for (a pass over fewer is too short to time).
 constexpr size_t kRaysPerFamily = 16384;
+constexpr size_t kFewestRaysTimed = 256;
 /// Rounds of the field, the BVH and auto in turn, each of --frames timed frames (run_interleaved).
 constexpr int kRounds = 3;
-constexpr size_t kFewestRaysTimed = 256;
 
 /// `mesh` moved and scaled so that its box has `target`'s centre and diagonal.
 TriangleMesh fitted(TriangleMesh mesh, const TriangleMesh& target) {
