@@ -61,6 +61,14 @@ void add_named(std::vector<std::pair<std::string, double>>& list, const std::str
   }
   list.emplace_back(name, value);
 }
+
+double named_value(const std::vector<std::pair<std::string, double>>& list,
+                   const std::string& name) {
+  for (const auto& [n, v] : list)
+    if (n == name)
+      return v;
+  return 0.0;
+}
 }  // namespace
 
 void FrameStats::add_part(const std::string& name, double ms) {
@@ -76,24 +84,15 @@ void FrameStats::add_count(const std::string& name, double count) {
 }
 
 double FrameStats::part_ms(const std::string& name) const {
-  for (const auto& [n, v] : parts_ms)
-    if (n == name)
-      return v;
-  return 0.0;
+  return named_value(parts_ms, name);
 }
 
 double FrameStats::gpu_part_ms(const std::string& name) const {
-  for (const auto& [n, v] : gpu_parts_ms)
-    if (n == name)
-      return v;
-  return 0.0;
+  return named_value(gpu_parts_ms, name);
 }
 
 double FrameStats::count(const std::string& name) const {
-  for (const auto& [n, v] : counts)
-    if (n == name)
-      return v;
-  return 0.0;
+  return named_value(counts, name);
 }
 
 Image render_image(Method& method, const Camera& camera, int width, int height, int spp,

@@ -21,8 +21,8 @@ namespace fs = std::filesystem;
 
 TEST(IntersectRoute, TheModelPicksWhatTheBenchmarkMeasuredFaster) {
   // bench_runtime_complexity's tracing pass on llvmpipe: glass faster by its field at every size
-  // it measured, 5.9K to 1.1M faces; mirrors by their BVHs up to 278K faces, and at 1.1M within
-  // the runs' spread of the field (0.97 and 1.14 of its time).
+  // it measured, 5.9K to 1.1M faces; mirrors by their BVHs up to 278K faces, and at 1.1M as fast
+  // as by the field within the runs' spread.
   for (size_t faces : {5856u, 69451u, 277804u, 1111216u})
     EXPECT_FALSE(auto_route({faces, true, true}).bvh) << faces << " glass";
   for (size_t faces : {5856u, 69451u, 277804u})
@@ -60,10 +60,15 @@ void write_scene(const fs::path& file, const std::string& objects) {
                              "]}";
 }
 
+/// gfield-view's arguments for `scene` (its assets beside it), headless, up to --intersect.
+std::string view_arguments(const fs::path& scene) {
+  return scene.string() + " --assets " + scene.parent_path().string() +
+         " --allow-outside-paths --headless --depth 4 --intersect ";
+}
+
 /// Whether gfield-view draws `scene` with --intersect auto exactly as with --intersect `route`.
 void expect_auto_draws_as(const fs::path& scene, const std::string& route) {
-  const std::string view = scene.string() + " --assets " + scene.parent_path().string() +
-                           " --allow-outside-paths --headless --depth 4 --intersect ";
+  const std::string view = view_arguments(scene);
   const std::string base = (scene.parent_path() / scene.stem()).string();
   ASSERT_EQ(test::run_program(gfield::build_paths::view(), view + "auto -o " + base + "-auto.png")
                 .exit_code,
@@ -95,10 +100,8 @@ TEST(IntersectRoute, TheViewerTracesEachMeshTheWayTheModelSaysAndSaysWhy) {
        "material": {"type": "dielectric", "ior": 1.5}})";
   write_scene(dir / "both.json", torus + ", " + spot);
   const test::CliRun automatic = test::run_program(
-      gfield::build_paths::view(), (dir / "both.json").string() + " --assets " + dir.string() +
-                                       " --allow-outside-paths --headless --depth 4 --intersect "
-                                       "auto --bench -o " +
-                                       (dir / "both.png").string());
+      gfield::build_paths::view(),
+      view_arguments(dir / "both.json") + "auto --bench -o " + (dir / "both.png").string());
   ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
   EXPECT_NE(automatic.out.find("meshes by field: spot.obj (auto: ~53 BVH nodes per glass ray >= "
                                "49); by BVH: torus.obj (auto: ~37 BVH nodes per mirror ray < 53)"),
