@@ -855,6 +855,10 @@ GfHit gf_hit_near(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
 // (the surface curving back). Where that does not settle it, the hit of the parallel ray from
 // self_origin beyond self_t_min is taken, moved onto the ray (refined mode: gf_hit_near; where
 // that fails the ray passes beside it: a miss).
+// A ray into the solid (facing -1) meets the surface again; where the refined lookup finds no
+// hit for one, it failed (the Newton searches of the candidates left the image's charts) and the
+// nearest lookup is made instead: its hit moved onto the ray by gf_hit_near, or, where that fails,
+// as it is (about a texel off the surface).
 // gf_trace_leaving when `leaving`, else gf_trace(o, d, t_min, t_max, mode, false). One call of
 // gf_trace in a loop, so that a shader holds one copy of the lookup however it is used (each
 // call is inlined: with a call per case the geometry-field method's shader held some two dozen
@@ -865,32 +869,38 @@ GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, 
   vec3 start = o;
   float from = t_min;
   float to = t_max;
-  bool parallel = false;  // looking up the parallel ray from self_origin
+  bool parallel = false;   // looking up the parallel ray from self_origin
+  bool fallback = false;   // the nearest lookup after a refined one failed
+  GfHit near = gf_miss();  // a hit to move onto the ray (gf_hit_near)
   int crossings = 0;
-  for (int i = 0; i < GF_SELF_CROSSINGS + 2; i++) {
+  for (int i = 0; i < GF_SELF_CROSSINGS + 3; i++) {
     GfHit h = gf_trace_side(start, d, from, to, mode, false, leaving ? facing : 0.0f);
     if (!leaving) {
       return h;
     }
     if (parallel) {
-      if (!h.hit) {
-        return h;
-      }
-      if (mode != GF_MODE_REFINED) {
+      if (h.hit && mode != GF_MODE_REFINED) {
         h.t += shift;
-        return h;
       }
-      return gf_hit_near(o, d, t_min, t_max, h.uv);
+      near = h;
+      break;
     }
     if (h.hit && h.t >= self_t_min) {
-      return h;
+      near = h;
+      break;
     }
     if (!h.hit && mode == GF_MODE_REFINED) {
-      return h;  // the refined lookup knew the side the ray starts on: no crossing is a miss
+      if (facing >= 0.0f) {
+        return h;  // the refined lookup knew the side the ray starts on: no crossing is a miss
+      }
+      fallback = true;
+      mode = GF_MODE_NEAREST;
+      continue;
     }
     if (h.hit && crossings < GF_SELF_CROSSINGS) {
       if (facing * dot(h.normal, d) < 0.0f) {
-        return h;
+        near = h;
+        break;
       }
       from = h.t + t_min;
       crossings++;
@@ -901,7 +911,13 @@ GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, 
       to = t_max - shift;
     }
   }
-  return gf_miss();
+  if (near.hit && (fallback || (parallel && mode == GF_MODE_REFINED))) {
+    GfHit moved = gf_hit_near(o, d, t_min, t_max, near.uv);
+    if (moved.hit || !fallback) {
+      return moved;
+    }
+  }
+  return near;
 }
 
 GfHit gf_trace_leaving(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, float self_t_min,

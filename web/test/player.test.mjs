@@ -27,7 +27,7 @@ const DEPTH = 4;
 const SCENES = [
   { name: 'mirror-torus-instances', meshes: ['spot', 'torus'], floor: { field: 35, bvh: 35 } },
   { name: 'textured-mirror', meshes: ['spot-painted', 'torus'], floor: { field: 35, bvh: 35 } },
-  { name: 'davis-wyman-color-chart', meshes: ['spot'], floor: { field: 34.5, bvh: 35 } },
+  { name: 'davis-wyman-color-chart', meshes: ['spot'], floor: { field: 35, bvh: 35 } },
 ];
 
 let browser;
