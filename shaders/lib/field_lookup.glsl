@@ -700,8 +700,10 @@ bool gf_next_start(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
 // GF_MODE_REFINED: Newton searches (gf_refine) from the starts of gf_next_start. The first hit
 // verified in [t_min, t_max] from the nearest pair or a group (in order along the ray) is the
 // answer; searched on their own, the nearest of the candidates' verified hits is. None is a
-// miss. When nearly all of the neighbourhood's lines hit, the surface around the ray is closed
-// and a chart border there is a seam (unknown for the nearest pair alone: no seams then).
+// miss, except for a ray inside the solid (line.parity 1): the nearest pair's stored hit, placed
+// on the ray (gf_hit_at: about a texel off the surface). When nearly all of the neighbourhood's
+// lines hit, the surface around the ray is closed and a chart border there is a seam (unknown for
+// the nearest pair alone: no seams then).
 GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   vec3 e1;
   vec3 e2;
@@ -720,6 +722,7 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   vec2 hit_uv = vec2(-1.0f);
   vec3 hit_p = vec3(0.0f);
   float nearest_t = GF_FAR;
+  vec2 nearest_pair = vec2(-1.0f);  // the nearest pair's candidate
   vec2 uv;
   for (int visit = 0; visit < 4 + 32 + 2; visit++) {
     if (!gf_next_start(line, s, uv)) {
@@ -728,6 +731,7 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
     if (uv.x < 0.0f) {
       continue;
     }
+    nearest_pair = s.from == GF_STAGE_NEAREST_PAIR ? uv : nearest_pair;
     // Once a hit is verified, a start whose surface point lies beyond it cannot lead to a nearer
     // one (GF_PRUNE_SPACINGS).
     if (found) {
@@ -761,6 +765,11 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
     // A group's hit: its heaviest candidate is not searched.
     s.stage = s.from == GF_STAGE_GROUP0 ? GF_STAGE_GROUP1 : s.stage;
     s.stage = s.from == GF_STAGE_GROUP1 ? GF_STAGE_PAIRS : s.stage;
+  }
+  if (!found && line.parity == 1 && nearest_pair.x >= 0.0f) {
+    // A ray inside the solid meets the surface again: where no search verified a hit (they left
+    // the image's charts, near their borders), the nearest pair's stored hit is the answer.
+    return gf_hit_at(line.o, line.d, line.t_min, line.t_max, nearest_pair);
   }
   if (!found) {
     return gf_miss();  // WebGL has no ?: of structs
@@ -855,10 +864,6 @@ GfHit gf_hit_near(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
 // (the surface curving back). Where that does not settle it, the hit of the parallel ray from
 // self_origin beyond self_t_min is taken, moved onto the ray (refined mode: gf_hit_near; where
 // that fails the ray passes beside it: a miss).
-// A ray into the solid (facing -1) meets the surface again; where the refined lookup finds no
-// hit for one, it failed (the Newton searches of the candidates left the image's charts) and the
-// nearest lookup is made instead: its hit moved onto the ray by gf_hit_near, or, where that fails,
-// as it is (about a texel off the surface).
 // gf_trace_leaving when `leaving`, else gf_trace(o, d, t_min, t_max, mode, false). One call of
 // gf_trace in a loop, so that a shader holds one copy of the lookup however it is used (each
 // call is inlined: with a call per case the geometry-field method's shader held some two dozen
@@ -869,38 +874,32 @@ GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, 
   vec3 start = o;
   float from = t_min;
   float to = t_max;
-  bool parallel = false;   // looking up the parallel ray from self_origin
-  bool fallback = false;   // the nearest lookup after a refined one failed
-  GfHit near = gf_miss();  // a hit to move onto the ray (gf_hit_near)
+  bool parallel = false;  // looking up the parallel ray from self_origin
   int crossings = 0;
-  for (int i = 0; i < GF_SELF_CROSSINGS + 3; i++) {
+  for (int i = 0; i < GF_SELF_CROSSINGS + 2; i++) {
     GfHit h = gf_trace_side(start, d, from, to, mode, false, leaving ? facing : 0.0f);
     if (!leaving) {
       return h;
     }
     if (parallel) {
-      if (h.hit && mode != GF_MODE_REFINED) {
-        h.t += shift;
+      if (!h.hit) {
+        return h;
       }
-      near = h;
-      break;
+      if (mode != GF_MODE_REFINED) {
+        h.t += shift;
+        return h;
+      }
+      return gf_hit_near(o, d, t_min, t_max, h.uv);
     }
     if (h.hit && h.t >= self_t_min) {
-      near = h;
-      break;
+      return h;
     }
     if (!h.hit && mode == GF_MODE_REFINED) {
-      if (facing >= 0.0f) {
-        return h;  // the refined lookup knew the side the ray starts on: no crossing is a miss
-      }
-      fallback = true;
-      mode = GF_MODE_NEAREST;
-      continue;
+      return h;  // the refined lookup knew the side the ray starts on: no crossing is a miss
     }
     if (h.hit && crossings < GF_SELF_CROSSINGS) {
       if (facing * dot(h.normal, d) < 0.0f) {
-        near = h;
-        break;
+        return h;
       }
       from = h.t + t_min;
       crossings++;
@@ -911,13 +910,7 @@ GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, 
       to = t_max - shift;
     }
   }
-  if (near.hit && (fallback || (parallel && mode == GF_MODE_REFINED))) {
-    GfHit moved = gf_hit_near(o, d, t_min, t_max, near.uv);
-    if (moved.hit || !fallback) {
-      return moved;
-    }
-  }
-  return near;
+  return gf_miss();
 }
 
 GfHit gf_trace_leaving(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, float self_t_min,
