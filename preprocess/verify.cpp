@@ -313,10 +313,24 @@ struct Run {
   double seconds;
 };
 
+/// The rays of family `name` (surface_rays, mirror_rays or glass_rays) leaving the surface of
+/// `mesh`, held by `embree`.
+SurfaceRays leaving_rays(const std::string& name, const EmbreeMesh& embree,
+                         const TriangleMesh& mesh, const Box& box, SurfaceOffsets offsets,
+                         const VerifyOptions& options) {
+  if (name == "surface_rays") {
+    return random_surface_rays(mesh, options.rays, offsets, options.seed + 3);
+  }
+  if (name == "mirror_rays") {
+    return mirror_surface_rays(embree, mesh, box, options.rays, offsets, options.seed + 4);
+  }
+  return glass_surface_rays(embree, mesh, box, options.rays, offsets, options.seed + 5);
+}
+
 /// The ray families: box and view rays with all layers; rays leaving the surface of `mesh` (held
 /// by `embree`; reference `label`: the built mesh, or the original of an image built through a
-/// proxy) (random points and hemisphere directions; mirror reflections of view rays) with K = 1
-/// and with all K.
+/// proxy) (random points and hemisphere directions; mirror reflections and refractions into the
+/// solid, index of refraction 1.5, of view rays) with K = 1 and with all K.
 std::vector<Family> make_families(const GeometryField& field, const GeometryImage& image,
                                   const EmbreeMesh& embree, const TriangleMesh& mesh,
                                   const std::string& label, const VerifyOptions& options) {
@@ -329,11 +343,8 @@ std::vector<Family> make_families(const GeometryField& field, const GeometryImag
   const SurfaceOffsets offsets = surface_offsets(image, field.box);
   const std::vector<int> layers =
       field.layers > 1 ? std::vector<int>{1, field.layers} : std::vector<int>{1};
-  for (const char* name : {"surface_rays", "mirror_rays"}) {
-    SurfaceRays rays =
-        name == std::string("surface_rays")
-            ? random_surface_rays(mesh, options.rays, offsets, options.seed + 3)
-            : mirror_surface_rays(embree, mesh, field.box, options.rays, offsets, options.seed + 4);
+  for (const std::string name : {"surface_rays", "mirror_rays", "glass_rays"}) {
+    SurfaceRays rays = leaving_rays(name, embree, mesh, field.box, offsets, options);
     Family family{name, std::move(rays.rays), false, std::move(rays.triangles), layers, label};
     family.leaving.self_origins = std::move(rays.self_origins);
     family.leaving.self_t_min = rays.self_t_min;

@@ -51,8 +51,8 @@ struct VerifyOptions {
 /// Verifies the asset NAME (NAME.gfield.exr, NAME.gimage.exr, NAME.gimage.obj) against the mesh
 /// it was built from and, where found, against the original file: the table, box rays and view
 /// rays with all K layers; against the built mesh also rays leaving its surface (surface_rays,
-/// mirror_rays), with the first layer (K = 1) and with all K (against the original instead
-/// where the image was built through a proxy, VerifyOptions::proxy). The report: see
+/// mirror_rays, glass_rays), with the first layer (K = 1) and with all K (against the original
+/// instead where the image was built through a proxy, VerifyOptions::proxy). The report: see
 /// docs/geometry-field.md. False with an error "FILE: problem", also when the files (and
 /// NAME.report.json, where present) are of different builds (gfield/build_id.hpp).
 bool verify_asset(const std::string& name, const VerifyOptions& options, VerifyReport& report,

@@ -167,7 +167,8 @@ std::string verify_report_to_text(const VerifyReport& report) {
       out << line;
     };
     row("table", r.table);
-    for (const std::string prefix : {"box_rays", "view_rays", "surface_rays", "mirror_rays"}) {
+    for (const std::string prefix :
+         {"box_rays", "view_rays", "surface_rays", "mirror_rays", "glass_rays"}) {
       for (const auto& [family, modes] : r.families) {
         if (family.rfind(prefix, 0) != 0) {
           continue;

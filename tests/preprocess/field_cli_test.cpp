@@ -135,7 +135,7 @@ TEST_F(FieldCli, VerifyReportsEveryModeAgainstExactCasts) {
   // Rays leaving the surface, against the built mesh: with K = 1 and with all K layers.
   const nlohmann::json& built = report["references"][0];
   const std::string k = std::to_string(report["layers"].get<int>());
-  for (const std::string family : {"surface_rays", "mirror_rays"}) {
+  for (const std::string family : {"surface_rays", "mirror_rays", "glass_rays"}) {
     const double k1 = built[family + "_k1"]["refined"]["hit_agreement"].get<double>();
     const double all = built[family + "_k" + k]["refined"]["hit_agreement"].get<double>();
     EXPECT_GT(all, k1) << family;
@@ -161,6 +161,7 @@ TEST_F(FieldCli, FieldLayersAndVerifyFieldBits) {
   EXPECT_NE(r.output.find("K = 2, uv bits 8"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("surface_rays_k2 refined"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("mirror_rays_k1 refined"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("glass_rays_k2 refined"), std::string::npos) << r.output;
   r = run("field " + kSpot + " --image " + out + ".gimage.exr -o " + out +
           ".gfield.exr --layers 5");
   EXPECT_NE(r.status, 0);

@@ -28,7 +28,7 @@ struct SpotAsset {
 };
 
 class GlassLookup : public ::testing::Test {
-protected:
+ protected:
   static void SetUpTestSuite() {
     asset_ = new SpotAsset();
     const std::string path = std::string(build_paths::mesh_dir()) + "/spot.obj";
@@ -42,8 +42,7 @@ protected:
         << error;
     ASSERT_TRUE(asset_->embree.build(asset_->pm.mesh, error)) << error;
     GeometryField field;
-    ASSERT_TRUE(
-        build_geometry_field(asset_->pm, asset_->embree, asset_->image, 24, field, error))
+    ASSERT_TRUE(build_geometry_field(asset_->pm, asset_->embree, asset_->image, 24, field, error))
         << error;
     asset_->field = quantized_field(field, 8);
     ASSERT_TRUE(make_field_lookup(asset_->field, asset_->image, asset_->lookup, error)) << error;
@@ -84,10 +83,10 @@ TEST_F(GlassLookup, RaysIntoTheSolidAlwaysMeetItsSurface) {
   // The refractions into the solid of view rays, and their next step inside it (out into the
   // open, or totally reflected back into the solid).
   const SurfaceOffsets offsets = surface_offsets(asset_->image, asset_->field.box);
-  const SurfaceRays into = glass_surface_rays(asset_->embree, asset_->pm.mesh, asset_->field.box,
-                                              2000, offsets, 5);
-  const SurfaceRays inside = glass_inside_rays(asset_->embree, asset_->pm.mesh,
-                                               asset_->field.box, 2000, offsets, 6);
+  const SurfaceRays into =
+      glass_surface_rays(asset_->embree, asset_->pm.mesh, asset_->field.box, 2000, offsets, 5);
+  const SurfaceRays inside =
+      glass_inside_rays(asset_->embree, asset_->pm.mesh, asset_->field.box, 2000, offsets, 6);
   const IntoTheSolid a = rays_into_the_solid(*asset_, into);
   const IntoTheSolid b = rays_into_the_solid(*asset_, inside);
   std::printf("into the solid: %zu of %zu missed; reflected inside it: %zu of %zu missed\n",

@@ -249,8 +249,9 @@ TEST(GeometryImageProxy, VerifyCastsTheRaysLeavingTheSurfaceFromTheOriginal) {
   EXPECT_FALSE(built.contains("surface_rays_k1"));  // the proxy is not the surface described
   // Against the original, as the full mesh's own asset does against the mesh it was built from.
   const nlohmann::json& own = full["accuracy"]["references"][0];
-  for (const char* family : {"box_rays", "view_rays", "surface_rays_k1", "surface_rays_k8",
-                             "mirror_rays_k1", "mirror_rays_k8"}) {
+  for (const char* family :
+       {"box_rays", "view_rays", "surface_rays_k1", "surface_rays_k8", "mirror_rays_k1",
+        "mirror_rays_k8", "glass_rays_k1", "glass_rays_k8"}) {
     ASSERT_TRUE(own.contains(family) && original.contains(family)) << family;
     EXPECT_GE(original[family]["refined"]["hit_agreement"].get<double>(),
               own[family]["refined"]["hit_agreement"].get<double>() - 0.01)
