@@ -4,13 +4,16 @@
 // agreement with exact Embree casts and the position error (median and 99th percentile, percent
 // of the box diagonal), and the work of the rays whose exact cast hits and of those whose exact
 // cast misses, apart (fetches: field + image). The families are those the runtime casts:
-// box-face segments, view rays, mirror reflections off the surface, refractions into the solid
-// (glass) and their next step inside it (inside: out into the open or totally reflected), the
-// last three looked up as rays leaving the surface; and that next step from the hits the field
-// found rather than the exact ones (inside*: the runtime's rays after the first refraction; their
-// exact casts ignore no triangle, so their agreement is approximate). Fields at 8 bits, as the
-// GPU stores them. Usage: bench_lookup_work [rays] [mesh ...] (20000 rays; spot and the bunny).
+// box-face segments, view rays, and rays leaving the surface: mirror reflections, shadow rays (any
+// hit will do, as the runtime looks them up), refractions into the solid (glass) and their next
+// step inside it (inside: out into the open or totally reflected); that next step from the hits
+// the field found rather than the exact ones (inside*: the runtime's rays after the first
+// refraction; their exact casts ignore no triangle, so their agreement is approximate); and, in
+// refined mode, the shadow rays' peers: looked up on either side of the surface (shadow-e) and on
+// their side alone (shadow-s). Fields at 8 bits, as the GPU stores them. Usage:
+// bench_lookup_work [rays] [mesh ...] (20000 rays; spot and the bunny).
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -26,13 +29,26 @@ namespace {
 
 using namespace gfield;
 
-/// One family's rays: plain (first hits) or leaving the surface.
+/// One family's rays: plain (first hits) or leaving the surface; `refined_only`: a peer of a
+/// family's refined lookup, printed in refined mode alone.
 struct Family {
   const char* name;
   std::vector<Ray> rays;
   SurfaceRays leaving;
   bool is_leaving = false;
+  bool refined_only = false;
 };
+
+/// The shadow rays' peers: looked up on either side of the surface (facing 0), and on their side
+/// alone (no second lookup where the first doubts).
+std::vector<Family> shadow_peers(const SurfaceRays& shadow) {
+  SurfaceRays either = shadow;
+  either.any_hit = false;
+  std::fill(either.facing.begin(), either.facing.end(), 0.0f);
+  SurfaceRays side = shadow;
+  side.any_hit = false;
+  return {{"shadow-e", {}, either, true, true}, {"shadow-s", {}, side, true, true}};
+}
 
 /// The glass path's next step as the runtime casts it from a hit the field found (not an exact
 /// one): each ray of `into` looked up (refined), and at its hit refracted out of the solid (eta =
@@ -88,7 +104,8 @@ FamilyWork count_work(const FieldLookup& lookup, const EmbreeMesh& embree, const
     counted.work = exact ? &work.hits : &work.misses;
     work.hit_rays += exact ? 1 : 0;
     if (family.is_leaving) {
-      lookup_first_hit_leaving(counted, ray, s.self_origins[i], s.self_t_min, s.facing[i], mode);
+      lookup_first_hit_leaving(counted, ray, s.self_origins[i], s.self_t_min, s.facing[i], mode,
+                               s.any_hit);
     } else {
       lookup_first_hit(counted, ray, mode);
     }
@@ -129,14 +146,19 @@ bool report_mesh(const std::string& file, size_t count) {
   families.push_back(
       {"mirror", {}, mirror_surface_rays(embree, mesh, field.box, count, offsets, 4), true});
   families.push_back(
+      {"shadow", {}, shadow_surface_rays(embree, mesh, field.box, count, offsets, 7), true});
+  families.push_back(
       {"glass", {}, glass_surface_rays(embree, mesh, field.box, count, offsets, 5), true});
   families.push_back(
       {"inside", {}, glass_inside_rays(embree, mesh, field.box, count, offsets, 6), true});
   families.push_back(
-      {"inside*", {}, rays_leaving_field_hits(lookup, families[3].leaving, offsets, 1.5f), true});
+      {"inside*", {}, rays_leaving_field_hits(lookup, families[4].leaving, offsets, 1.5f), true});
+  for (const Family& peer : shadow_peers(families[3].leaving)) {
+    families.push_back(peer);
+  }
   std::printf("\n%s: %d faces, image %d^2, N = 24, K = %d, 8 bits\n", asset.name.c_str(),
               int(mesh.triangles.size()), asset.image.size, field.layers);
-  std::printf("%-7s %-8s %9s %9s %9s %7s %7s %8s %8s %8s %8s | %8s %8s | %8s %8s\n", "family",
+  std::printf("%-8s %-8s %9s %9s %9s %7s %7s %8s %8s %8s %8s | %8s %8s | %8s %8s\n", "family",
               "mode", "agree %", "pos med %", "pos p99 %", "exact", "answer", "field", "image",
               "Newton", "lookups", "hit f+i", "hit N", "miss f+i", "miss N");
   for (Family& family : families) {
@@ -144,6 +166,9 @@ bool report_mesh(const std::string& file, size_t count) {
       family.rays = family.leaving.rays;
     }
     for (LookupMode mode : {LookupMode::kNearest, LookupMode::kLinear, LookupMode::kRefined}) {
+      if (family.refined_only && mode != LookupMode::kRefined) {
+        continue;
+      }
       const AccuracyStats s =
           family.is_leaving ? verify_lookup(lookup, embree, mesh, family.leaving, mode)
                             : verify_lookup(lookup, embree, mesh, family.rays, mode, false, {});
@@ -159,7 +184,7 @@ bool report_mesh(const std::string& file, size_t count) {
                per_ray(work, gpu::WORK_IMAGE_FETCHES, n);
       };
       std::printf(
-          "%-7s %-8s %9.3f %9.4f %9.4f %7zu %7zu %8.1f %8.1f %8.2f %8.2f | %8.1f %8.2f | %8.1f "
+          "%-8s %-8s %9.3f %9.4f %9.4f %7zu %7zu %8.1f %8.1f %8.2f %8.2f | %8.1f %8.2f | %8.1f "
           "%8.2f\n",
           family.name, lookup_mode_name(mode), 100.0 * s.hit_agreement(), s.position_median,
           s.position_p99, s.exact_hits, s.answer_hits, per_ray(all, gpu::WORK_FIELD_FETCHES, rays),

@@ -108,8 +108,8 @@ std::vector<Answer> exact_answers(const Exact& exact, const Box& box, const std:
   return answers;
 }
 
-/// `leaving`: null, or how `rays` leave the surface (SurfaceRays::self_origins, self_t_min and
-/// facing), looked up as lookup_first_hit_leaving.
+/// `leaving`: null, or how `rays` leave the surface (SurfaceRays::self_origins, self_t_min,
+/// facing and any_hit), looked up as lookup_first_hit_leaving.
 std::vector<Answer> lookup_answers(const FieldLookup& lookup, const std::vector<Ray>& rays,
                                    LookupMode mode, bool last, double& seconds,
                                    const SurfaceRays* leaving = nullptr) {
@@ -118,7 +118,8 @@ std::vector<Answer> lookup_answers(const FieldLookup& lookup, const std::vector<
   tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
     const FieldHit h = leaving != nullptr
                            ? lookup_first_hit_leaving(lookup, rays[i], leaving->self_origins[i],
-                                                      leaving->self_t_min, leaving->facing[i], mode)
+                                                      leaving->self_t_min, leaving->facing[i], mode,
+                                                      leaving->any_hit)
                        : last ? lookup_last_hit(lookup, rays[i], mode)
                               : lookup_first_hit(lookup, rays[i], mode);
     answers[i] = {h.hit, h.position, h.normal};

@@ -130,6 +130,28 @@ SurfaceRays random_surface_rays(const TriangleMesh& mesh, size_t count, SurfaceO
 
 namespace {
 
+/// The smooth normal at hit `h` (angle-weighted vertex `normals` interpolated), `g` where those
+/// cancel.
+glm::vec3 smooth_normal(const TriangleMesh& mesh, const std::vector<glm::dvec3>& normals,
+                        const RayHit& h, glm::vec3 g) {
+  const glm::ivec3 t = mesh.triangles[size_t(h.triangle)];
+  const glm::dvec3 smooth = (1.0 - h.u - h.v) * normals[size_t(t[0])] +
+                            double(h.u) * normals[size_t(t[1])] +
+                            double(h.v) * normals[size_t(t[2])];
+  return glm::length(smooth) > 0.0 ? glm::vec3(glm::normalize(smooth)) : g;
+}
+
+/// Exact first hits of `rays` on `embree`'s mesh (ray i ignores triangle ignored[i] when given).
+std::vector<RayHit> exact_hits(const EmbreeMesh& embree, const std::vector<Ray>& rays,
+                               const std::vector<int>& ignored) {
+  std::vector<RayHit> hits(rays.size());
+  tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
+    hits[i] = intersect(embree, rays[i].origin, rays[i].direction, rays[i].t_min, rays[i].t_max,
+                        ignored.empty() ? -1 : ignored[i]);
+  });
+  return hits;
+}
+
 /// The rays that leave the exact first hits of `rays` on `mesh` (a ray i with ignored[i] >= 0
 /// leaves that triangle), up to `count`: reflected about the smooth normal (angle-weighted vertex
 /// normals; about the face's normal where that would leave below the face), or with `eta` > 0
@@ -139,11 +161,7 @@ SurfaceRays rays_leaving_hits(const EmbreeMesh& embree, const TriangleMesh& mesh
                               const std::vector<Ray>& rays, const std::vector<int>& ignored,
                               size_t count, SurfaceOffsets offsets, float eta) {
   const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
-  std::vector<RayHit> hits(rays.size());
-  tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
-    hits[i] = intersect(embree, rays[i].origin, rays[i].direction, rays[i].t_min, rays[i].t_max,
-                        ignored.empty() ? -1 : ignored[i]);
-  });
+  const std::vector<RayHit> hits = exact_hits(embree, rays, ignored);
   SurfaceRays out;
   out.self_t_min = 2.0f * offsets.self;
   for (size_t i = 0; i < rays.size() && out.rays.size() < count; ++i) {
@@ -154,13 +172,9 @@ SurfaceRays rays_leaving_hits(const EmbreeMesh& embree, const TriangleMesh& mesh
       continue;
     }
     const glm::vec3 d = glm::normalize(rays[i].direction);
-    const glm::ivec3 t = mesh.triangles[size_t(h.triangle)];
-    const glm::dvec3 smooth = (1.0 - h.u - h.v) * normals[size_t(t[0])] +
-                              double(h.u) * normals[size_t(t[1])] +
-                              double(h.v) * normals[size_t(t[2])];
     glm::vec3 g = face_normal(mesh, h.triangle);
     g = glm::dot(d, g) < 0.0f ? g : -g;
-    glm::vec3 n = glm::length(smooth) > 0.0 ? glm::vec3(glm::normalize(smooth)) : g;
+    glm::vec3 n = smooth_normal(mesh, normals, h, g);
     n = glm::dot(d, n) < 0.0f ? n : -n;
     glm::vec3 r = eta > 0.0f ? glm::refract(d, n, eta) : glm::vec3(0.0f);
     if (eta > 0.0f && glm::dot(r, r) > 0.0f && glm::dot(r, g) < 0.0f) {
@@ -198,6 +212,38 @@ SurfaceRays glass_inside_rays(const EmbreeMesh& embree, const TriangleMesh& mesh
                               size_t count, SurfaceOffsets offsets, uint64_t seed, float ior) {
   const SurfaceRays into = glass_surface_rays(embree, mesh, box, 2 * count, offsets, seed, ior);
   return rays_leaving_hits(embree, mesh, into.rays, into.triangles, count, offsets, ior);
+}
+
+SurfaceRays shadow_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
+                                size_t count, SurfaceOffsets offsets, uint64_t seed) {
+  const std::vector<Ray> view = random_view_rays(box, 4 * count, seed);
+  const std::vector<RayHit> hits = exact_hits(embree, view, {});
+  const std::vector<glm::dvec3> normals = angle_weighted_vertex_normals(mesh);
+  const float offset = std::max(offsets.self, 10.0f * offsets.path);
+  std::mt19937_64 rng(seed + 1);
+  SurfaceRays out;
+  out.self_t_min = 2.0f * offset;
+  out.any_hit = true;
+  for (size_t i = 0; i < view.size() && out.rays.size() < count; ++i) {
+    const RayHit& h = hits[i];
+    const glm::vec3 l = random_direction(rng);
+    if (!h.hit) {
+      continue;
+    }
+    glm::vec3 g = face_normal(mesh, h.triangle);
+    g = glm::dot(view[i].direction, g) < 0.0f ? g : -g;
+    glm::vec3 n = smooth_normal(mesh, normals, h, g);
+    n = glm::dot(view[i].direction, n) < 0.0f ? n : -n;
+    if (glm::dot(l, g) <= 0.0f || glm::dot(l, n) <= 0.0f) {
+      continue;  // the light is behind the surface: no shadow ray
+    }
+    const glm::vec3 origin = view[i].origin + h.t * view[i].direction + offset * g;
+    out.rays.push_back({origin, l, 2.0f * offset, gpu::GF_FAR});
+    out.self_origins.push_back(origin);
+    out.facing.push_back(glm::dot(face_normal(mesh, h.triangle), g) >= 0.0f ? 1.0f : -1.0f);
+    out.triangles.push_back(h.triangle);
+  }
+  return out;
 }
 
 }  // namespace gfield

@@ -35,13 +35,15 @@ SurfaceOffsets surface_offsets(const GeometryImage& image, const Box& box);
 /// by offsets.path (t_min = 2 offsets.path), the parallel ray of its lookup
 /// (lookup_first_hit_leaving) from `self_origins` by offsets.self, beyond self_t_min = 2
 /// offsets.self; `facing`: +1 where the ray leaves on the side the triangle's winding faces
-/// (the geometry image's normals face that way), -1 on the other side.
+/// (the geometry image's normals face that way), -1 on the other side; `any_hit`: shadow rays,
+/// looked up as such (lookup_first_hit_leaving).
 struct SurfaceRays {
   std::vector<Ray> rays;
   std::vector<glm::vec3> self_origins;
   std::vector<float> facing;
   float self_t_min = 0.0f;
   std::vector<int> triangles;
+  bool any_hit = false;
 };
 /// `count` rays from uniform random points of `mesh`'s surface (by area) in uniform random
 /// directions over the hemisphere of the face's outward normal.
@@ -59,6 +61,13 @@ SurfaceRays mirror_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
 SurfaceRays glass_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
                                size_t count, SurfaceOffsets offsets, uint64_t seed,
                                float ior = 1.5f);
+/// Up to `count` shadow rays from the exact first hits of random_view_rays(box) on `embree`'s mesh
+/// `mesh` towards uniform random light directions, where the light is in front of both the face
+/// and the smooth normal, as the runtime casts them (shaders/lib/scene.glsl, light_from): from
+/// max(offsets.self, 10 offsets.path) off the face on the viewer's side, looked up from there as
+/// shadow rays (any_hit).
+SurfaceRays shadow_surface_rays(const EmbreeMesh& embree, const TriangleMesh& mesh, const Box& box,
+                                size_t count, SurfaceOffsets offsets, uint64_t seed);
 /// The glass path's next step: up to `count` rays leaving the exact hits of
 /// glass_surface_rays(... 2 * count ...) on the inside of the surface, refracted out into the open
 /// (facing +1) or, where the refraction is total, reflected back into the solid (facing -1).

@@ -58,7 +58,7 @@ void main() {
 #ifdef PROBE_LEAVING
   vec4 self = texelFetch(u_ray_self, pixel, 0);
   GfHit h = gf_trace_leaving(origin.xyz, direction.xyz, origin.w, direction.w, self.xyz,
-                             u_self_t_min, self.w, u_mode);
+                             u_self_t_min, self.w, u_mode, false);
 #else
   GfHit h = gf_trace(origin.xyz, direction.xyz, origin.w, direction.w, u_mode, u_last);
 #endif

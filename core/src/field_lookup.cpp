@@ -170,13 +170,13 @@ FieldHit lookup_first_hit(const FieldLookup& lookup, const Ray& ray, LookupMode 
 }
 
 FieldHit lookup_first_hit_leaving(const FieldLookup& lookup, const Ray& ray, vec3 self_origin,
-                                  float self_t_min, float facing, LookupMode mode) {
+                                  float self_t_min, float facing, LookupMode mode, bool any_hit) {
   if (!can_look_up(lookup, ray)) {
     return {};
   }
   return field_hit(
       glsl_lookup(lookup).gf_trace_leaving(ray.origin, ray.direction, ray.t_min, ray.t_max,
-                                           self_origin, self_t_min, facing, int(mode)),
+                                           self_origin, self_t_min, facing, int(mode), any_hit),
       ray);
 }
 

@@ -73,6 +73,7 @@ struct GfHit {
   vec2 uv;        // geometry-image uv of the hit
   vec3 position;  // mesh coordinates
   vec3 normal;    // unit normal from the geometry image
+  bool doubt;     // an any-hit miss of the refined lookup that may be wrong (gf_trace_refined)
 };
 
 GfHit gf_miss() {
@@ -82,6 +83,7 @@ GfHit gf_miss() {
   h.uv = vec2(-1.0f);
   h.position = vec3(0.0f);
   h.normal = vec3(0.0f);
+  h.doubt = false;
   return h;
 }
 
@@ -199,6 +201,7 @@ GfHit gf_hit(float t, vec2 uv, vec3 p) {
   h.uv = uv;
   h.position = p;
   h.normal = gf_image_normal(uv);
+  h.doubt = false;
   return h;
 }
 
@@ -349,6 +352,7 @@ struct GfLine {
   float t_max;
   bool last;    // the last hit: the table read from the exit side
   bool beyond;  // the range starts inside the box: layers before the origin are skipped
+  bool any_hit;  // a shadow ray's: any hit in the range will do (GfHit.doubt)
   // Refined, beyond the origin: the crossings the ray can meet first. The hits of a line
   // through a closed surface alternate from its entry sample: entering the solid (layers 0, 2,
   // ...), leaving it (1, 3, ...). A ray starting in the open meets an entering crossing first
@@ -582,6 +586,24 @@ int gf_heaviest(vec4 w) {
   return k;
 }
 
+// Whether the line of the nearest pair crosses the surface with the other parity than
+// line.parity's beyond line.margin from the ray's origin (its last stored hit, read from the
+// exit sample). Within a sample spacing of a concave crease the line and the ray lie on different
+// sides of the surface, and a lookup on the ray's side misses the hits the line meets on the
+// other.
+bool gf_other_side_beyond(GF_IN(GfLine) line) {
+  int nearest = 4 * gf_heaviest(line.w_entry) + gf_heaviest(line.w_exit);
+  int entry = line.k_entry[nearest / 4];
+  int exit = line.k_exit[nearest % 4];
+  GfLineHits hits = gf_read_line(entry, exit);
+  int last = min(hits.count, gf_field_layers()) - 1;
+  if (last < 0 || last % 2 == line.parity) {
+    return false;
+  }
+  vec2 uv = gf_line_hit(entry, exit, last, hits);
+  return uv.x >= 0.0f && gf_stored_t(line, uv) >= line.t_min + line.margin;
+}
+
 // The refined lookup's search stages (gf_next_start), in order.
 // The nearest pair's candidate (ranges from inside the box).
 GF_CONST int GF_STAGE_NEAREST_PAIR = 0;
@@ -703,7 +725,7 @@ bool gf_next_start(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
 // miss, except for a ray inside the solid (line.parity 1): the nearest pair's stored hit, placed
 // on the ray (gf_hit_at: about a texel off the surface). When nearly all of the neighbourhood's
 // lines hit, the surface around the ray is closed and a chart border there is a seam (unknown for
-// the nearest pair alone: no seams then).
+// the nearest pair alone: no seams then). An any-hit lookup's miss may carry GfHit.doubt.
 GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   vec3 e1;
   vec3 e2;
@@ -723,6 +745,7 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
   vec3 hit_p = vec3(0.0f);
   float nearest_t = GF_FAR;
   vec2 nearest_pair = vec2(-1.0f);  // the nearest pair's candidate
+  bool searched = false;
   vec2 uv;
   for (int visit = 0; visit < 4 + 32 + 2; visit++) {
     if (!gf_next_start(line, s, uv)) {
@@ -743,6 +766,7 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
     }
     vec3 p;
     bool seams = s.from > GF_STAGE_NEAREST_PAIR && s.candidates.weight >= GF_SEAM_WEIGHT;
+    searched = true;
     if (!gf_refine(line.o, e1, e2, tolerance, seams, start, uv, p)) {
       continue;
     }
@@ -772,7 +796,13 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
     return gf_hit_at(line.o, line.d, line.t_min, line.t_max, nearest_pair);
   }
   if (!found) {
-    return gf_miss();  // WebGL has no ?: of structs
+    // An any-hit lookup on a known side doubts a miss after searches that verified nothing (the
+    // ray passes near the surface), or where the nearest pair's line meets the surface beyond
+    // the origin from the other side.
+    GfHit miss = gf_miss();  // WebGL has no ?: of structs
+    miss.doubt = line.any_hit && line.parity >= 0 &&
+                 (searched || (line.beyond && !line.last && gf_other_side_beyond(line)));
+    return miss;
   }
   return gf_hit(hit_t, hit_uv, hit_p);
 }
@@ -781,8 +811,9 @@ GfHit gf_trace_refined(GF_IN(GfLine) line, float diagonal) {
 // true: the field read from the exit side, i.e. the reversed line) of o + t d, t in
 // [t_min, t_max], in mesh coordinates, over the stored hits of all layers (see the modes above).
 // `side`: where the ray starts, for the refined lookup of a range that starts inside the box: +1
-// in the open, -1 inside the solid, 0 unknown (GfLine.parity).
-GfHit gf_trace_side(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last, float side) {
+// in the open, -1 inside the solid, 0 unknown (GfLine.parity). `any_hit`: GfLine.any_hit.
+GfHit gf_trace_side(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last, float side,
+                    bool any_hit) {
   GF_COUNT(WORK_LOOKUPS, 1);
   if (!(dot(d, d) > 0.0f)) {
     return gf_miss();  // zero or NaN direction
@@ -817,6 +848,7 @@ GfHit gf_trace_side(vec3 o, vec3 d, float t_min, float t_max, int mode, bool las
   float face = 1.0e-4f * (t1 - t0);
   line.beyond = last ? t_max < t1 - face : t_min > t0 + face;
   line.parity = last || side == 0.0f ? -1 : (side > 0.0f ? 0 : 1);
+  line.any_hit = any_hit;
   line.margin = GF_UNVERIFIED_MARGIN * diagonal / (float(n) * sqrt(dot(d, d)));
   if (mode == GF_MODE_NEAREST) {
     line.k_entry = ivec4(gf_nearest_sample(face_entry, st_entry, n));
@@ -834,7 +866,7 @@ GfHit gf_trace_side(vec3 o, vec3 d, float t_min, float t_max, int mode, bool las
 }
 
 GfHit gf_trace(vec3 o, vec3 d, float t_min, float t_max, int mode, bool last) {
-  return gf_trace_side(o, d, t_min, t_max, mode, last, 0.0f);
+  return gf_trace_side(o, d, t_min, t_max, mode, last, 0.0f, false);
 }
 
 // The hit of o + t d, t in [t_min, t_max], on the surface near geometry-image uv (a hit found for
@@ -863,21 +895,27 @@ GfHit gf_hit_near(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
 // leaves the mesh's), and the lookup goes on beyond it; a crossing facing the other way is a hit
 // (the surface curving back). Where that does not settle it, the hit of the parallel ray from
 // self_origin beyond self_t_min is taken, moved onto the ray (refined mode: gf_hit_near; where
-// that fails the ray passes beside it: a miss).
+// that fails the ray passes beside it: a miss). `any_hit`: a shadow ray, for which any hit in the
+// range will do: where the refined lookup on its side doubts its miss (GfHit.doubt: the ray
+// passes near the surface, at a shadow's edge or a concave crease, or the geometry image's
+// deviation from the mesh puts its start on the surface's other side), the lookup on either side
+// (facing 0) answers. On its side alone such rays lose self-shadows; on either side alone each
+// lookup near the surface searches every candidate, the crossings of the surface it leaves.
 // gf_trace_leaving when `leaving`, else gf_trace(o, d, t_min, t_max, mode, false). One call of
 // gf_trace in a loop, so that a shader holds one copy of the lookup however it is used (each
 // call is inlined: with a call per case the geometry-field method's shader held some two dozen
 // copies, and llvmpipe ran even a scene without meshes 5x slower).
 GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, float self_t_min,
-                    float facing, int mode, bool leaving) {
+                    float facing, int mode, bool leaving, bool any_hit) {
   float shift = dot(self_origin - o, d) / dot(d, d);
   vec3 start = o;
   float from = t_min;
   float to = t_max;
   bool parallel = false;  // looking up the parallel ray from self_origin
   int crossings = 0;
-  for (int i = 0; i < GF_SELF_CROSSINGS + 2; i++) {
-    GfHit h = gf_trace_side(start, d, from, to, mode, false, leaving ? facing : 0.0f);
+  float side = facing;  // the side looked up
+  for (int i = 0; i < GF_SELF_CROSSINGS + 3; i++) {
+    GfHit h = gf_trace_side(start, d, from, to, mode, false, leaving ? side : 0.0f, any_hit);
     if (!leaving) {
       return h;
     }
@@ -894,11 +932,15 @@ GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, 
     if (h.hit && h.t >= self_t_min) {
       return h;
     }
+    if (!h.hit && h.doubt && side != 0.0f) {
+      side = 0.0f;
+      continue;
+    }
     if (!h.hit && mode == GF_MODE_REFINED) {
       return h;  // the refined lookup knew the side the ray starts on: no crossing is a miss
     }
     if (h.hit && crossings < GF_SELF_CROSSINGS) {
-      if (facing * dot(h.normal, d) < 0.0f) {
+      if (side * dot(h.normal, d) < 0.0f) {
         return h;
       }
       from = h.t + t_min;
@@ -914,8 +956,8 @@ GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, 
 }
 
 GfHit gf_trace_leaving(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, float self_t_min,
-                       float facing, int mode) {
-  return gf_trace_from(o, d, t_min, t_max, self_origin, self_t_min, facing, mode, true);
+                       float facing, int mode, bool any_hit) {
+  return gf_trace_from(o, d, t_min, t_max, self_origin, self_t_min, facing, mode, true, any_hit);
 }
 
 #ifdef __cplusplus

@@ -152,13 +152,14 @@ SceneHit world_bvh_hit(int k, BvhMeshHit m) {
 
 // How a ray looks up the object it leaves (the camera's: object -1): a mesh from `origin` (its
 // start moved SceneHit.self_offset off the surface) beyond `t_min` (gf_trace_leaving); `facing`:
-// +1 when it leaves into the open, -1 into the solid, 0 either (shadow rays: with their side
-// known the lookup lost self-shadows near chart borders).
+// +1 when it leaves into the open, -1 into the solid; `shadow`: any hit will do (gf_trace_from's
+// any_hit: on its side, and on either side where that lookup doubts).
 struct SelfLookup {
   int object;
   vec3 origin;
   float t_min;
   float facing;
+  bool shadow;
 };
 
 SelfLookup no_self_lookup() {
@@ -167,6 +168,7 @@ SelfLookup no_self_lookup() {
   s.origin = vec3(0.0f);
   s.t_min = 0.0f;
   s.facing = 1.0f;
+  s.shadow = false;
   return s;
 }
 
@@ -178,6 +180,7 @@ SelfLookup self_lookup(SceneHit hit, vec3 g, float offset) {
   s.origin = hit.position + offset * g;
   s.t_min = 2.0f * offset;
   s.facing = dot(hit.normal, g) >= 0.0f ? 1.0f : -1.0f;
+  s.shadow = false;
   return s;
 }
 
@@ -203,7 +206,7 @@ SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, SelfL
     vec3 ls = (objects[k].to_object * vec4(self.origin, 1.0f)).xyz;
     select_mesh(k);
     return world_mesh_hit(k, gf_trace_from(lo, ld, from, t_max, ls, self.t_min, self.facing,
-                                           SCENE_LOOKUP_MODE, own));
+                                           SCENE_LOOKUP_MODE, own, self.shadow));
 #endif
     return scene_miss();
   }
@@ -329,6 +332,6 @@ bool light_from(SceneHit hit, vec3 geometric_normal, vec3 incoming, int i, out v
   float falloff = point ? 1.0f / (distance * distance) : 1.0f;
   radiance = hit.albedo * lights[i].color.rgb * cosine * falloff;
   self = self_lookup(hit, g, shadow_epsilon(hit));
-  self.facing = 0.0f;  // SelfLookup: a shadow ray looks its surface up on either side
+  self.shadow = true;
   return true;
 }

@@ -241,9 +241,11 @@ test('the page counts the work gfield-view counts, and three-mesh-bvh\'s walks',
       const viewer = viewerWork(method);
       console.log(`${method}: page ${JSON.stringify(counts[method])}, gfield-view ${JSON.stringify(viewer)}`);
       for (const [name, n] of Object.entries(viewer)) {
-        // The two rasterisers cover silhouette pixels apart (docs/web.md): within 2%.
+        // The two rasterisers cover silhouette pixels apart (docs/web.md), and a shadow ray whose
+        // lookup doubts its miss on one GPU and not on the other searches its surface again
+        // (some 30 Newton steps): within 3%.
         const page = counts[method][name];
-        assert.ok(n === 0 ? page === 0 : Math.abs(page - n) <= 0.02 * n, `${method} ${name}: ${page} vs ${n}`);
+        assert.ok(n === 0 ? page === 0 : Math.abs(page - n) <= 0.03 * n, `${method} ${name}: ${page} vs ${n}`);
       }
       assert.ok(viewer[method === 'field' ? 'lookups' : 'bvh_traversals'] > 1000, method);
     }

@@ -87,9 +87,12 @@ FieldHit lookup_first_hit(const FieldLookup& lookup, const Ray& ray, LookupMode 
 /// side the surface's normals face, -1 on the other), else the lookup goes on beyond it; where
 /// that does not settle it, the first hit beyond self_t_min of the parallel ray from
 /// `self_origin` (the start moved farther off the surface, by the geometry image's ray offset),
-/// in refined mode moved onto `ray` (a miss where that fails).
+/// in refined mode moved onto `ray` (a miss where that fails). `any_hit`: a shadow ray, any hit
+/// in range will do: looked up on its side, and on either side where that lookup searched
+/// without verifying a hit (gf_trace_from).
 FieldHit lookup_first_hit_leaving(const FieldLookup& lookup, const Ray& ray, glm::vec3 self_origin,
-                                  float self_t_min, float facing, LookupMode mode);
+                                  float self_t_min, float facing, LookupMode mode,
+                                  bool any_hit = false);
 /// The last hit of `ray` in [t_min, t_max]: the first hit of the reversed line, read from the
 /// table with entry and exit swapped (rays leaving a refracting object).
 FieldHit lookup_last_hit(const FieldLookup& lookup, const Ray& ray, LookupMode mode);
