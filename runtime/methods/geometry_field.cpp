@@ -155,17 +155,25 @@ bool GeometryFieldMethod::load(GpuScene& scene, const std::filesystem::path& sha
 }
 
 std::string GeometryFieldMethod::trace_defines() const {
-  bool by_field = false, by_bvh = false;
   const std::vector<GpuAsset>& assets = scene_->assets().assets();
+  auto by_its_field = [&](int m) {
+    return assets[size_t(m)].samples_per_side > 0 &&
+           settings_.intersect != MeshIntersection::kBvh && !scene_->bvh_route(m);
+  };
+  bool by_field = false, by_bvh = false, field_shadows = false;
   for (size_t m = 0; m < assets.size(); ++m) {
-    const bool field = assets[m].samples_per_side > 0 &&
-                       settings_.intersect != MeshIntersection::kBvh && !scene_->bvh_route(int(m));
-    by_field = by_field || field;
-    by_bvh = by_bvh || !field;
+    by_field = by_field || by_its_field(int(m));
+    by_bvh = by_bvh || !by_its_field(int(m));
+  }
+  for (const SceneObject& o : scene_->scene().objects) {
+    field_shadows =
+        field_shadows || (o.shape.type == ShapeType::kMesh && o.shape.mesh >= 0 &&
+                          o.material.type == MaterialType::kDiffuse && by_its_field(o.shape.mesh));
   }
   return "#define GF_TRACE_MODE " + std::to_string(int(settings_.mode)) +
          "\n#define GF_FIELD_MESHES " + (by_field ? "1" : "0") + "\n#define GF_BVH_MESHES " +
-         (by_bvh ? "1" : "0") + "\n" + (settings_.count_work ? "#define GF_COUNT_WORK 1\n" : "");
+         (by_bvh ? "1" : "0") + "\n#define GF_FIELD_SHADOWS " + (field_shadows ? "1" : "0") + "\n" +
+         (settings_.count_work ? "#define GF_COUNT_WORK 1\n" : "");
 }
 
 const ShaderProgram* GeometryFieldMethod::trace_program(TracePass pass) {

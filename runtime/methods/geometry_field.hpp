@@ -99,7 +99,8 @@ class GeometryFieldMethod : public Method {
   /// cannot (the message on stderr, the setting back to what works).
   bool follow_settings();
   /// The defines of the shading pass for the settings and the scene: GF_TRACE_MODE,
-  /// GF_FIELD_MESHES, GF_BVH_MESHES (0: no mesh met that way), GF_COUNT_WORK.
+  /// GF_FIELD_MESHES, GF_BVH_MESHES (0: no mesh met that way), GF_FIELD_SHADOWS (0: no diffuse
+  /// mesh traced by its field), GF_COUNT_WORK.
   std::string trace_defines() const;
   /// The tracing pass `pass` for trace_defines(), built on first use (null, the message on
   /// stderr, when it does not build).

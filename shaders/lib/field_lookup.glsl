@@ -899,8 +899,9 @@ GfHit gf_hit_near(vec3 o, vec3 d, float t_min, float t_max, vec2 uv) {
 // range will do: where the refined lookup on its side doubts its miss (GfHit.doubt: the ray
 // passes near the surface, at a shadow's edge or a concave crease, or the geometry image's
 // deviation from the mesh puts its start on the surface's other side), the lookup on either side
-// (facing 0) answers. On its side alone such rays lose self-shadows; on either side alone each
-// lookup near the surface searches every candidate, the crossings of the surface it leaves.
+// (facing 0) answers, one of the GF_SELF_CROSSINGS + 2 lookups at most. On its side alone such
+// rays lose self-shadows; on either side alone each lookup near the surface searches every
+// candidate, the crossings of the surface it leaves.
 // gf_trace_leaving when `leaving`, else gf_trace(o, d, t_min, t_max, mode, false). One call of
 // gf_trace in a loop, so that a shader holds one copy of the lookup however it is used (each
 // call is inlined: with a call per case the geometry-field method's shader held some two dozen
@@ -914,7 +915,7 @@ GfHit gf_trace_from(vec3 o, vec3 d, float t_min, float t_max, vec3 self_origin, 
   bool parallel = false;  // looking up the parallel ray from self_origin
   int crossings = 0;
   float side = facing;  // the side looked up
-  for (int i = 0; i < GF_SELF_CROSSINGS + 3; i++) {
+  for (int i = 0; i < GF_SELF_CROSSINGS + 2; i++) {
     GfHit h = gf_trace_side(start, d, from, to, mode, false, leaving ? side : 0.0f, any_hit);
     if (!leaving) {
       return h;

@@ -26,8 +26,8 @@ uniform int u_light_count;
 uniform vec3 u_ambient;
 // The geometry-field method builds one program per setting (runtime/methods/geometry_field.cpp):
 // GF_TRACE_MODE, the lookup mode (else the uniform u_mode); GF_FIELD_MESHES and GF_BVH_MESHES,
-// 0 where no mesh is met that way. llvmpipe runs every branch of a shader under a mask, so code
-// a frame does not use costs as much as code it does.
+// 0 where no mesh is met that way; GF_FIELD_SHADOWS (below). llvmpipe runs every branch of a
+// shader under a mask, so code a frame does not use costs as much as code it does.
 #ifdef GF_TRACE_MODE
 #define SCENE_LOOKUP_MODE GF_TRACE_MODE
 #else
@@ -39,6 +39,11 @@ uniform int u_mode;  // GF_MODE_NEAREST, GF_MODE_LINEAR, GF_MODE_REFINED
 #endif
 #ifndef GF_BVH_MESHES
 #define GF_BVH_MESHES 1
+#endif
+// GF_FIELD_SHADOWS: 0 where no diffuse mesh is traced by its field, so that no shadow ray looks
+// up the mesh it leaves (intersect_object's any_hit) and the lookup's any-hit doubt compiles away.
+#ifndef GF_FIELD_SHADOWS
+#define GF_FIELD_SHADOWS 1
 #endif
 uniform bool u_self_reflection; // mesh objects look themselves up too
 uniform bool u_intersect_bvh;   // every mesh through its BVH (else only those without a field)
@@ -152,14 +157,12 @@ SceneHit world_bvh_hit(int k, BvhMeshHit m) {
 
 // How a ray looks up the object it leaves (the camera's: object -1): a mesh from `origin` (its
 // start moved SceneHit.self_offset off the surface) beyond `t_min` (gf_trace_leaving); `facing`:
-// +1 when it leaves into the open, -1 into the solid; `shadow`: any hit will do (gf_trace_from's
-// any_hit: on its side, and on either side where that lookup doubts).
+// +1 when it leaves into the open, -1 into the solid.
 struct SelfLookup {
   int object;
   vec3 origin;
   float t_min;
   float facing;
-  bool shadow;
 };
 
 SelfLookup no_self_lookup() {
@@ -168,7 +171,6 @@ SelfLookup no_self_lookup() {
   s.origin = vec3(0.0f);
   s.t_min = 0.0f;
   s.facing = 1.0f;
-  s.shadow = false;
   return s;
 }
 
@@ -180,7 +182,6 @@ SelfLookup self_lookup(SceneHit hit, vec3 g, float offset) {
   s.origin = hit.position + offset * g;
   s.t_min = 2.0f * offset;
   s.facing = dot(hit.normal, g) >= 0.0f ? 1.0f : -1.0f;
-  s.shadow = false;
   return s;
 }
 
@@ -190,8 +191,10 @@ SelfLookup self_lookup(SceneHit hit, vec3 g, float offset) {
 // (self.object == k) is looked up as gf_trace_leaving does, from self.origin on the side
 // self.facing: a path ray that starts object_epsilon(k, false) off the surface looks beyond 2 of
 // them; a shadow ray, and a path ray from a point a lookup found (both start at self.origin),
-// beyond self.t_min. Each lookup is called once here: the shader holds one copy of it.
-SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, SelfLookup self) {
+// beyond self.t_min; `any_hit`: a shadow ray's lookup (gf_trace_from). Each lookup is called once
+// here: the shader holds one copy of it.
+SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, SelfLookup self,
+                          bool any_hit) {
   vec3 lo = (objects[k].to_object * vec4(o, 1.0f)).xyz;
   vec3 ld = (objects[k].to_object * vec4(d, 0.0f)).xyz;
   if (objects[k].kind.x == SHAPE_MESH) {
@@ -206,7 +209,8 @@ SceneHit intersect_object(int k, vec3 o, vec3 d, float t_min, float t_max, SelfL
     vec3 ls = (objects[k].to_object * vec4(self.origin, 1.0f)).xyz;
     select_mesh(k);
     return world_mesh_hit(k, gf_trace_from(lo, ld, from, t_max, ls, self.t_min, self.facing,
-                                           SCENE_LOOKUP_MODE, own, self.shadow));
+                                           SCENE_LOOKUP_MODE, own,
+                                           any_hit && GF_FIELD_SHADOWS != 0));
 #endif
     return scene_miss();
   }
@@ -300,7 +304,7 @@ SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup s
     last_entry = next_entry;
     SelfLookup leaving = no_self_lookup();  // WebGL has no ?: of structs
     if (next == self.object && objects[next].kind.x == SHAPE_MESH) leaving = self;
-    SceneHit h = intersect_object(next, o, d, 0.0f, best.t, leaving);
+    SceneHit h = intersect_object(next, o, d, 0.0f, best.t, leaving, opaque_only);
     if (h.hit && h.t < best.t) best = h;
     if (best.hit && opaque_only) break;  // a shadow ray: any hit blocks it
   }
@@ -332,6 +336,5 @@ bool light_from(SceneHit hit, vec3 geometric_normal, vec3 incoming, int i, out v
   float falloff = point ? 1.0f / (distance * distance) : 1.0f;
   radiance = hit.albedo * lights[i].color.rgb * cosine * falloff;
   self = self_lookup(hit, g, shadow_epsilon(hit));
-  self.shadow = true;
   return true;
 }
