@@ -230,8 +230,8 @@ SurfaceRays shadow_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
     if (!h.hit) {
       continue;
     }
-    glm::vec3 g = face_normal(mesh, h.triangle);
-    g = glm::dot(view[i].direction, g) < 0.0f ? g : -g;
+    const glm::vec3 face = face_normal(mesh, h.triangle);
+    const glm::vec3 g = glm::dot(view[i].direction, face) < 0.0f ? face : -face;
     glm::vec3 n = smooth_normal(mesh, normals, h, g);
     n = glm::dot(view[i].direction, n) < 0.0f ? n : -n;
     if (glm::dot(l, g) <= 0.0f || glm::dot(l, n) <= 0.0f) {
@@ -240,7 +240,7 @@ SurfaceRays shadow_surface_rays(const EmbreeMesh& embree, const TriangleMesh& me
     const glm::vec3 origin = view[i].origin + h.t * view[i].direction + offset * g;
     out.rays.push_back({origin, l, 2.0f * offset, gpu::GF_FAR});
     out.self_origins.push_back(origin);
-    out.facing.push_back(glm::dot(face_normal(mesh, h.triangle), g) >= 0.0f ? 1.0f : -1.0f);
+    out.facing.push_back(glm::dot(face, g) >= 0.0f ? 1.0f : -1.0f);
     out.triangles.push_back(h.triangle);
   }
   return out;

@@ -162,8 +162,9 @@ std::string GeometryFieldMethod::trace_defines() const {
   };
   bool by_field = false, by_bvh = false, field_shadows = false;
   for (size_t m = 0; m < assets.size(); ++m) {
-    by_field = by_field || by_its_field(int(m));
-    by_bvh = by_bvh || !by_its_field(int(m));
+    const bool field = by_its_field(int(m));
+    by_field = by_field || field;
+    by_bvh = by_bvh || !field;
   }
   for (const SceneObject& o : scene_->scene().objects) {
     field_shadows =

@@ -586,13 +586,18 @@ int gf_heaviest(vec4 w) {
   return k;
 }
 
+// The nearest pair: the heaviest entry and exit samples (p = 4 * entry + exit).
+int gf_nearest_pair(GF_IN(GfLine) line) {
+  return 4 * gf_heaviest(line.w_entry) + gf_heaviest(line.w_exit);
+}
+
 // Whether the line of the nearest pair crosses the surface with the other parity than
 // line.parity's beyond line.margin from the ray's origin (its last stored hit, read from the
 // exit sample). Within a sample spacing of a concave crease the line and the ray lie on different
 // sides of the surface, and a lookup on the ray's side misses the hits the line meets on the
 // other.
 bool gf_other_side_beyond(GF_IN(GfLine) line) {
-  int nearest = 4 * gf_heaviest(line.w_entry) + gf_heaviest(line.w_exit);
+  int nearest = gf_nearest_pair(line);
   int entry = line.k_entry[nearest / 4];
   int exit = line.k_exit[nearest % 4];
   GfLineHits hits = gf_read_line(entry, exit);
@@ -686,7 +691,7 @@ bool gf_next_start(GF_IN(GfLine) line, GF_INOUT(GfSearch) s, GF_OUT(vec2) uv) {
   if (s.stage <= GF_STAGE_GROUP0) {
     // The nearest pair alone, the spread pairs, or the 16 (one reading of pairs for all).
     bool alone = s.stage == GF_STAGE_NEAREST_PAIR;
-    int nearest = 4 * gf_heaviest(line.w_entry) + gf_heaviest(line.w_exit);
+    int nearest = gf_nearest_pair(line);
     int first = alone ? nearest : 0;
     int end = alone ? nearest + 1 : 16;
     int stride = s.stage == GF_STAGE_SPREAD ? GF_SPREAD_STRIDE : 1;
