@@ -24,7 +24,10 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGFIELD_SAN
 cmake --build build-asan -j "${GFIELD_JOBS:-2}"
 cc -shared -fPIC -O2 -o build-asan/keep_libraries.so tests/sanitizer/keep_libraries.c
 export LD_PRELOAD=$PWD/build-asan/keep_libraries.so
-export ASAN_OPTIONS=verify_asan_link_order=0:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1
+# intercept_tls_get_addr=0: LeakSanitizer scans no dynamic TLS (the blocks of libraries loaded by
+# dlopen: Mesa's driver); the range it recorded for one such block could be bogus
+# (docs/reliability.md) and crashed its tracer.
+export ASAN_OPTIONS=verify_asan_link_order=0:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1:intercept_tls_get_addr=0
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan-mesa.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd build-asan
@@ -51,18 +54,7 @@ if ! ctest --output-on-failure -j 2 --label-exclude 'cluster|gltf-tools|web' -E 
     failed=$(sed -n 's/^[0-9]*:\(.*\)$/\1/p' Testing/Temporary/LastTestsFailed.log |
       sed 's/[][\.*^$+?(){}|]/\\&/g' | paste -sd '|')
     echo "sanitize.sh: LeakSanitizer's tracer crashed; running the failed tests once more: $failed"
-    if ! ctest --output-on-failure -R "^($failed)\$"; then
-      # The tracer crashed again with no report: those tests run once more with every check but
-      # the leak check at exit, whose tracer is what crashes (named here, so the log shows it).
-      if grep -q "Tracer caught signal" "$log" &&
-          ! grep -qE "ERROR: (AddressSanitizer|LeakSanitizer): |runtime error:" "$log"; then
-        echo "sanitize.sh: the tracer crashed again; running them without the leak check: $failed"
-        ASAN_OPTIONS=${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0} \
-          ctest --output-on-failure -R "^($failed)\$"
-      else
-        exit 1
-      fi
-    fi
+    ctest --output-on-failure -R "^($failed)\$"
   else
     exit 1
   fi
