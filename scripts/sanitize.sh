@@ -25,8 +25,8 @@ cmake --build build-asan -j "${GFIELD_JOBS:-2}"
 cc -shared -fPIC -O2 -o build-asan/keep_libraries.so tests/sanitizer/keep_libraries.c
 export LD_PRELOAD=$PWD/build-asan/keep_libraries.so
 # intercept_tls_get_addr=0: LeakSanitizer scans no dynamic TLS (the blocks of libraries loaded by
-# dlopen: Mesa's driver); the range it recorded for one such block could be bogus
-# (docs/reliability.md) and crashed its tracer.
+# dlopen: Mesa's driver); it can take such a block for glibc 2.19's layout and scan a bogus range
+# (google/sanitizers#1322; docs/reliability.md), which crashed its tracer.
 export ASAN_OPTIONS=verify_asan_link_order=0:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1:intercept_tls_get_addr=0
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan-mesa.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
