@@ -171,9 +171,11 @@ std::string GeometryFieldMethod::trace_defines() const {
         field_shadows || (o.shape.type == ShapeType::kMesh && o.shape.mesh >= 0 &&
                           o.material.type == MaterialType::kDiffuse && by_its_field(o.shape.mesh));
   }
+  const bool cached_entries = scene_->scene().objects.size() <= size_t(gpu::SCENE_CACHED_ENTRIES);
   return "#define GF_TRACE_MODE " + std::to_string(int(settings_.mode)) +
          "\n#define GF_FIELD_MESHES " + (by_field ? "1" : "0") + "\n#define GF_BVH_MESHES " +
-         (by_bvh ? "1" : "0") + "\n#define GF_FIELD_SHADOWS " + (field_shadows ? "1" : "0") + "\n" +
+         (by_bvh ? "1" : "0") + "\n#define GF_FIELD_SHADOWS " + (field_shadows ? "1" : "0") +
+         "\n#define GF_CACHED_ENTRIES " + (cached_entries ? "1" : "0") + "\n" +
          (settings_.count_work ? "#define GF_COUNT_WORK 1\n" : "");
 }
 

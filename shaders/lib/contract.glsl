@@ -129,6 +129,10 @@ GF_CONST int UNIT_PROBE_SELF = 25;  // field probe, rays leaving the surface: th
 // gpu_contract_test.cpp checks both at compile time).
 GF_CONST int UNIT_COUNT = 26;
 
+// Scenes of at most this many objects are traced with each object's order key computed once
+// per ray (GF_CACHED_ENTRIES, shaders/lib/scene.glsl: trace_scene).
+GF_CONST int SCENE_CACHED_ENTRIES = 16;
+
 // The web player (docs/web.md): WebGL2 has no storage buffers. The objects and lights are
 // uniform blocks of at most these many (std140: 48 GpuObjects fill 15 of the 16 KB every WebGL2
 // block may hold), the fields' words an R32UI texture and the BVHs RGBA32F textures, in rows of

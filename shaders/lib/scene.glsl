@@ -45,6 +45,12 @@ uniform int u_mode;  // GF_MODE_NEAREST, GF_MODE_LINEAR, GF_MODE_REFINED
 #ifndef GF_FIELD_SHADOWS
 #define GF_FIELD_SHADOWS 1
 #endif
+// GF_CACHED_ENTRIES: 1 where the scene holds at most SCENE_CACHED_ENTRIES objects, so that
+// trace_scene computes each object's order key once per ray (two matrix products and a box test
+// each) instead of once per pass; a shader has no array of the scene's length.
+#ifndef GF_CACHED_ENTRIES
+#define GF_CACHED_ENTRIES 0
+#endif
 uniform bool u_self_reflection; // mesh objects look themselves up too
 uniform bool u_intersect_bvh;   // every mesh through its BVH (else only those without a field)
 uniform float u_scene_extent;   // diagonal of the scene bounds (ray offsets)
@@ -271,6 +277,16 @@ bool scene_candidate(int k, bool opaque_only, SelfLookup self, int inside) {
   return !own || u_self_reflection || k == inside;
 }
 
+// trace_scene's order key of object k for a ray: where it enters the object's bounds (0 for the
+// object it leaves, GF_FAR when it misses them before t_max), SCENE_SKIP when the object is not
+// looked up.
+const float SCENE_SKIP = -2.0f;
+float scene_entry(int k, vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup self,
+                  int inside) {
+  if (!scene_candidate(k, opaque_only, self, inside)) return SCENE_SKIP;
+  return k == self.object ? 0.0f : object_entry(k, o, d, t_max);
+}
+
 // The nearest hit of o + t d (world, d unit), t in (0, t_max), over all objects (as the reference
 // tracer: a ray inside a dielectric meets what reaches into it too); `opaque_only` skips
 // dielectrics (shadow rays: their first hit found is returned, as any hit blocks them). A mesh
@@ -287,12 +303,21 @@ SceneHit trace_scene(vec3 o, vec3 d, float t_max, bool opaque_only, SelfLookup s
   // (entry, index) order.
   int last = -1;
   float last_entry = -1.0f;
+#if GF_CACHED_ENTRIES
+  float entries[SCENE_CACHED_ENTRIES];
+  for (int k = 0; k < u_object_count; k++)
+    entries[k] = scene_entry(k, o, d, t_max, opaque_only, self, inside);
+#endif
   for (int pass = 0; pass < u_object_count; pass++) {
     int next = -1;
     float next_entry = GF_FAR;
     for (int k = 0; k < u_object_count; k++) {
-      if (!scene_candidate(k, opaque_only, self, inside)) continue;
-      float entry = k == self.object ? 0.0f : object_entry(k, o, d, best.t);
+#if GF_CACHED_ENTRIES
+      float entry = entries[k];
+#else
+      float entry = scene_entry(k, o, d, best.t, opaque_only, self, inside);
+#endif
+      if (entry == SCENE_SKIP) continue;
       bool after = entry > last_entry || (entry == last_entry && k > last);
       if (after && (entry < next_entry || next < 0)) {
         next = k;

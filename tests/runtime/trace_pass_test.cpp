@@ -1,6 +1,7 @@
 // The field method's two tracing passes: the compute dispatch and the fragment pass draw the
 // same picture, bit for bit, with the same work, on the example scenes (mirrors, a textured
-// mirror, glass; fields and BVHs); and --pass auto's trial times both and keeps the faster.
+// mirror, glass; fields and BVHs); a scene past the objects whose order keys a ray keeps draws
+// what a scene within them draws; and --pass auto's trial times both and keeps the faster.
 
 #include <algorithm>
 #include <filesystem>
@@ -165,6 +166,52 @@ TEST_F(TracePassTest, ComputeTilesCoverAOneTileFrameAndMoreGroupsThanOneDimensio
     const PassFrame fragment = render_in(method, scene, TracePass::kFragment, width, height);
     ASSERT_EQ(compute.image.pixels.size(), size_t(width) * size_t(height));
     EXPECT_EQ(differing_pixels(compute.image, fragment.image), 0u);
+  }
+}
+
+TEST_F(TracePassTest, ScenesPastTheCachedEntriesDrawWhatTheCachedOnesDraw) {
+  // trace_scene computes the objects' order keys once per ray in a scene of at most
+  // SCENE_CACHED_ENTRIES objects (GF_CACHED_ENTRIES) and once per pass in a larger one. The
+  // larger scene here is mirror-torus-instances after small spheres deep inside its diffuse
+  // spots, where no ray reaches, so that its own objects lie past the cached ones: the same
+  // picture, bit for bit, by fields and by BVHs.
+  constexpr int kSize = 83;
+  Scene scene;
+  GpuScene gpu;
+  GeometryFieldMethod method;
+  ASSERT_NO_FATAL_FAILURE(load_example("mirror-torus-instances", scene, gpu, method));
+  ASSERT_LE(scene.objects.size(), size_t(gpu::SCENE_CACHED_ENTRIES));
+  Scene larger = scene;
+  larger.objects.clear();
+  std::vector<SceneObject> spots;
+  for (const SceneObject& o : scene.objects)
+    if (o.shape.type == ShapeType::kMesh && o.material.type == MaterialType::kDiffuse)
+      spots.push_back(o);
+  ASSERT_FALSE(spots.empty());
+  for (size_t k = 0; k + scene.objects.size() <= size_t(gpu::SCENE_CACHED_ENTRIES); ++k) {
+    SceneObject sphere;
+    sphere.name = "hidden " + std::to_string(k);
+    sphere.shape.radius = 0.01f;  // spot's surface lies 0.05 or more from its mesh's origin
+    sphere.transform.translate = spots[k % spots.size()].transform.translate;
+    larger.objects.push_back(sphere);
+  }
+  larger.objects.insert(larger.objects.end(), scene.objects.begin(), scene.objects.end());
+  GpuScene larger_gpu;
+  GeometryFieldMethod larger_method;
+  std::string error;
+  ASSERT_TRUE(larger_gpu.load(larger, error) &&
+              larger_method.load(larger_gpu, default_shader_dir(), error))
+      << error;
+  for (MeshIntersection intersect : {MeshIntersection::kField, MeshIntersection::kBvh}) {
+    for (GeometryFieldMethod* m : {&method, &larger_method}) {
+      m->settings().max_depth = 4;
+      m->settings().intersect = intersect;
+    }
+    const PassFrame cached = render_in(method, scene, TracePass::kFragment, kSize, kSize);
+    const PassFrame per_pass = render_in(larger_method, larger, TracePass::kFragment, kSize, kSize);
+    ASSERT_EQ(cached.image.pixels.size(), size_t(kSize * kSize));
+    EXPECT_EQ(differing_pixels(cached.image, per_pass.image), 0u)
+        << (intersect == MeshIntersection::kField ? "field" : "BVH");
   }
 }
 

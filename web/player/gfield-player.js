@@ -23,6 +23,9 @@ export const WORK_COUNTERS = ['lookups', 'field_fetches', 'image_fetches', 'newt
 // The contract's WEB_MAX_OBJECTS, WEB_MAX_LIGHTS (shaders/lib/contract.glsl): the uniform
 // blocks' declared lengths; std140 sizes of GpuObject and GpuLight in bytes.
 const MAX_OBJECTS = 48;
+// The contract's SCENE_CACHED_ENTRIES: scenes of at most this many objects trace with
+// GF_CACHED_ENTRIES (shaders/lib/scene.glsl), as gfield-view's field method.
+const CACHED_ENTRIES = 16;
 const MAX_LIGHTS = 16;
 const OBJECT_BYTES = 320;
 const LIGHT_BYTES = 48;
@@ -443,6 +446,7 @@ export class FieldRenderer {
       this.tracePrograms.set(key, this.#program('fullscreen.vert', 'field_trace.frag',
           `#define GF_TRACE_MODE ${mode}\n#define GF_FIELD_MESHES ${byField ? 1 : 0}\n` +
           `#define GF_BVH_MESHES ${byBvh ? 1 : 0}\n${external ? '#define GF_EXTERNAL_BVH 1\n' : ''}` +
+          `#define GF_CACHED_ENTRIES ${this.manifest.objects.length <= CACHED_ENTRIES ? 1 : 0}\n` +
           `${count ? '#define GF_COUNT_WORK 1\n' : ''}`,
           external ? this.externalBvh.glsl : ''));
     return this.tracePrograms.get(key);
